@@ -162,10 +162,6 @@ export class GpuWaveFields {
     this.quad.frustumCulled = false;
   }
 
-  set choppiness(value: number) {
-    this.evolveMaterial.uniforms.choppiness.value = value;
-  }
-
   /** Computes every field at time t (seconds) into `displacement` and `derivatives`. */
   update(t: number): void {
     fillPhaseTable(this.phases.image.data as Float32Array, t, this.repeatPeriod);

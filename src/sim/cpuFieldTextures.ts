@@ -1,0 +1,103 @@
+/**
+ * The JS path's output as textures in the layout of waveFieldLayout.ts, so the surface material
+ * samples the same thing whichever path runs. The fields are computed either right here
+ * (`worker: false`: the result is in the textures as soon as update() returns) or in a Web Worker
+ * (the page stays responsive; the textures show the latest finished time, usually one frame
+ * behind). Owns its two DataTextures and the worker.
+ */
+import {
+  DataTexture,
+  FloatType,
+  LinearFilter,
+  LinearMipmapLinearFilter,
+  NearestFilter,
+  RepeatWrapping,
+  RGBAFormat,
+  type WebGLRenderer,
+} from 'three';
+import { CpuWaveFields } from './cpuWaveFields';
+import type { InitialSpectrum } from './spectrum';
+import type { WorkerReply, WorkerRequest } from './waveFieldWorker';
+
+export class CpuFieldTextures {
+  readonly displacement: DataTexture;
+  readonly derivatives: DataTexture;
+  /** Time of the fields now in the textures, or NaN before the first result. */
+  fieldTime = NaN;
+  private readonly fields: CpuWaveFields | null = null;
+  private readonly worker: Worker | null = null;
+  private inFlight = false;
+  /** Arrays to send to the worker for its next result (they travel back and forth, never reallocated). */
+  private spare: { displacement: Float32Array; derivatives: Float32Array } | null;
+
+  constructor(renderer: WebGLRenderer, spectrum: InitialSpectrum, choppiness: number, repeatPeriod: number, useWorker: boolean) {
+    const n = spectrum.resolution;
+    const filterable = renderer.extensions.has('OES_texture_float_linear');
+    this.displacement = fieldTexture(new Float32Array(4 * n * n), n, filterable, 'displacement');
+    this.derivatives = fieldTexture(new Float32Array(4 * n * n), n, filterable, 'derivatives');
+    this.spare = { displacement: new Float32Array(4 * n * n), derivatives: new Float32Array(4 * n * n) };
+    if (useWorker) {
+      this.worker = new Worker(new URL('./waveFieldWorker.ts', import.meta.url), { type: 'module' });
+      this.worker.onmessage = (event: MessageEvent<WorkerReply>) => this.receive(event.data);
+      this.worker.onerror = (event) => console.error(`three-fft-ocean: the JS field worker failed: ${event.message}`);
+      const request: WorkerRequest = { type: 'spectrum', spectrum, choppiness, repeatPeriod };
+      this.worker.postMessage(request);
+    } else {
+      this.fields = new CpuWaveFields(spectrum, choppiness, repeatPeriod);
+    }
+  }
+
+  get usesWorker(): boolean {
+    return this.worker !== null;
+  }
+
+  update(t: number): void {
+    if (this.fields) {
+      this.fields.update(t);
+      this.displacement.image.data!.set(this.fields.displacement);
+      this.derivatives.image.data!.set(this.fields.derivatives);
+      this.markUpdated(t);
+      return;
+    }
+    if (this.inFlight || !this.spare || !this.worker) return; // drop frames while the worker is busy
+    const { displacement, derivatives } = this.spare;
+    const request: WorkerRequest = { type: 'update', t, displacement, derivatives };
+    this.worker.postMessage(request, [displacement.buffer, derivatives.buffer]);
+    this.spare = null;
+    this.inFlight = true;
+  }
+
+  private receive(reply: WorkerReply): void {
+    this.inFlight = false;
+    // Swap: the finished arrays go into the textures, the ones they held go back out next time.
+    this.spare = {
+      displacement: this.displacement.image.data as Float32Array,
+      derivatives: this.derivatives.image.data as Float32Array,
+    };
+    this.displacement.image.data = reply.displacement;
+    this.derivatives.image.data = reply.derivatives;
+    this.markUpdated(reply.t);
+  }
+
+  private markUpdated(t: number): void {
+    this.fieldTime = t;
+    this.displacement.needsUpdate = true;
+    this.derivatives.needsUpdate = true;
+  }
+
+  dispose(): void {
+    this.worker?.terminate();
+    this.displacement.dispose();
+    this.derivatives.dispose();
+  }
+}
+
+function fieldTexture(data: Float32Array, n: number, filterable: boolean, name: string): DataTexture {
+  const texture = new DataTexture(data, n, n, RGBAFormat, FloatType);
+  texture.name = name;
+  texture.wrapS = texture.wrapT = RepeatWrapping;
+  texture.magFilter = filterable ? LinearFilter : NearestFilter;
+  texture.minFilter = filterable ? LinearMipmapLinearFilter : NearestFilter;
+  texture.generateMipmaps = filterable;
+  return texture;
+}
