@@ -4,7 +4,7 @@ import { execSync } from 'node:child_process';
 import { BROWSER_ENV_VARS, findBrowser } from './browser.mjs';
 
 function run(command) {
-  console.log(`ensure-browser: running: ${command}`);
+  console.error(`ensure-browser: running: ${command}`);
   execSync(command, { stdio: 'inherit' });
 }
 
@@ -19,7 +19,7 @@ function canUseApt() {
 
 let browser = findBrowser();
 if (!browser) {
-  console.log('ensure-browser: no Chromium found for the browser tests; installing one.');
+  console.error('ensure-browser: no Chromium found for the browser tests; installing one.');
   try {
     if (canUseApt()) {
       run('apt-get update -qq');
@@ -41,4 +41,4 @@ if (!browser) {
   );
   process.exit(1);
 }
-console.log(`ensure-browser: using ${browser}`);
+console.error(`ensure-browser: using ${browser}`);

@@ -1,0 +1,370 @@
+// `npm run bench`: timings of the simulation core, one JSON object per line on stdout (progress and
+// errors on stderr). Figures, not assertions. Every `ms` is the median of `runs` timed runs after
+// warm-up; q1/q3 are the quartiles.
+//
+//   fft2d        BatchedInverseFft2D(N, 1).run() in Node ("js"), and the same inverse 2D complex
+//                transform with fft.js row–column ("fft.js"), runs interleaved; fft2d-ratio rows
+//                give jsSpeedup = fft.js ms / js ms.
+//   fields       CpuWaveFields.update(t) in Node ("js"); in headless Chromium (SwiftShader WebGL2)
+//                GpuWaveFields.update(t) ("gpu-rgba32f", "gpu-rgba16f"), timed with a timer query
+//                and with a 1-pixel readPixels sync, and CpuWaveFields.update(t) ("js-browser").
+//   summary      the key ratios.
+//
+// If the browser part fails, the Node rows and the summary are still printed and the exit code is 1.
+import { createServer as createNetServer } from 'node:net';
+import { chromium } from '@playwright/test';
+import FFT from 'fft.js';
+import { createServer } from 'vite';
+import { BROWSER_ARGS, findBrowser } from '../scripts/browser.mjs';
+
+const SIZES = [64, 128, 256, 512];
+const MIN_RUNS = 30;
+/** Browser rounds per size (each round times every implementation once), after WARMUP_ROUNDS. */
+const BROWSER_ROUNDS = { 64: 60, 128: 50, 256: 40, 512: 30 };
+const BROWSER_WARMUP_ROUNDS = 6;
+const BROWSER_STEP_TIMEOUT_MS = 150_000;
+const FIRST_PORT = 5180;
+
+const started = performance.now();
+const log = (message) => process.stderr.write(`bench: ${message}\n`);
+const emit = (row) => process.stdout.write(`${JSON.stringify(row)}\n`);
+
+function quantile(sorted, q) {
+  const position = (sorted.length - 1) * q;
+  const low = Math.floor(position);
+  const high = Math.ceil(position);
+  return sorted[low] + (sorted[high] - sorted[low]) * (position - low);
+}
+
+/** Median and quartiles of samples in ms, rounded to 0.1 µs. */
+function stats(samples) {
+  const sorted = [...samples].sort((a, b) => a - b);
+  const round = (ms) => Math.round(ms * 1e4) / 1e4;
+  return {
+    ms: round(quantile(sorted, 0.5)),
+    runs: sorted.length,
+    q1: round(quantile(sorted, 0.25)),
+    q3: round(quantile(sorted, 0.75)),
+  };
+}
+
+const ratio = (a, b) => (a > 0 && b > 0 ? Math.round((a / b) * 1000) / 1000 : null);
+
+/**
+ * Warm-up, then timed rounds of each task in turn (interleaved, so machine noise hits them alike).
+ * A task is { prepare(), run() }; prepare() is not timed. Warm-up lasts at least 5 rounds and
+ * 300 ms; the timed rounds number at least MIN_RUNS and about budgetMs in total, at most 400.
+ */
+function timeInterleaved(tasks, budgetMs) {
+  const timeOnce = (task) => {
+    task.prepare();
+    const start = performance.now();
+    task.run();
+    return performance.now() - start;
+  };
+  const warmupStart = performance.now();
+  const warmup = tasks.map(() => []);
+  for (let round = 0; round < 500 && (round < 5 || performance.now() - warmupStart < 300); round++) {
+    tasks.forEach((task, i) => warmup[i].push(timeOnce(task)));
+  }
+  const perRound = warmup.reduce((sum, samples) => sum + stats(samples.slice(-5)).ms, 0);
+  const rounds = Math.max(MIN_RUNS, Math.min(400, Math.floor(budgetMs / Math.max(perRound, 1e-3))));
+  const samples = tasks.map(() => []);
+  for (let round = 0; round < rounds; round++) tasks.forEach((task, i) => samples[i].push(timeOnce(task)));
+  return samples;
+}
+
+/** A deterministic pseudo-random complex N×N matrix, index j·N + i (row j = z, column i = x). */
+function randomMatrix(n, seed) {
+  let state = seed >>> 0;
+  const next = () => {
+    state = (Math.imul(state, 1664525) + 1013904223) >>> 0;
+    return state / 2 ** 32 - 0.5;
+  };
+  const re = new Float64Array(n * n);
+  const im = new Float64Array(n * n);
+  for (let k = 0; k < n * n; k++) {
+    re[k] = next();
+    im[k] = next();
+  }
+  return { re, im };
+}
+
+/** BatchedInverseFft2D with one field, refilled from the matrix before every run. */
+function jsFft2d(BatchedInverseFft2D, n, { re, im }) {
+  const fft = new BatchedInverseFft2D(n, 1);
+  const sourceRe = new Float32Array(fft.inputReal.length);
+  const sourceIm = new Float32Array(fft.inputImag.length);
+  for (let j = 0; j < n; j++) {
+    for (let i = 0; i < n; i++) {
+      sourceRe[fft.inputIndex(0, i, j)] = re[j * n + i];
+      sourceIm[fft.inputIndex(0, i, j)] = im[j * n + i];
+    }
+  }
+  return {
+    prepare() {
+      fft.inputReal.set(sourceRe);
+      fft.inputImag.set(sourceIm);
+    },
+    run: () => fft.run(),
+    /** Output (re, im) at column i, row j. */
+    value: (i, j) => [fft.outputReal[fft.outputIndex(0, i, j)], fft.outputImag[fft.outputIndex(0, i, j)]],
+  };
+}
+
+/**
+ * fft.js (radix-4, interleaved re/im arrays from createComplexArray), row–column: each row is
+ * transformed into a second set of rows, then each column is copied out, transformed and copied
+ * back. fft.js's inverseTransform divides by N, so its result is ours / N².
+ */
+function fftJs2d(n, { re, im }) {
+  const fft = new FFT(n);
+  const rows = Array.from({ length: n }, () => fft.createComplexArray());
+  const transformed = Array.from({ length: n }, () => fft.createComplexArray());
+  const column = fft.createComplexArray();
+  const columnOut = fft.createComplexArray();
+  return {
+    prepare() {
+      for (let j = 0; j < n; j++) {
+        const row = rows[j];
+        for (let i = 0; i < n; i++) {
+          row[2 * i] = re[j * n + i];
+          row[2 * i + 1] = im[j * n + i];
+        }
+      }
+    },
+    run() {
+      for (let j = 0; j < n; j++) fft.inverseTransform(transformed[j], rows[j]);
+      for (let i = 0; i < n; i++) {
+        const r = 2 * i;
+        for (let j = 0; j < n; j++) {
+          column[2 * j] = transformed[j][r];
+          column[2 * j + 1] = transformed[j][r + 1];
+        }
+        fft.inverseTransform(columnOut, column);
+        for (let j = 0; j < n; j++) {
+          transformed[j][r] = columnOut[2 * j];
+          transformed[j][r + 1] = columnOut[2 * j + 1];
+        }
+      }
+    },
+    value: (i, j) => [transformed[j][2 * i] * n * n, transformed[j][2 * i + 1] * n * n],
+  };
+}
+
+/** max |a − b| / rms(a) over the whole matrix: both implementations compute the same transform. */
+function relativeDifference(n, a, b) {
+  let maxError = 0;
+  let sumSquares = 0;
+  for (let j = 0; j < n; j++) {
+    for (let i = 0; i < n; i++) {
+      const [ar, ai] = a.value(i, j);
+      const [br, bi] = b.value(i, j);
+      maxError = Math.max(maxError, Math.hypot(ar - br, ai - bi));
+      sumSquares += ar * ar + ai * ai;
+    }
+  }
+  return maxError / Math.sqrt(sumSquares / (n * n));
+}
+
+async function nodeBenchmarks(results) {
+  log('loading src/sim through Vite (ssrLoadModule)');
+  const server = await createServer({
+    server: { middlewareMode: true, watch: null },
+    appType: 'custom',
+    logLevel: 'silent',
+    optimizeDeps: { noDiscovery: true },
+  });
+  try {
+    const { BatchedInverseFft2D } = await server.ssrLoadModule('/src/sim/fft.ts');
+    const { CpuWaveFields } = await server.ssrLoadModule('/src/sim/cpuWaveFields.ts');
+    const { validateParameters } = await server.ssrLoadModule('/src/sim/parameters.ts');
+    const { createInitialSpectrum } = await server.ssrLoadModule('/src/sim/spectrum.ts');
+
+    for (const n of SIZES) {
+      log(`fft2d N=${n}: js vs fft.js`);
+      const matrix = randomMatrix(n, n);
+      const js = jsFft2d(BatchedInverseFft2D, n, matrix);
+      const other = fftJs2d(n, matrix);
+      js.prepare();
+      js.run();
+      other.prepare();
+      other.run();
+      const difference = relativeDifference(n, js, other);
+      const [jsSamples, otherSamples] = timeInterleaved([js, other], 2000);
+      const jsStats = stats(jsSamples);
+      const otherStats = stats(otherSamples);
+      const speedup = ratio(otherStats.ms, jsStats.ms);
+      results.fftSpeedup[n] = speedup;
+      emit({ bench: 'fft2d', N: n, path: 'js', ...jsStats });
+      emit({ bench: 'fft2d', N: n, path: 'fft.js', ...otherStats });
+      emit({ bench: 'fft2d-ratio', N: n, jsSpeedup: speedup, maxRelDiff: Number(difference.toPrecision(3)) });
+    }
+
+    for (const n of SIZES) {
+      log(`fields N=${n}: CpuWaveFields.update in Node`);
+      const params = validateParameters({ resolution: n });
+      const fields = new CpuWaveFields(createInitialSpectrum(params), params.choppiness, params.repeatPeriod);
+      let t = 1.25;
+      const [samples] = timeInterleaved([{ prepare: () => (t += 0.0371), run: () => fields.update(t) }], 2000);
+      const row = stats(samples);
+      results.jsFields[n] = row.ms;
+      emit({ bench: 'fields', N: n, path: 'js', ...row });
+    }
+  } finally {
+    await server.close();
+  }
+}
+
+/** The first port from FIRST_PORT on that 127.0.0.1 lets us listen on. */
+async function freePort() {
+  for (let port = FIRST_PORT; port < FIRST_PORT + 50; port++) {
+    const free = await new Promise((resolve) => {
+      const probe = createNetServer();
+      probe.once('error', () => resolve(false));
+      probe.listen(port, '127.0.0.1', () => probe.close(() => resolve(true)));
+    });
+    if (free) return port;
+  }
+  throw new Error(`no free port in ${FIRST_PORT}-${FIRST_PORT + 49}`);
+}
+
+function withTimeout(promise, ms, what) {
+  let timer;
+  const timeout = new Promise((_, reject) => {
+    timer = setTimeout(() => reject(new Error(`${what} took more than ${ms / 1000} s`)), ms);
+  });
+  return Promise.race([promise, timeout]).finally(() => clearTimeout(timer));
+}
+
+async function browserBenchmarks(results) {
+  const executablePath = findBrowser();
+  if (!executablePath) throw new Error('no Chromium found (see scripts/browser.mjs; set CHROMIUM_PATH)');
+  const port = await freePort();
+  log(`starting Vite on http://127.0.0.1:${port}/`);
+  const server = await createServer({
+    logLevel: 'silent',
+    optimizeDeps: { noDiscovery: true }, // no dependency discovery, so no reload mid-benchmark
+    server: {
+      port,
+      strictPort: true,
+      host: '127.0.0.1',
+      // No file watcher and no HMR: an edit anywhere in the tree must not reload the page mid-run.
+      watch: null,
+      hmr: false,
+      // Cross-origin isolation gives performance.now() 5 µs resolution instead of 100 µs.
+      headers: { 'Cross-Origin-Opener-Policy': 'same-origin', 'Cross-Origin-Embedder-Policy': 'require-corp' },
+    },
+  });
+  let browser;
+  try {
+    await server.listen();
+    log(`launching ${executablePath}`);
+    browser = await chromium.launch({ executablePath, args: BROWSER_ARGS });
+    const page = await browser.newPage();
+    page.on('pageerror', (error) => log(`page error: ${error.message}`));
+    page.on('response', (response) => {
+      if (response.status() >= 400) log(`HTTP ${response.status()} for ${response.url()}`);
+    });
+    page.on('console', (message) => {
+      if (message.type() === 'error' || message.type() === 'warning') log(`page ${message.type()}: ${message.text()}`);
+    });
+    await page.goto(`http://127.0.0.1:${port}/bench/pages/bench.html`);
+    await page.waitForFunction(() => document.title === 'ready', null, { timeout: 60_000 });
+    const info = await page.evaluate(() => window.bench.info());
+    emit({ bench: 'browser', ...info });
+    if (info.supportedPrecision !== 'float32') throw new Error(`no RGBA32F render targets (supported: ${info.supportedPrecision})`);
+    if (!info.timerQuery) log('EXT_disjoint_timer_query_webgl2 is missing: only readpixels-sync GPU rows');
+
+    const runFields = (options) =>
+      withTimeout(
+        page.evaluate((o) => window.bench.fields(o), options),
+        BROWSER_STEP_TIMEOUT_MS,
+        `the browser benchmark at N=${options.resolution}`,
+      );
+    const emitGpu = (n, path, samples) => {
+      const passes = samples.passCount;
+      if (samples.gpuTimerQuery) {
+        const row = { bench: 'fields', N: n, path, ...stats(samples.gpuTimerQuery), passes, timer: 'timer-query' };
+        if (samples.disjointDiscarded) row.disjointDiscarded = samples.disjointDiscarded;
+        emit(row);
+      }
+      const row = stats(samples.gpuReadPixels);
+      emit({ bench: 'fields', N: n, path, ...row, passes, timer: 'readpixels-sync', syncMs: stats(samples.syncOnly).ms });
+      return { timerQuery: samples.gpuTimerQuery ? stats(samples.gpuTimerQuery).ms : null, readPixels: row.ms };
+    };
+
+    for (const n of SIZES) {
+      log(`fields N=${n}: GPU (rgba32f) and JS in Chromium`);
+      const samples = await runFields({
+        resolution: n,
+        gpu: 'float32',
+        js: true,
+        warmupRounds: BROWSER_WARMUP_ROUNDS,
+        rounds: BROWSER_ROUNDS[n],
+      });
+      results.gpu[n] = emitGpu(n, 'gpu-rgba32f', samples);
+      const jsRow = stats(samples.js);
+      results.jsBrowser[n] = jsRow.ms;
+      emit({ bench: 'fields', N: n, path: 'js-browser', ...jsRow });
+    }
+    if (info.halfFloat) {
+      log('fields N=256: GPU (rgba16f) in Chromium');
+      const samples = await runFields({
+        resolution: 256,
+        gpu: 'float16',
+        js: false,
+        warmupRounds: BROWSER_WARMUP_ROUNDS,
+        rounds: BROWSER_ROUNDS[256],
+      });
+      results.gpuHalf256 = emitGpu(256, 'gpu-rgba16f', samples);
+    } else {
+      log('EXT_color_buffer_half_float is missing: no gpu-rgba16f row');
+    }
+  } finally {
+    await browser?.close().catch(() => {});
+    await server.close().catch(() => {});
+  }
+}
+
+const results = { fftSpeedup: {}, jsFields: {}, jsBrowser: {}, gpu: {}, gpuHalf256: null };
+let exitCode = 0;
+let browserError = null;
+try {
+  await nodeBenchmarks(results);
+} catch (error) {
+  log(`FAILED in the Node benchmarks: ${error.stack ?? error}`);
+  exitCode = 1;
+}
+try {
+  await browserBenchmarks(results);
+} catch (error) {
+  browserError = error.message ?? String(error);
+  log(`FAILED in the browser benchmarks (GPU and js-browser rows missing): ${error.stack ?? error}`);
+  exitCode = 1;
+}
+
+const gpu = (n, timer) => results.gpu[n]?.[timer] ?? null;
+emit({
+  bench: 'summary',
+  jsSpeedupVsFftJs256: results.fftSpeedup[256] ?? null,
+  jsSpeedupVsFftJs512: results.fftSpeedup[512] ?? null,
+  jsFieldsMs256: results.jsFields[256] ?? null,
+  jsFieldsMs512: results.jsFields[512] ?? null,
+  gpuMs256: gpu(256, 'timerQuery') ?? gpu(256, 'readPixels'),
+  gpuMs512: gpu(512, 'timerQuery') ?? gpu(512, 'readPixels'),
+  gpuTimer: gpu(256, 'timerQuery') !== null ? 'timer-query' : gpu(256, 'readPixels') !== null ? 'readpixels-sync' : null,
+  gpuReadPixelsMs256: gpu(256, 'readPixels'),
+  gpuReadPixelsMs512: gpu(512, 'readPixels'),
+  gpuHalfMs256: results.gpuHalf256?.timerQuery ?? results.gpuHalf256?.readPixels ?? null,
+  jsBrowserFieldsMs256: results.jsBrowser[256] ?? null,
+  jsBrowserFieldsMs512: results.jsBrowser[512] ?? null,
+  // Wall clock against wall clock, both in the same browser run.
+  gpuSpeedupVsJsBrowser256: ratio(results.jsBrowser[256], gpu(256, 'readPixels')),
+  gpuSpeedupVsJsBrowser512: ratio(results.jsBrowser[512], gpu(512, 'readPixels')),
+  browser: browserError === null ? 'ok' : 'failed',
+  ...(browserError === null ? {} : { browserError }),
+  seconds: Math.round((performance.now() - started) / 100) / 10,
+});
+log(`done in ${((performance.now() - started) / 1000).toFixed(1)} s${exitCode ? ' (with failures, see above)' : ''}`);
+process.stdout.write('', () => process.exit(exitCode));

@@ -1,0 +1,44 @@
+// Where a vertex of the horizon grid lies on the rest plane (src/render/horizonGrid.ts).
+// Rings of square grids around the camera, each with cells twice the size of the one inside it.
+// A ring's centre is snapped to twice its cell size, so every vertex sits on a fixed world grid
+// point: vertices are anchored in world space and nothing swims when the camera moves.
+// ringFrames[r] = (centre x, centre z, cell size, mip level) and ringUvOrigins[r] = centre/patch
+// mod 1, both from JS in double precision; ringOffsets[r] = (centre_r − centre_{r+1}) / cell_{r+1}
+// (whole numbers). Vertices on a ring's outer edge are moved onto the next ring's grid (the odd
+// ones onto their even neighbour) and computed in that ring's frame, with the same arithmetic as
+// the next ring's own vertices, so the two rings meet with no crack.
+attribute vec3 gridVertex;  // (x, z) in cells from the ring centre, ring index
+attribute float farScale;   // 1, or a large factor for the skirt that reaches the horizon
+
+#define SKIRT_LOD 1000.0  // beyond any mip level: GL clamps to the last one
+
+uniform vec4 ringFrames[RING_COUNT + 1];
+uniform vec2 ringUvOrigins[RING_COUNT + 1];
+uniform vec2 ringOffsets[RING_COUNT + 1];
+uniform float halfRingCells;  // cells from a ring's centre to its edge
+uniform float patchSize;
+
+struct GridPoint {
+  vec2 world;  // rest position (x, z), metres
+  vec2 uv;     // in patches, for the REPEAT field textures
+  float lod;   // mip level matching the cell size
+  float ring;  // the ring whose mesh holds the vertex
+};
+
+GridPoint horizonGridPoint() {
+  int ring = int(gridVertex.z);
+  vec2 cells = gridVertex.xy;
+  if (max(abs(cells.x), abs(cells.y)) == halfRingCells) {
+    // On the outer edge: into the next ring's frame (cells there are twice as large).
+    cells = ringOffsets[ring] + (cells - mod(cells, 2.0)) * 0.5;
+    ring += 1;
+  }
+  vec4 frame = ringFrames[ring];
+  vec2 metres = cells * (frame.z * farScale);
+  GridPoint point;
+  point.world = frame.xy + metres;
+  point.uv = ringUvOrigins[ring] + metres / patchSize;
+  point.lod = farScale > 1.0 ? SKIRT_LOD : frame.w;  // the skirt samples the coarsest mip: flat, mean sea
+  point.ring = gridVertex.z;
+  return point;
+}

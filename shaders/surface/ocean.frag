@@ -1,0 +1,95 @@
+// Ocean surface, fragment stage: the course report's shading model (§2.2–2.4),
+//   c = R·c_reflected + T·c_refracted + K·c_caustic  (+ the sun's specular glint),
+// with R the exact Fresnel reflectance, c_reflected / c_refracted sampled from the environment
+// cubemap along reflect() / refract(), the refracted light attenuated in the water volume, and K
+// Guardado's caustic term.
+#include "common/fresnel.glsl"
+#include "surface/choppyNormal.glsl"
+#include "surface/caustics.glsl"
+#include "surface/absorption.glsl"
+
+uniform sampler2D tDisplacement;
+uniform sampler2D tDerivatives;
+uniform samplerCube tEnvironment;
+uniform vec4 ringFrames[RING_COUNT + 1];
+uniform float halfRingCells;
+uniform vec3 sunDirection;     // towards the sun
+uniform vec3 sunColour;        // radiance of the glint
+uniform float sunShininess;
+uniform float iorAir;
+uniform float iorWater;
+uniform vec3 absorption;
+uniform vec3 scatterColour;
+uniform float viewDepth;
+uniform float causticPower;
+uniform vec3 causticColour;
+uniform int shadingMode;       // SHADING_* below
+uniform float heightScale;     // metres shown as full white in the height mode
+
+varying vec2 vUv;
+varying vec3 vWorldPosition;
+varying vec2 vRestPosition;
+flat varying float vRing;
+varying float vLod;
+#ifdef CAPTURE_POSITIONS
+uniform bool captureRestPoint;
+#endif
+
+#define SHADING_FULL 0
+#define SHADING_FRESNEL_CONSTANT 1  // report Figure 7
+#define SHADING_REFLECTION 2        // report Figure 10, left
+#define SHADING_REFRACTION 3        // report Figure 10, middle
+#define SHADING_CAUSTICS 4          // report Figure 9, left
+#define SHADING_HEIGHT 5            // report Figure 3
+
+void main() {
+#ifdef CAPTURE_POSITIONS
+  // Geometry test: the displaced position, or the rest point with its mip level and ring.
+  gl_FragColor = captureRestPoint ? vec4(vRestPosition, vLod, vRing) : vec4(vWorldPosition, 1.0);
+  return;
+#endif
+  // Each point of the rest plane is drawn by exactly one ring: a ring overlaps the one inside it
+  // by a cell (so that no gap opens whichever way their centres snapped) and drops that overlap.
+  int ring = int(vRing);
+  if (ring > 0) {
+    vec4 inner = ringFrames[ring - 1];
+    vec2 fromInner = abs(vRestPosition - inner.xy);
+    if (max(fromInner.x, fromInner.y) < halfRingCells * inner.z * (1.0 - 1e-4)) discard;
+  }
+
+  vec4 derivatives = texture(tDerivatives, vUv);
+  float dxDz = texture(tDisplacement, vUv).w;
+  vec3 normal = choppyNormal(derivatives, dxDz);
+  vec3 view = normalize(vWorldPosition - cameraPosition);  // d, from the eye to the surface
+  // A normal that faces away from the eye (behind a steep crest) is bent back into view.
+  float facing = dot(view, normal);
+  if (facing > 0.0) normal = normalize(normal - 1.01 * facing * view);
+  float cosIncident = -dot(view, normal);
+
+  float reflectance = fresnelReflectance(cosIncident, iorAir, iorWater);
+  vec3 reflected = reflect(view, normal);
+  reflected.y = abs(reflected.y);  // a ray reflected downwards would hit the next wave: mirror it
+  vec3 refracted = refract(view, normal, iorAir / iorWater);
+  float caustic = causticBrightness(normal, sunDirection, iorWater / iorAir, causticPower);
+
+  vec3 colour;
+  if (shadingMode == SHADING_FRESNEL_CONSTANT) {
+    colour = mix(vec3(0.0, 0.3, 0.4), vec3(0.64, 0.84, 1.0), reflectance);
+  } else if (shadingMode == SHADING_REFLECTION) {
+    colour = textureCube(tEnvironment, reflected).rgb;
+  } else if (shadingMode == SHADING_REFRACTION) {
+    colour = throughWater(textureCube(tEnvironment, refracted).rgb, refracted, absorption, scatterColour, viewDepth);
+  } else if (shadingMode == SHADING_CAUSTICS) {
+    colour = vec3(caustic);
+  } else if (shadingMode == SHADING_HEIGHT) {
+    colour = vec3(clamp(0.5 + 0.5 * vWorldPosition.y / heightScale, 0.0, 1.0));
+  } else {
+    vec3 sky = textureCube(tEnvironment, reflected).rgb;
+    vec3 water = throughWater(textureCube(tEnvironment, refracted).rgb, refracted, absorption, scatterColour, viewDepth);
+    vec3 glint = sunColour * reflectance * pow(max(dot(reflected, sunDirection), 0.0), sunShininess);
+    colour = reflectance * sky + (1.0 - reflectance) * water + caustic * causticColour + glint;
+  }
+  gl_FragColor = vec4(colour, 1.0);
+  #include <tonemapping_fragment>
+  #include <colorspace_fragment>
+}

@@ -1,0 +1,35 @@
+// Ocean surface, vertex stage: a horizon-grid vertex displaced by the simulated fields,
+// P = x0 + (Dx, h, Dz) sampled at the rest point x0 (src/sim/waveFieldLayout.ts).
+#include "surface/horizonGrid.glsl"
+
+uniform sampler2D tDisplacement;
+
+varying vec2 vUv;           // field coordinates of the rest point, for the fragment stage
+varying vec3 vWorldPosition;
+varying vec2 vRestPosition;
+flat varying float vRing;
+varying float vLod;
+#ifdef CAPTURE_POSITIONS
+uniform float captureWidth;
+uniform float captureHeight;
+#endif
+
+void main() {
+  GridPoint point = horizonGridPoint();
+  vec3 displacement = textureLod(tDisplacement, point.uv, point.lod).xyz;
+  vec3 world = vec3(point.world.x, 0.0, point.world.y) + displacement;
+  vUv = point.uv;
+  vWorldPosition = world;
+  vRestPosition = point.world;
+  vRing = point.ring;
+  vLod = point.lod;
+#ifdef CAPTURE_POSITIONS
+  // Geometry test (tests/browser/horizon.spec.ts): one texel per vertex in a float target.
+  float texel = float(gl_VertexID);
+  vec2 target = vec2(mod(texel, captureWidth), floor(texel / captureWidth)) + 0.5;
+  gl_Position = vec4(target / vec2(captureWidth, captureHeight) * 2.0 - 1.0, 0.0, 1.0);
+  gl_PointSize = 1.0;
+#else
+  gl_Position = projectionMatrix * viewMatrix * vec4(world, 1.0);
+#endif
+}

@@ -1,0 +1,143 @@
+/**
+ * Geometry that reaches the horizon: camera-centred square rings of grid cells, each ring with
+ * cells twice the size of the ring inside it, and a skirt from the last ring out to far away.
+ * (Geometry clipmaps, Losasso & Hoppe 2004, simplified; chosen over the course report's projected
+ * grid because its vertices stay on fixed world points, which is what makes them provably right.)
+ *
+ * Ring r has cells of size cell_r = baseCell·2^r and spans cellsPerRing cells on a side around
+ * its centre, which is the camera position snapped down to a multiple of 2·cell_r. Ring r ≥ 1 has
+ * a hole where ring r − 1 lies; the snapping can put ring r − 1 one cell off-centre in either axis,
+ * so the hole is one cell smaller on each side than ring r − 1 and the fragment shader drops the
+ * overlap (shaders/surface/ocean.frag). The vertex stage places vertices: shaders/surface/horizonGrid.glsl.
+ *
+ * baseCell is the field's texel size times a power of two that grows with the camera's height, so
+ * the number of vertices on screen stays about the same from 1 m to 2 km up; cellsPerRing follows
+ * the viewport's height. Mip level of ring r: log2(cell_r / texel), so far rings sample filtered
+ * fields and detail fades without aliasing.
+ */
+import { BufferGeometry, Float32BufferAttribute, Uint32BufferAttribute } from 'three';
+
+/** Rings around the camera; the last one ends cellsPerRing/2 · baseCell · 2^(RING_COUNT−1) away. */
+export const RING_COUNT = 12;
+/** How much further than the last ring's edge the skirt reaches (flat sea to the horizon). */
+export const SKIRT_SCALE = 256;
+
+/** Cells on a side of each ring for a viewport this many pixels high: a power of two in [32, 128]. */
+export function cellsPerRingForViewport(heightPixels: number): number {
+  const ideal = Math.log2(Math.max(1, heightPixels) / 10);
+  return 2 ** Math.min(7, Math.max(5, Math.round(ideal)));
+}
+
+/**
+ * Static geometry in grid units. Attributes: gridVertex = (x, z, ring) with x, z in cells from
+ * the ring centre, farScale = 1 (or SKIRT_SCALE for the skirt's far edge).
+ */
+export function createHorizonGridGeometry(cellsPerRing: number): BufferGeometry {
+  const half = cellsPerRing / 2;
+  const gridVertex: number[] = [];
+  const farScale: number[] = [];
+  const indices: number[] = [];
+  let vertexCount = 0;
+  const addVertex = (x: number, z: number, ring: number, scale: number): number => {
+    gridVertex.push(x, z, ring);
+    farScale.push(scale);
+    return vertexCount++;
+  };
+
+  // Cells of a ring ≥ 1 whose two coordinates both lie in [holeLow, holeHigh] form its hole.
+  const holeLow = -cellsPerRing / 4 + 1;
+  const holeHigh = cellsPerRing / 4 - 1;
+  for (let ring = 0; ring < RING_COUNT; ring++) {
+    const index = new Map<number, number>();
+    const vertex = (x: number, z: number): number => {
+      const key = (x + half) * (cellsPerRing + 1) + (z + half);
+      let id = index.get(key);
+      if (id === undefined) {
+        id = addVertex(x, z, ring, 1);
+        index.set(key, id);
+      }
+      return id;
+    };
+    for (let cz = -half; cz < half; cz++) {
+      for (let cx = -half; cx < half; cx++) {
+        const inHole = ring > 0 && cx >= holeLow && cx <= holeHigh && cz >= holeLow && cz <= holeHigh;
+        if (inHole) continue;
+        const a = vertex(cx, cz);
+        const b = vertex(cx + 1, cz);
+        const c = vertex(cx, cz + 1);
+        const d = vertex(cx + 1, cz + 1);
+        indices.push(a, c, b, b, c, d);
+      }
+    }
+  }
+
+  // Skirt: quads from the last ring's edge (its even points, where its edge vertices land) out to
+  // SKIRT_SCALE times as far, walking once around the square.
+  const edge: [number, number][] = [];
+  for (let s = -half; s < half; s += 2) edge.push([s, -half]);
+  for (let s = -half; s < half; s += 2) edge.push([half, s]);
+  for (let s = half; s > -half; s -= 2) edge.push([s, half]);
+  for (let s = half; s > -half; s -= 2) edge.push([-half, s]);
+  const lastRing = RING_COUNT - 1;
+  const first = vertexCount;
+  for (const [x, z] of edge) {
+    addVertex(x, z, lastRing, 1);
+    addVertex(x, z, lastRing, SKIRT_SCALE);
+  }
+  for (let i = 0; i < edge.length; i++) {
+    const inner = first + 2 * i;
+    const next = first + 2 * ((i + 1) % edge.length);
+    indices.push(inner, inner + 1, next, next, inner + 1, next + 1);
+  }
+
+  const geometry = new BufferGeometry();
+  geometry.setAttribute('gridVertex', new Float32BufferAttribute(gridVertex, 3));
+  geometry.setAttribute('farScale', new Float32BufferAttribute(farScale, 1));
+  geometry.setIndex(new Uint32BufferAttribute(indices, 1));
+  return geometry;
+}
+
+/** Per-ring uniforms for shaders/surface/horizonGrid.glsl, recomputed each frame. */
+export class RingFrames {
+  /** (centre x, centre z, cell size, mip level) per ring, RING_COUNT + 1 of them. */
+  readonly frames = new Float32Array(4 * (RING_COUNT + 1));
+  /**
+   * Field texture coordinate of each ring centre, (centre / patchSize + ½ texel) mod 1, in double
+   * precision. The half texel: texel i holds the field at x = i·patchSize/N, while GL samples
+   * texel i's value exactly at u = (i + ½)/N.
+   */
+  readonly uvOrigins = new Float32Array(2 * (RING_COUNT + 1));
+  /** (centre_r − centre_{r+1}) / cell_{r+1} per ring: whole numbers, 0 or 1. */
+  readonly offsets = new Float32Array(2 * (RING_COUNT + 1));
+
+  /**
+   * @param cameraX, cameraZ camera position on the sea plane (m)
+   * @param cameraHeight camera height above the sea (m)
+   * @param texelSize patchSize / N (m)
+   */
+  update(cameraX: number, cameraZ: number, cameraHeight: number, patchSize: number, texelSize: number, cellsPerRing: number): void {
+    // Finest cells: the texel size, or coarser by powers of two once the camera is high enough
+    // that ring 0 would cover less than about 8× the camera height.
+    const heightPerCell = Math.max(1, cameraHeight) / (cellsPerRing / 8);
+    const level = Math.max(0, Math.ceil(Math.log2(heightPerCell / texelSize)));
+    const centres: number[] = [];
+    for (let ring = 0; ring <= RING_COUNT; ring++) {
+      const cell = texelSize * 2 ** (level + ring);
+      const x = Math.floor(cameraX / (2 * cell)) * 2 * cell;
+      const z = Math.floor(cameraZ / (2 * cell)) * 2 * cell;
+      centres.push(x, z);
+      this.frames.set([x, z, cell, level + ring], 4 * ring);
+      const halfTexel = (0.5 * texelSize) / patchSize;
+      this.uvOrigins.set([fractional(x / patchSize + halfTexel), fractional(z / patchSize + halfTexel)], 2 * ring);
+    }
+    for (let ring = 0; ring < RING_COUNT; ring++) {
+      const nextCell = 2 * this.frames[4 * ring + 2];
+      this.offsets[2 * ring] = Math.round((centres[2 * ring] - centres[2 * ring + 2]) / nextCell);
+      this.offsets[2 * ring + 1] = Math.round((centres[2 * ring + 1] - centres[2 * ring + 3]) / nextCell);
+    }
+  }
+}
+
+function fractional(x: number): number {
+  return x - Math.floor(x);
+}

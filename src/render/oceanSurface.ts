@@ -1,0 +1,54 @@
+/**
+ * The visible sea: a Mesh of the horizon grid (horizonGrid.ts) with the OceanMaterial, displaced
+ * and shaded from the simulation's field textures. Add it to any scene; before each render it
+ * places its rings around the rendering camera. The sea is the plane y = 0 of world space (the
+ * mesh's own transform is not used). Owns its geometry and material.
+ */
+import { Mesh, Vector2, Vector3, type Camera, type Scene, type WebGLRenderer } from 'three';
+import { cellsPerRingForViewport, createHorizonGridGeometry, RingFrames } from './horizonGrid';
+import { OceanMaterial, type OceanMaterialInputs, type OceanShadingOptions } from './oceanMaterial';
+
+export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeometry>, OceanMaterial> {
+  private cellsPerRing = 0;
+  private readonly rings = new RingFrames();
+  private readonly viewport = new Vector2();
+  private readonly cameraPosition = new Vector3();
+
+  constructor(
+    inputs: OceanMaterialInputs,
+    private readonly texelSize: () => number,
+    shading: OceanShadingOptions = {},
+  ) {
+    super(createHorizonGridGeometry(32), new OceanMaterial(inputs, shading));
+    this.name = 'OceanSurface';
+    this.frustumCulled = false; // the vertex shader moves every vertex; the sea is always in view
+    this.cellsPerRing = 32;
+  }
+
+  override onBeforeRender(renderer: WebGLRenderer, _scene: Scene, camera: Camera): void {
+    renderer.getDrawingBufferSize(this.viewport);
+    const cells = cellsPerRingForViewport(this.viewport.y);
+    if (cells !== this.cellsPerRing) {
+      this.geometry.dispose();
+      this.geometry = createHorizonGridGeometry(cells);
+      this.cellsPerRing = cells;
+    }
+    this.placeRings(camera);
+  }
+
+  /** Centres the rings under `camera` (done before every render; public for the geometry test). */
+  placeRings(camera: Camera): void {
+    const position = camera.getWorldPosition(this.cameraPosition);
+    const u = this.material.uniforms;
+    this.rings.update(position.x, position.z, position.y, u.patchSize.value, this.texelSize(), this.cellsPerRing);
+    u.ringFrames.value = this.rings.frames;
+    u.ringUvOrigins.value = this.rings.uvOrigins;
+    u.ringOffsets.value = this.rings.offsets;
+    u.halfRingCells.value = this.cellsPerRing / 2;
+  }
+
+  dispose(): void {
+    this.geometry.dispose();
+    this.material.dispose();
+  }
+}

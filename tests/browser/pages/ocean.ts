@@ -1,0 +1,230 @@
+/**
+ * Test page for the rendered ocean: the real simulation, surface and environment in this page's
+ * WebGL2 context, with hooks for the Playwright tests (geometry capture, shading probes).
+ */
+import {
+  ACESFilmicToneMapping,
+  Color,
+  FloatType,
+  LinearSRGBColorSpace,
+  NoToneMapping,
+  PerspectiveCamera,
+  Points,
+  RGBAFormat,
+  Scene,
+  SRGBColorSpace,
+  Vector3,
+  WebGLCubeRenderTarget,
+  WebGLRenderer,
+  WebGLRenderTarget,
+} from 'three';
+import { OceanMaterial, type OceanShadingOptions } from '../../../src/render/oceanMaterial';
+import { OceanSurface } from '../../../src/render/oceanSurface';
+import { CpuWaveFields } from '../../../src/sim/cpuWaveFields';
+import { OceanSimulation } from '../../../src/sim/oceanSimulation';
+import type { SimulationParameters } from '../../../src/sim/parameters';
+
+const query = new URLSearchParams(location.search);
+const width = Number(query.get('width') ?? 640);
+const height = Number(query.get('height') ?? 360);
+const renderer = new WebGLRenderer({ antialias: false, preserveDrawingBuffer: true });
+renderer.setPixelRatio(1);
+renderer.setSize(width, height);
+document.body.appendChild(renderer.domElement);
+
+const scene = new Scene();
+const camera = new PerspectiveCamera(55, width / height, 0.5, 2e7);
+const sunDirection = new Vector3(0.3, 0.5, -0.8).normalize();
+
+// A uniform-colour environment (for shading probes).
+const uniformCube = new WebGLCubeRenderTarget(16, { type: FloatType });
+function setUniformEnvironment(colour: [number, number, number]): void {
+  renderer.setClearColor(new Color().fromArray(colour));
+  uniformCube.clear(renderer, true, true, true);
+  renderer.setClearColor(0x000000);
+}
+setUniformEnvironment([0.5, 0.6, 0.7]);
+const environment = { value: uniformCube.texture };
+scene.background = uniformCube.texture;
+
+let simulation: OceanSimulation | null = null;
+let surface: OceanSurface | null = null;
+
+function setup(parameters: Partial<SimulationParameters>, shading: OceanShadingOptions = {}): void {
+  surface?.removeFromParent();
+  surface?.dispose();
+  simulation?.dispose();
+  simulation = new OceanSimulation(renderer, parameters, { path: 'gpu', worker: false });
+  const sim = simulation;
+  surface = new OceanSurface(
+    { displacement: sim.uniforms.tDisplacement, derivatives: sim.uniforms.tDerivatives, patchSize: sim.uniforms.patchSize, environment, sunDirection },
+    () => sim.parameters.patchSize / sim.parameters.resolution,
+    shading,
+  );
+  scene.add(surface);
+}
+
+function view(position: [number, number, number], target: [number, number, number]): void {
+  camera.position.fromArray(position);
+  camera.lookAt(new Vector3().fromArray(target));
+  camera.updateMatrixWorld();
+}
+
+const harness = {
+  setup,
+  view,
+  setUniformEnvironment,
+  render(t: number, linear = false): void {
+    renderer.toneMapping = linear ? NoToneMapping : ACESFilmicToneMapping;
+    renderer.outputColorSpace = linear ? LinearSRGBColorSpace : SRGBColorSpace;
+    simulation!.update(t);
+    renderer.render(scene, camera);
+  },
+  /** Reads one pixel of the canvas (RGBA 0–255), y from the top. */
+  pixel(x: number, y: number): number[] {
+    const gl = renderer.getContext();
+    const out = new Uint8Array(4);
+    gl.readPixels(x, height - 1 - y, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, out);
+    return Array.from(out);
+  },
+  info: () => ({ calls: renderer.info.render.calls, triangles: renderer.info.render.triangles }),
+  vertexCount: () => surface!.geometry.getAttribute('gridVertex').count,
+  geometryCheck,
+  /**
+   * For each pixel (x, y from the top): its rendered value (red, 0–1) and cos θi of the view ray
+   * where it meets the flat sea plane y = 0.
+   */
+  probe(pixels: [number, number][]): { value: number; cosIncident: number; hitsSea: boolean }[] {
+    return pixels.map(([x, y]) => {
+      const ndc = new Vector3(((x + 0.5) / width) * 2 - 1, 1 - ((y + 0.5) / height) * 2, 0.5);
+      const direction = ndc.unproject(camera).sub(camera.position).normalize();
+      return { value: harness.pixel(x, y)[0] / 255, cosIncident: Math.abs(direction.y), hitsSea: direction.y < -0.01 };
+    });
+  },
+  setSun(direction: [number, number, number]): void {
+    sunDirection.fromArray(direction).normalize();
+  },
+};
+
+/**
+ * Draws the horizon grid as points with the real vertex shader (define CAPTURE_POSITIONS), one
+ * float texel per vertex, reads back each vertex's displaced position and rest point, and checks
+ * displaced − rest against the JS fields sampled at the rest point (bilinear, REPEAT, at the
+ * vertex's mip level, mips built by 2×2 averages as generateMipmap does).
+ */
+function geometryCheck(t: number, withRestPoints = false) {
+  const sim = simulation!;
+  const mesh = surface!;
+  sim.update(t);
+  mesh.placeRings(camera);
+  const count = mesh.geometry.getAttribute('gridVertex').count;
+  const captureWidth = 1024;
+  const captureHeight = Math.ceil(count / captureWidth);
+  const material = new OceanMaterial(
+    { displacement: sim.uniforms.tDisplacement, derivatives: sim.uniforms.tDerivatives, patchSize: sim.uniforms.patchSize, environment, sunDirection },
+    {},
+    { CAPTURE_POSITIONS: 1 },
+  );
+  for (const name of ['ringFrames', 'ringUvOrigins', 'ringOffsets', 'halfRingCells']) {
+    material.uniforms[name].value = mesh.material.uniforms[name].value;
+  }
+  material.uniforms.captureWidth.value = captureWidth;
+  material.uniforms.captureHeight.value = captureHeight;
+  const points = new Points(mesh.geometry, material);
+  points.frustumCulled = false;
+  const captureScene = new Scene().add(points);
+  const target = new WebGLRenderTarget(captureWidth, captureHeight, { type: FloatType, format: RGBAFormat, depthBuffer: false });
+  const read = (rest: boolean): Float32Array => {
+    material.uniforms.captureRestPoint.value = rest;
+    renderer.setRenderTarget(target);
+    renderer.setClearColor(0x000000, 0);
+    renderer.clear();
+    renderer.render(captureScene, camera);
+    const pixels = new Float32Array(4 * captureWidth * captureHeight);
+    renderer.readRenderTargetPixels(target, 0, 0, captureWidth, captureHeight, pixels);
+    renderer.setRenderTarget(null);
+    return pixels;
+  };
+  const displaced = read(false);
+  const rest = read(true);
+  target.dispose();
+  material.dispose();
+
+  const { resolution: n, patchSize, choppiness, repeatPeriod } = sim.parameters;
+  const fields = new CpuWaveFields(sim.spectrum, choppiness, repeatPeriod);
+  fields.update(t);
+  const mips = mipChain(fields.displacement, n);
+  let sumSquares = 0;
+  for (let i = 1; i < fields.displacement.length; i += 4) sumSquares += fields.displacement[i] ** 2;
+  const rms = Math.sqrt(sumSquares / (n * n));
+  const byLevel: Record<string, { count: number; maxError: number }> = {};
+  let skirt = 0;
+  let maxOffGrid = 0;
+  const heights: number[] = [];
+  const restPoints: string[] = [];
+  for (let v = 0; v < count; v++) {
+    const [x, z, lod, ring] = rest.subarray(4 * v, 4 * v + 4);
+    const [px, py, pz] = displaced.subarray(4 * v, 4 * v + 3);
+    if (lod > 500) { // SKIRT_LOD: the far edge, flat by design
+      skirt++;
+      continue;
+    }
+    const level = Math.min(Math.round(lod), mips.length - 1); // GL clamps to the last level
+    const expected = sampleBilinear(mips[level], n >> level, x / patchSize + 0.5 / n, z / patchSize + 0.5 / n);
+    const error = Math.max(Math.abs(px - x - expected[0]), Math.abs(py - expected[1]), Math.abs(pz - z - expected[2]));
+    const key = level === mips.length - 1 ? 'coarsest' : String(level);
+    byLevel[key] ??= { count: 0, maxError: 0 };
+    byLevel[key].count++;
+    byLevel[key].maxError = Math.max(byLevel[key].maxError, error / rms);
+    // Rest points lie on the world grid of their ring: multiples of the ring's cell size.
+    const cell = mesh.material.uniforms.ringFrames.value[4 * ring + 2] as number;
+    for (const c of [x, z]) maxOffGrid = Math.max(maxOffGrid, Math.abs(c / cell - Math.round(c / cell)));
+    heights.push(py);
+    if (withRestPoints) restPoints.push(`${x},${z},${level}`);
+  }
+  return { count, skirt, rms, byLevel, maxOffGrid, heights, restPoints };
+}
+
+/** Mip levels of an RGBA N×N texture by 2×2 averaging, level 0 first. */
+function mipChain(level0: Float32Array, n: number): Float32Array[] {
+  const levels = [level0];
+  for (let size = n / 2; size >= 1; size /= 2) {
+    const previous = levels[levels.length - 1];
+    const next = new Float32Array(4 * size * size);
+    for (let j = 0; j < size; j++) {
+      for (let i = 0; i < size; i++) {
+        for (let c = 0; c < 4; c++) {
+          const at = (jj: number, ii: number) => previous[4 * (jj * 2 * size + ii) + c];
+          next[4 * (j * size + i) + c] = 0.25 * (at(2 * j, 2 * i) + at(2 * j, 2 * i + 1) + at(2 * j + 1, 2 * i) + at(2 * j + 1, 2 * i + 1));
+        }
+      }
+    }
+    levels.push(next);
+  }
+  return levels;
+}
+
+/** GL-style bilinear sample with REPEAT at (u, v) of an RGBA size×size texture. */
+function sampleBilinear(data: Float32Array, size: number, u: number, v: number): number[] {
+  const x = u * size - 0.5;
+  const y = v * size - 0.5;
+  const x0 = Math.floor(x);
+  const y0 = Math.floor(y);
+  const fx = x - x0;
+  const fy = y - y0;
+  const wrap = (i: number) => ((i % size) + size) % size;
+  const texel = (i: number, j: number, c: number) => data[4 * (wrap(j) * size + wrap(i)) + c];
+  return [0, 1, 2, 3].map(
+    (c) =>
+      (1 - fy) * ((1 - fx) * texel(x0, y0, c) + fx * texel(x0 + 1, y0, c)) +
+      fy * ((1 - fx) * texel(x0, y0 + 1, c) + fx * texel(x0 + 1, y0 + 1, c)),
+  );
+}
+
+declare global {
+  interface Window {
+    ocean: typeof harness;
+  }
+}
+window.ocean = harness;
+document.title = 'ready';
