@@ -131,15 +131,15 @@ export class GpuWaveFields {
     const fftMaterial = (radix: number): ShaderMaterial =>
       new ShaderMaterial({
         glslVersion: GLSL3,
-        defines: { RADIX: radix },
+        defines: { RADIX: radix, RADIX_LOG2: Math.log2(radix) },
         vertexShader,
         fragmentShader: shaderSource('sim/fftPass.frag'),
         uniforms: {
           tSpectra0: { value: null },
           tSpectra1: { value: null },
           tTwiddles: { value: this.twiddles },
-          size: { value: n },
-          subtransformSize: { value: 1 },
+          sizeLog2: { value: Math.log2(n) },
+          subtransformLog2: { value: 0 },
           alongZ: { value: false },
         },
         depthTest: false,
@@ -183,7 +183,7 @@ export class GpuWaveFields {
         const uniforms = material.uniforms;
         uniforms.tSpectra0.value = source.textures[0];
         uniforms.tSpectra1.value = source.textures[1];
-        uniforms.subtransformSize.value = stage.subtransformSize;
+        uniforms.subtransformLog2.value = Math.log2(stage.subtransformSize);
         uniforms.alongZ.value = alongZ;
         pass++;
         const target = pass === passes ? this.output : spare;
