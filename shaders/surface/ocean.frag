@@ -7,10 +7,10 @@
 #include "surface/choppyNormal.glsl"
 #include "surface/caustics.glsl"
 #include "surface/absorption.glsl"
+#include "sky/environmentLookup.glsl"
 
 uniform sampler2D tDisplacement;
 uniform sampler2D tDerivatives;
-uniform samplerCube tEnvironment;
 uniform vec4 ringFrames[RING_COUNT + 1];
 uniform float halfRingCells;
 uniform vec3 sunDirection;     // towards the sun
@@ -76,16 +76,16 @@ void main() {
   if (shadingMode == SHADING_FRESNEL_CONSTANT) {
     colour = mix(vec3(0.0, 0.3, 0.4), vec3(0.64, 0.84, 1.0), reflectance);
   } else if (shadingMode == SHADING_REFLECTION) {
-    colour = textureCube(tEnvironment, reflected).rgb;
+    colour = environmentRadiance(reflected, 0.0);
   } else if (shadingMode == SHADING_REFRACTION) {
-    colour = throughWater(textureCube(tEnvironment, refracted).rgb, refracted, absorption, scatterColour, viewDepth);
+    colour = throughWater(environmentRadiance(refracted, 0.0), refracted, absorption, scatterColour, viewDepth);
   } else if (shadingMode == SHADING_CAUSTICS) {
     colour = vec3(caustic);
   } else if (shadingMode == SHADING_HEIGHT) {
     colour = vec3(clamp(0.5 + 0.5 * vWorldPosition.y / heightScale, 0.0, 1.0));
   } else {
-    vec3 sky = textureCube(tEnvironment, reflected).rgb;
-    vec3 water = throughWater(textureCube(tEnvironment, refracted).rgb, refracted, absorption, scatterColour, viewDepth);
+    vec3 sky = environmentRadiance(reflected, 0.0);
+    vec3 water = throughWater(environmentRadiance(refracted, 0.0), refracted, absorption, scatterColour, viewDepth);
     vec3 glint = sunColour * reflectance * pow(max(dot(reflected, sunDirection), 0.0), sunShininess);
     colour = reflectance * sky + (1.0 - reflectance) * water + caustic * causticColour + glint;
   }

@@ -17,10 +17,13 @@
  */
 import { BufferGeometry, Float32BufferAttribute, Uint32BufferAttribute } from 'three';
 
-/** Rings around the camera; the last one ends cellsPerRing/2 · baseCell · 2^(RING_COUNT−1) away. */
-export const RING_COUNT = 12;
-/** How much further than the last ring's edge the skirt reaches (flat sea to the horizon). */
-export const SKIRT_SCALE = 256;
+/**
+ * Rings around the camera. The last one ends cellsPerRing/2 · baseCell · 2^(RING_COUNT−1) away,
+ * about 1000 camera heights (baseCell grows with the height), and the skirt goes SKIRT_SCALE times
+ * further: there the sea is less than 0.02° below the true horizon, under a pixel.
+ */
+export const RING_COUNT = 9;
+export const SKIRT_SCALE = 4;
 
 /** Cells on a side of each ring for a viewport this many pixels high: a power of two in [32, 128]. */
 export function cellsPerRingForViewport(heightPixels: number): number {
@@ -109,6 +112,8 @@ export class RingFrames {
   readonly uvOrigins = new Float32Array(2 * (RING_COUNT + 1));
   /** (centre_r − centre_{r+1}) / cell_{r+1} per ring: whole numbers, 0 or 1. */
   readonly offsets = new Float32Array(2 * (RING_COUNT + 1));
+  /** Distance from the camera to the far corner of the skirt: the camera's far plane must reach it. */
+  farEdgeDistance = 0;
 
   /**
    * @param cameraX, cameraZ camera position on the sea plane (m)
@@ -130,6 +135,8 @@ export class RingFrames {
       const halfTexel = (0.5 * texelSize) / patchSize;
       this.uvOrigins.set([fractional(x / patchSize + halfTexel), fractional(z / patchSize + halfTexel)], 2 * ring);
     }
+    const lastCell = this.frames[4 * (RING_COUNT - 1) + 2];
+    this.farEdgeDistance = Math.SQRT2 * (cellsPerRing / 2 + 2) * lastCell * SKIRT_SCALE + Math.max(0, cameraHeight);
     for (let ring = 0; ring < RING_COUNT; ring++) {
       const nextCell = 2 * this.frames[4 * ring + 2];
       this.offsets[2 * ring] = Math.round((centres[2 * ring] - centres[2 * ring + 2]) / nextCell);

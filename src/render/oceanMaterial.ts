@@ -32,7 +32,9 @@ export interface OceanMaterialInputs {
   displacement: { value: Texture | null };
   derivatives: { value: Texture | null };
   patchSize: { value: number };
+  /** The environment cube and whether its x is mirrored (SkyEnvironment.environment / environmentFlipX). */
   environment: { value: Texture | null };
+  environmentFlipX: { value: number };
   sunDirection: Vector3;
 }
 
@@ -71,7 +73,8 @@ export class OceanMaterial extends ShaderMaterial {
     this.uniforms.tDisplacement = inputs.displacement;
     this.uniforms.tDerivatives = inputs.derivatives;
     this.uniforms.patchSize = inputs.patchSize;
-    this.uniforms.tEnvironment = inputs.environment;
+    this.uniforms.skyEnvironment = inputs.environment;
+    this.uniforms.skyEnvironmentFlipX = inputs.environmentFlipX;
     this.uniforms.sunDirection = { value: inputs.sunDirection };
     this.setShading(options);
   }

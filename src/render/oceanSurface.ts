@@ -36,6 +36,11 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
     this.placeRings(camera);
   }
 
+  /** Distance to the far edge of the surface at the last render: the camera's far plane must reach it. */
+  get farEdgeDistance(): number {
+    return this.rings.farEdgeDistance;
+  }
+
   /** Centres the rings under `camera` (done before every render; public for the geometry test). */
   placeRings(camera: Camera): void {
     const position = camera.getWorldPosition(this.cameraPosition);

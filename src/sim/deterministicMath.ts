@@ -25,7 +25,7 @@ function powerOfTwo(n: number): number {
 /** e^x, deterministic. */
 export function detExp(x: number): number {
   if (Number.isNaN(x)) return NaN;
-  if (x > 709.78) return Infinity;
+  if (x > 709.782712893384) return Infinity; // ln(Number.MAX_VALUE)
   if (x < -745.2) return 0;
   // x = n·ln2 + r with |r| ≤ ln2/2, then e^x = 2^n·e^r and e^r by its Taylor series (Horner).
   const n = Math.round(x * INV_LN2);
@@ -71,6 +71,7 @@ export function detCosSinDegrees(degrees: number): [number, number] {
   // Reduce to [0, 360) exactly (% is exact in IEEE-754), then to an octant angle in [0°, 45°].
   let a = degrees % 360;
   if (a < 0) a += 360;
+  if (a >= 360) a = 0; // a tiny negative angle rounds up to 360 above
   const quadrant = Math.floor(a / 90);
   a -= 90 * quadrant;
   const mirrored = a > 45;

@@ -46,7 +46,9 @@ export function frequencyIndex(k: number, params: DispersionParameters): number 
 /** t wrapped into [0, T), also for negative t. */
 export function wrapTime(t: number, repeatPeriod: number): number {
   const wrapped = t % repeatPeriod;
-  return wrapped < 0 ? wrapped + repeatPeriod : wrapped;
+  if (wrapped >= 0) return wrapped;
+  const shifted = wrapped + repeatPeriod;
+  return shifted < repeatPeriod ? shifted : 0; // a tiny negative t rounds up to T
 }
 
 /**

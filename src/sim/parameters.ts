@@ -5,7 +5,7 @@
  * y up, as in three.js and the course report.
  */
 
-import { frequencyIndex, MAX_FREQUENCY_INDEX } from './dispersion';
+import { angularFrequency, frequencyIndex, MAX_FREQUENCY_INDEX } from './dispersion';
 
 export interface SimulationParameters {
   /** Samples per side of the simulated patch, a power of two in [16, 1024]. @defaultValue 256 */
@@ -84,20 +84,22 @@ export function validateParameters(
 ): SimulationParameters {
   const merged: SimulationParameters = { ...base };
   for (const key of Object.keys(changes) as (keyof SimulationParameters)[]) {
-    const rule = RULES[key];
+    const rule = Object.hasOwn(RULES, key) ? RULES[key] : undefined;
     if (!rule) throw new ParameterError(String(key), changes[key], `one of ${Object.keys(RULES).join(', ')}`);
     const value = changes[key];
     if (typeof value !== 'number' || !rule[0](value)) throw new ParameterError(key, value, rule[1]);
     merged[key] = value;
   }
   // The fastest mode sits at the corner of the grid, |k| = √2·π·N / patchSize.
-  const fastest = frequencyIndex((Math.SQRT2 * Math.PI * merged.resolution) / merged.patchSize, merged);
+  const fastestK = (Math.SQRT2 * Math.PI * merged.resolution) / merged.patchSize;
+  const fastest = frequencyIndex(fastestK, merged);
   if (fastest > MAX_FREQUENCY_INDEX) {
-    const longest = ((MAX_FREQUENCY_INDEX + 1) / fastest) * merged.repeatPeriod;
+    // T at which the fastest index would reach MAX + 1, less a second so the advice is accepted.
+    const longest = ((MAX_FREQUENCY_INDEX + 1) * 2 * Math.PI) / angularFrequency(fastestK, merged.depth);
     throw new ParameterError(
       'repeatPeriod',
       merged.repeatPeriod,
-      `at most ${Math.floor(longest)} s with resolution ${merged.resolution} and patchSize ${merged.patchSize} ` +
+      `at most ${Math.ceil(longest) - 1} s with resolution ${merged.resolution} and patchSize ${merged.patchSize} ` +
         `(the fastest wave's frequency index would be ${fastest}, above ${MAX_FREQUENCY_INDEX})`,
     );
   }

@@ -57,7 +57,7 @@ function setup(parameters: Partial<SimulationParameters>, shading: OceanShadingO
   simulation = new OceanSimulation(renderer, parameters, { path: 'gpu', worker: false });
   const sim = simulation;
   surface = new OceanSurface(
-    { displacement: sim.uniforms.tDisplacement, derivatives: sim.uniforms.tDerivatives, patchSize: sim.uniforms.patchSize, environment, sunDirection },
+    { displacement: sim.uniforms.tDisplacement, derivatives: sim.uniforms.tDerivatives, patchSize: sim.uniforms.patchSize, environment, environmentFlipX: { value: 1 }, sunDirection },
     () => sim.parameters.patchSize / sim.parameters.resolution,
     shading,
   );
@@ -121,7 +121,7 @@ function geometryCheck(t: number, withRestPoints = false) {
   const captureWidth = 1024;
   const captureHeight = Math.ceil(count / captureWidth);
   const material = new OceanMaterial(
-    { displacement: sim.uniforms.tDisplacement, derivatives: sim.uniforms.tDerivatives, patchSize: sim.uniforms.patchSize, environment, sunDirection },
+    { displacement: sim.uniforms.tDisplacement, derivatives: sim.uniforms.tDerivatives, patchSize: sim.uniforms.patchSize, environment, environmentFlipX: { value: 1 }, sunDirection },
     {},
     { CAPTURE_POSITIONS: 1 },
   );

@@ -1,0 +1,181 @@
+/**
+ * Ocean: the whole sea as one three.js Object3D — simulation (src/sim), sky (SkyEnvironment) and
+ * surface (OceanSurface) — for any scene.
+ *
+ *   const ocean = new Ocean(renderer, { windSpeed: 12, seed: 7 });
+ *   scene.add(ocean);
+ *   scene.background = ocean.background;
+ *   renderer.setAnimationLoop((ms) => { ocean.update(ms / 1000); renderer.render(scene, camera); });
+ *
+ * The sea is the plane y = 0 of world space; give the camera a far plane of at least
+ * ocean.horizonDistance (about 4000 camera heights) so the surface reaches the horizon. Owns everything it creates and frees it
+ * in dispose().
+ */
+import { Object3D, type Texture, type WebGLRenderer } from 'three';
+import { OceanSurface } from './render/oceanSurface';
+import type { OceanShadingOptions } from './render/oceanMaterial';
+import { SkyEnvironment } from './render/skyEnvironment';
+import { CpuWaveFields } from './sim/cpuWaveFields';
+import { OceanSimulation, type SimulationOptions } from './sim/oceanSimulation';
+import { ParameterError, type SimulationParameters } from './sim/parameters';
+import type { InitialSpectrum } from './sim/spectrum';
+
+export interface OceanOptions extends Partial<SimulationParameters>, OceanShadingOptions, SimulationOptions {
+  /** Sun elevation above the horizon in degrees, [-90, 90]. @defaultValue 30 */
+  sunElevation?: number;
+  /** Sun azimuth in degrees from +x towards +z. @defaultValue 40 */
+  sunAzimuth?: number;
+}
+
+const SHADING_KEYS = ['ior', 'absorption', 'scatterColour', 'causticPower', 'causticColour', 'shadingMode'] as const;
+const SIMULATION_KEYS = [
+  'resolution',
+  'patchSize',
+  'windSpeed',
+  'windDirection',
+  'amplitude',
+  'smallWaveCutoff',
+  'depth',
+  'repeatPeriod',
+  'choppiness',
+  'seed',
+] as const;
+
+export class Ocean extends Object3D {
+  readonly simulation: OceanSimulation;
+  readonly sky: SkyEnvironment;
+  readonly surface: OceanSurface;
+  private currentTime = 0;
+  /** CPU copy of the fields for heightAt(), computed lazily for the current time. */
+  private probe: { spectrum: InitialSpectrum; fields: CpuWaveFields; time: number } | null = null;
+
+  constructor(renderer: WebGLRenderer, options: OceanOptions = {}) {
+    super();
+    this.name = 'Ocean';
+    const simulationParameters = pick(options, SIMULATION_KEYS);
+    const shading = pick(options, SHADING_KEYS);
+    this.simulation = new OceanSimulation(renderer, simulationParameters, { path: options.path, worker: options.worker });
+    this.sky = new SkyEnvironment(renderer, { sunElevation: options.sunElevation, sunAzimuth: options.sunAzimuth });
+    const sim = this.simulation;
+    this.surface = new OceanSurface(
+      {
+        displacement: sim.uniforms.tDisplacement,
+        derivatives: sim.uniforms.tDerivatives,
+        patchSize: sim.uniforms.patchSize,
+        environment: this.sky.environment,
+        environmentFlipX: this.sky.environmentFlipX,
+        sunDirection: this.sky.sunDirection,
+      },
+      () => sim.parameters.patchSize / sim.parameters.resolution,
+      shading,
+    );
+    this.add(this.surface);
+  }
+
+  /** The sky cube texture, for scene.background (reassign after loading a face set). */
+  get background(): Texture {
+    return this.sky.environment.value;
+  }
+
+  /**
+   * Distance in metres from the camera of the last render to the far edge of the surface (it grows
+   * with the camera's height): set camera.far at least this large to see the sea to the horizon.
+   */
+  get horizonDistance(): number {
+    return this.surface.farEdgeDistance;
+  }
+
+  get time(): number {
+    return this.currentTime;
+  }
+
+  /** Computes the sea at `timeSeconds` (any finite number; it repeats every repeatPeriod). */
+  update(timeSeconds: number): void {
+    this.simulation.update(timeSeconds);
+    this.currentTime = timeSeconds;
+  }
+
+  get parameters(): Readonly<SimulationParameters> {
+    return this.simulation.parameters;
+  }
+
+  /** Changes simulation parameters; a bad one throws a ParameterError and nothing changes. */
+  setParameters(changes: Partial<SimulationParameters>): void {
+    this.simulation.setParameters(changes);
+  }
+
+  get shading(): Required<OceanShadingOptions> {
+    return this.surface.material.shading;
+  }
+
+  /** Changes shading options; a bad one throws a ParameterError and nothing changes. */
+  setShading(changes: OceanShadingOptions): void {
+    this.surface.material.setShading(changes);
+  }
+
+  /** Moves the sun (degrees); the sky, glint and caustics follow. */
+  setSun(elevation: number, azimuth: number): void {
+    this.sky.setSun(elevation, azimuth);
+  }
+
+  /**
+   * Height of the water surface at the world point (x, z) at the current time: the height of the
+   * surface point that the choppy displacement moves onto (x, z), found by fixed-point iteration
+   * x0 ← (x, z) − D(x0), which converges wherever the surface does not fold (Jacobian > 0).
+   * Computes the fields on the CPU once per time it is asked for (a few ms at N = 256).
+   */
+  heightAt(x: number, z: number): number {
+    if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError('heightAt(x, z)', `${x}, ${z}`, 'finite coordinates');
+    const { fields, spectrum } = this.fieldsNow();
+    const n = spectrum.resolution;
+    const scale = n / spectrum.patchSize; // texels per metre
+    let restX = x;
+    let restZ = z;
+    for (let iteration = 0; iteration < 12; iteration++) {
+      restX = x - sampleField(fields.displacement, n, restX * scale, restZ * scale, 0);
+      restZ = z - sampleField(fields.displacement, n, restX * scale, restZ * scale, 2);
+    }
+    return sampleField(fields.displacement, n, restX * scale, restZ * scale, 1);
+  }
+
+  private fieldsNow(): { fields: CpuWaveFields; spectrum: InitialSpectrum } {
+    const spectrum = this.simulation.spectrum as InitialSpectrum;
+    const { choppiness, repeatPeriod } = this.simulation.parameters;
+    if (!this.probe || this.probe.spectrum !== spectrum) {
+      this.probe = { spectrum, fields: new CpuWaveFields(spectrum, choppiness, repeatPeriod), time: NaN };
+    }
+    if (this.probe.time !== this.currentTime) {
+      this.probe.fields.update(this.currentTime);
+      this.probe.time = this.currentTime;
+    }
+    return this.probe;
+  }
+
+  dispose(): void {
+    this.surface.removeFromParent();
+    this.surface.dispose();
+    this.sky.dispose();
+    this.simulation.dispose();
+    this.probe = null;
+  }
+}
+
+/**
+ * Bilinear sample with wrap-around of channel c of an RGBA N×N field at continuous texel
+ * coordinates (u, v), where texel (i, j) holds the field at (u, v) = (i, j) — the same
+ * interpolation the GPU does for the surface (see horizonGrid.ts).
+ */
+function sampleField(data: Float32Array, n: number, u: number, v: number, c: number): number {
+  const i0 = Math.floor(u);
+  const j0 = Math.floor(v);
+  const fu = u - i0;
+  const fv = v - j0;
+  const at = (i: number, j: number) => data[4 * ((((j % n) + n) % n) * n + (((i % n) + n) % n)) + c];
+  return (1 - fv) * ((1 - fu) * at(i0, j0) + fu * at(i0 + 1, j0)) + fv * ((1 - fu) * at(i0, j0 + 1) + fu * at(i0 + 1, j0 + 1));
+}
+
+function pick<T extends object, K extends keyof T>(source: T, keys: readonly K[]): Partial<Pick<T, K>> {
+  const result: Partial<Pick<T, K>> = {};
+  for (const key of keys) if (source[key] !== undefined) result[key] = source[key];
+  return result;
+}

@@ -1,0 +1,340 @@
+/**
+ * The Phillips spectrum and the initial amplitudes h̃0 on the FFT grid (Tessendorf 2001, eqs.
+ * 23–25), checked against the formulas evaluated independently here with Math.exp / Math.cos.
+ */
+import { describe, expect, it } from 'vitest';
+import { angularFrequency, frequencyIndex } from '../../src/sim/dispersion';
+import { validateParameters, type SimulationParameters } from '../../src/sim/parameters';
+import { createInitialSpectrum, phillips, signedFrequency, windUnitVector } from '../../src/sim/spectrum';
+
+const G = 9.81;
+
+/** The signed frequency n' of index i, straight from the definition in spectrum.ts. */
+function signed(i: number, n: number): number {
+  return i < n / 2 ? i : i - n;
+}
+
+/** Phillips spectrum, eq. 23 with the eq. 24 cutoff, written out with Math functions. */
+function referencePhillips(kx: number, kz: number, p: SimulationParameters): number {
+  const k = Math.hypot(kx, kz);
+  if (k === 0 || p.windSpeed === 0) return 0;
+  const angle = (p.windDirection * Math.PI) / 180;
+  const cosine = (kx * Math.cos(angle) + kz * Math.sin(angle)) / k;
+  const L = p.windSpeed ** 2 / G;
+  const cutoff = Math.exp(-((k * p.smallWaveCutoff) ** 2));
+  return ((p.amplitude * Math.exp(-1 / (k * L) ** 2)) / k ** 4) * cosine ** 2 * cutoff;
+}
+
+function params(changes: Partial<SimulationParameters>): SimulationParameters {
+  return validateParameters(changes);
+}
+
+describe('phillips', () => {
+  it('matches the formula written out independently (relative 1e-12)', () => {
+    for (const p of [
+      params({}),
+      params({ windSpeed: 30, windDirection: -75, smallWaveCutoff: 0, amplitude: 1e-3 }),
+      params({ windSpeed: 3, windDirection: 200, smallWaveCutoff: 0.5 }),
+    ]) {
+      let checked = 0;
+      for (let a = -40; a <= 40; a++) {
+        for (let b = -40; b <= 40; b++) {
+          const kx = 0.05 * a;
+          const kz = 0.037 * b;
+          const want = referencePhillips(kx, kz, p);
+          const angle = (p.windDirection * Math.PI) / 180;
+          const cosine2 = ((kx * Math.cos(angle) + kz * Math.sin(angle)) / Math.hypot(kx, kz)) ** 2;
+          // Skip where P underflows or the wind factor cos² is tiny (there the 1e-15 difference in
+          // ŵ between detCosSinDegrees and Math.cos dominates the relative error).
+          if (!(want > 1e-280) || cosine2 < 1e-2) continue;
+          // detExp vs Math.exp differ by ≤ 2 ulp, and exp(x) magnifies the ~1 ulp rounding of its
+          // argument x (|x| ≤ ~1000 here) to ≤ 2.2e-13 relative; cos² adds ≤ 2e-13. Observed: ≤ 6e-14.
+          expect(Math.abs(phillips(kx, kz, p) / want - 1)).toBeLessThan(1e-12);
+          checked++;
+        }
+      }
+      expect(checked).toBeGreaterThan(1000);
+    }
+  });
+
+  it('is 0 at k = 0', () => {
+    for (const p of [params({}), params({ windSpeed: 60 }), params({ smallWaveCutoff: 0 })]) {
+      expect(phillips(0, 0, p)).toBe(0);
+    }
+  });
+
+  it('is 0 across the wind, positive and equal along and against it, for axis and oblique directions', () => {
+    for (const direction of [0, 30, 45, 90, 137.5, 180, 270, -60, 400]) {
+      const p = params({ windDirection: direction, smallWaveCutoff: 0 });
+      const angle = (direction * Math.PI) / 180;
+      // On the axes, exact unit vectors (Math.cos(π/2) is 6e-17, not 0).
+      const onAxis = direction % 90 === 0;
+      const wx = onAxis ? Math.round(Math.cos(angle)) : Math.cos(angle);
+      const wz = onAxis ? Math.round(Math.sin(angle)) : Math.sin(angle);
+      for (const k of [0.05, 0.5, 5]) {
+        const along = phillips(k * wx, k * wz, p);
+        const against = phillips(-k * wx, -k * wz, p);
+        const across = phillips(-k * wz, k * wx, p);
+        expect(along).toBeGreaterThan(0);
+        expect(against).toBe(along);
+        // Across the wind k̂·ŵ is 0 up to rounding (~1e-15), so P/P_along ≤ ~1e-30; a missing or
+        // wrong angular factor gives a ratio of order 1.
+        expect(across / along).toBeLessThan(1e-20);
+        if (onAxis) expect(across === 0).toBe(true); // ŵ exact on the axes
+        // Off the wind at 60°, |k̂·ŵ|² = 1/4.
+        const c60 = Math.cos(angle + Math.PI / 3);
+        const s60 = Math.sin(angle + Math.PI / 3);
+        // 1e-12: the same argument as the formula test above.
+        expect(Math.abs(phillips(k * c60, k * s60, p) / along - 0.25)).toBeLessThan(1e-12);
+      }
+    }
+  });
+
+  it('uses the wind direction from +x towards +z', () => {
+    const [wx, wz] = windUnitVector(30);
+    // detCosSinDegrees is within 1e-15 of cos/sin (deterministicMath.test.ts).
+    expect(Math.abs(wx - Math.sqrt(3) / 2)).toBeLessThan(1e-15);
+    expect(Math.abs(wz - 0.5)).toBeLessThan(1e-15);
+    const p = params({ windDirection: 90 });
+    expect(phillips(0, 0.3, p)).toBeGreaterThan(0);
+    expect(phillips(0.3, 0, p) === 0).toBe(true);
+  });
+
+  it('is proportional to the amplitude A', () => {
+    for (const [kx, kz] of [
+      [0.1, 0.02],
+      [-0.7, 0.4],
+      [2, -3],
+    ]) {
+      const base = phillips(kx, kz, params({ amplitude: 2e-6 }));
+      expect(phillips(kx, kz, params({ amplitude: 4e-6 }))).toBe(2 * base); // ×2 is exact
+      // ×3 then rounding: a few ulp.
+      expect(Math.abs(phillips(kx, kz, params({ amplitude: 6e-6 })) / base - 3)).toBeLessThan(1e-14);
+      expect(phillips(kx, kz, params({ amplitude: 0 }))).toBe(0);
+    }
+  });
+
+  it('is symmetric, P(k) = P(−k), exactly', () => {
+    const p = params({ windDirection: 33.3, windSpeed: 17 });
+    for (let a = -20; a <= 20; a++) {
+      for (let b = -20; b <= 20; b++) {
+        const [kx, kz] = [0.031 * a + 0.001, 0.027 * b];
+        expect(phillips(-kx, -kz, p)).toBe(phillips(kx, kz, p));
+      }
+    }
+  });
+
+  it('is 0 everywhere, without NaN, when there is no wind', () => {
+    const p = params({ windSpeed: 0 });
+    for (const [kx, kz] of [
+      [0, 0],
+      [1e-6, 0],
+      [0.3, 0.4],
+      [-100, 7],
+    ]) {
+      expect(phillips(kx, kz, p)).toBe(0);
+    }
+  });
+});
+
+describe('signedFrequency', () => {
+  it('orders frequencies as an FFT does: N = 8 gives 0 1 2 3 −4 −3 −2 −1', () => {
+    // From the definition: n' = i for i < N/2, n' = i − N for i ≥ N/2.
+    expect(Array.from({ length: 8 }, (_, i) => signedFrequency(i, 8))).toEqual([0, 1, 2, 3, -4, -3, -2, -1]);
+  });
+
+  it('is congruent to i mod N and lies in [−N/2, N/2) for every N', () => {
+    for (let n = 2; n <= 1024; n *= 2) {
+      for (let i = 0; i < n; i++) {
+        const f = signedFrequency(i, n);
+        expect((((f - i) % n) + n) % n).toBe(0);
+        expect(f >= -n / 2 && f < n / 2).toBe(true);
+      }
+    }
+  });
+});
+
+describe('createInitialSpectrum', () => {
+  const cases = [
+    params({ resolution: 16, patchSize: 50, windDirection: 30, depth: 5, smallWaveCutoff: 0 }),
+    params({ resolution: 32, patchSize: 80, windDirection: -110, windSpeed: 20, seed: 9 }),
+  ];
+
+  it('stores (kx, kz, 1/|k|, m) per texel, with the Nyquist components of kx and kz set to 0', () => {
+    for (const p of cases) {
+      const n = p.resolution;
+      const { waveVectors } = createInitialSpectrum(p);
+      for (let j = 0; j < n; j++) {
+        for (let i = 0; i < n; i++) {
+          const t = 4 * (j * n + i);
+          const kx = (2 * Math.PI * signed(i, n)) / p.patchSize;
+          const kz = (2 * Math.PI * signed(j, n)) / p.patchSize;
+          const k = Math.hypot(kx, kz);
+          // Float32 storage: relative ≤ 2^−24 ≈ 6e-8; 1.2e-7 also allows a double rounding.
+          const close = (got: number, want: number) => Math.abs(got - want) <= 1.2e-7 * Math.abs(want);
+          if (i === n / 2) expect(waveVectors[t] === 0).toBe(true);
+          else expect(close(waveVectors[t], kx), `kx at ${i},${j}`).toBe(true);
+          if (j === n / 2) expect(waveVectors[t + 1] === 0).toBe(true);
+          else expect(close(waveVectors[t + 1], kz), `kz at ${i},${j}`).toBe(true);
+          // 1/|k| of the true k (Nyquist components included), 0 at k = 0.
+          if (k === 0) expect(waveVectors[t + 2]).toBe(0);
+          else expect(close(waveVectors[t + 2], 1 / k), `1/k at ${i},${j}`).toBe(true);
+          const m = waveVectors[t + 3];
+          expect(m).toBe(frequencyIndex(k, p));
+          // and independently: m·2π/T ≤ ω(k) < (m + 1)·2π/T (1e-12: rounding slack, as in dispersion.test.ts)
+          const omega = angularFrequency(k, p.depth);
+          expect((m * 2 * Math.PI) / p.repeatPeriod).toBeLessThanOrEqual(omega * (1 + 1e-12));
+          expect(omega).toBeLessThan(((m + 1) * 2 * Math.PI) / p.repeatPeriod);
+          // The opposite texel holds −k (exactly: float32 negation) and the same m.
+          const o = 4 * (((n - j) % n) * n + ((n - i) % n));
+          expect(waveVectors[o] === -waveVectors[t] && waveVectors[o + 1] === -waveVectors[t + 1]).toBe(true);
+          expect(waveVectors[o + 2]).toBe(waveVectors[t + 2]);
+          expect(waveVectors[o + 3]).toBe(m);
+        }
+      }
+    }
+  });
+
+  it('stores P per texel (float32 of the independent formula)', () => {
+    for (const p of cases) {
+      const n = p.resolution;
+      const spectrum = createInitialSpectrum(p);
+      for (let j = 0; j < n; j++) {
+        for (let i = 0; i < n; i++) {
+          const kx = (2 * Math.PI * signed(i, n)) / p.patchSize;
+          const kz = (2 * Math.PI * signed(j, n)) / p.patchSize;
+          const want = referencePhillips(kx, kz, p);
+          // Float32 rounding (≤ 6e-8 relative) plus the cos² term's ~2e-15 absolute (see above).
+          const slack = 1.2e-7 * want + (2e-15 * p.amplitude) / Math.max(kx * kx + kz * kz, 1e-300) ** 2;
+          expect(Math.abs(spectrum.phillips[j * n + i] - want)).toBeLessThanOrEqual(slack);
+        }
+      }
+    }
+  });
+
+  it('pairs each texel k with the conjugate of h̃0 at −k, texel ((N−i) mod N, (N−j) mod N)', () => {
+    for (const p of cases) {
+      const n = p.resolution;
+      const { amplitudes } = createInitialSpectrum(p);
+      let nonzero = 0;
+      for (let j = 0; j < n; j++) {
+        for (let i = 0; i < n; i++) {
+          const t = 4 * (j * n + i);
+          const o = 4 * (((n - j) % n) * n + ((n - i) % n));
+          // Exact: copying and negating a float32 does not round.
+          expect(amplitudes[t + 2] === amplitudes[o] && amplitudes[t + 3] === -amplitudes[o + 1]).toBe(true);
+          if (amplitudes[t] !== 0) nonzero++;
+        }
+      }
+      // Everything but k = 0 has P > 0 here, so the pairing is not checked on zeros only.
+      expect(nonzero).toBe(n * n - 1);
+      const nyquist = 4 * ((n / 2) * n + n / 2);
+      expect(amplitudes[nyquist]).not.toBe(0);
+    }
+  });
+
+  it('is bit-identical for the same seed and different for another seed', () => {
+    const p = params({ resolution: 64, seed: 12345 });
+    const a = createInitialSpectrum(p);
+    const b = createInitialSpectrum({ ...p });
+    for (const key of ['amplitudes', 'waveVectors', 'phillips'] as const) {
+      expect(new Uint32Array(a[key].buffer)).toEqual(new Uint32Array(b[key].buffer));
+    }
+    const other = createInitialSpectrum({ ...p, seed: 12346 });
+    let differing = 0;
+    for (let t = 0; t < 64 * 64; t++) if (other.amplitudes[4 * t] !== a.amplitudes[4 * t]) differing++;
+    expect(differing).toBe(64 * 64 - 1); // all but k = 0, where h̃0 = 0 for any seed
+    expect(new Uint32Array(other.waveVectors.buffer)).toEqual(new Uint32Array(a.waveVectors.buffer));
+  });
+
+  it('draws the same normal deviates whatever the spectrum, so a wind change keeps the sea’s phases', () => {
+    const calm = params({ resolution: 32, windSpeed: 5, windDirection: 10, seed: 4 });
+    const storm = params({ resolution: 32, windSpeed: 25, windDirection: 70, seed: 4 });
+    const a = createInitialSpectrum(calm);
+    const b = createInitialSpectrum(storm);
+    let checked = 0;
+    for (let t = 0; t < 32 * 32; t++) {
+      const i = t % 32;
+      const j = Math.floor(t / 32);
+      const kx = (2 * Math.PI * signed(i, 32)) / calm.patchSize;
+      const kz = (2 * Math.PI * signed(j, 32)) / calm.patchSize;
+      const scaleA = Math.sqrt(phillips(kx, kz, calm) / 2);
+      const scaleB = Math.sqrt(phillips(kx, kz, storm) / 2);
+      if (!(scaleA > 1e-15 && scaleB > 1e-15)) continue;
+      checked++;
+      for (const c of [0, 1]) {
+        // ξ = h̃0/√(P/2) from each spectrum; float32 storage makes each ≤ 6e-8 relative off.
+        const xiA = a.amplitudes[4 * t + c] / scaleA;
+        const xiB = b.amplitudes[4 * t + c] / scaleB;
+        expect(Math.abs(xiA - xiB)).toBeLessThanOrEqual(2e-7 * Math.max(1, Math.abs(xiA)));
+      }
+    }
+    expect(checked).toBeGreaterThan(900);
+  });
+
+  it('has ⟨|h̃0|²⟩ = P: mean of |h̃0|²/P over 65 000 texels is 1 within 5 standard errors', () => {
+    const p = params({ resolution: 256, seed: 2024 });
+    const n = p.resolution;
+    const { amplitudes } = createInitialSpectrum(p);
+    let count = 0;
+    let sumBoth = 0;
+    let sumReal = 0;
+    let sumImag = 0;
+    let sumCross = 0;
+    for (let j = 0; j < n; j++) {
+      for (let i = 0; i < n; i++) {
+        const dk = (2 * Math.PI) / p.patchSize;
+        const P = referencePhillips(dk * signed(i, n), dk * signed(j, n), p);
+        if (!(P > 1e-50)) continue; // keep h̃0 well inside float32's normal range
+        const t = 4 * (j * n + i);
+        const re2 = amplitudes[t] ** 2 / (P / 2);
+        const im2 = amplitudes[t + 1] ** 2 / (P / 2);
+        sumReal += re2;
+        sumImag += im2;
+        sumBoth += (re2 + im2) / 2;
+        sumCross += (amplitudes[t] * amplitudes[t + 1]) / (P / 2);
+        count++;
+      }
+    }
+    expect(count).toBeGreaterThan(60_000);
+    // |h̃0|²/P = (ξr² + ξi²)/2 is exponential with mean 1 and variance 1: σ = 1/√count.
+    expect(Math.abs(sumBoth / count - 1)).toBeLessThan(5 / Math.sqrt(count));
+    // ξr² and ξi² alone are χ²₁: mean 1, variance 2.
+    expect(Math.abs(sumReal / count - 1)).toBeLessThan(5 * Math.sqrt(2 / count));
+    expect(Math.abs(sumImag / count - 1)).toBeLessThan(5 * Math.sqrt(2 / count));
+    // ξr·ξi: mean 0, variance 1 (independent real and imaginary parts).
+    expect(Math.abs(sumCross / count)).toBeLessThan(5 / Math.sqrt(count));
+  });
+
+  it('has no NaN or Infinity for no wind, a 60 m/s gale, and N = 1024 (built in well under 5 s)', () => {
+    for (const p of [params({ windSpeed: 0 }), params({ windSpeed: 60 }), params({ resolution: 1024 })]) {
+      const start = performance.now();
+      const spectrum = createInitialSpectrum(p);
+      const seconds = (performance.now() - start) / 1000;
+      // ~0.4 s for N = 1024 on a laptop; 5 s flags a complexity regression without flaking.
+      expect(seconds).toBeLessThan(5);
+      const n = p.resolution;
+      expect(spectrum.resolution).toBe(n);
+      expect(spectrum.patchSize).toBe(p.patchSize);
+      expect(spectrum.amplitudes.length).toBe(4 * n * n);
+      expect(spectrum.waveVectors.length).toBe(4 * n * n);
+      expect(spectrum.phillips.length).toBe(n * n);
+      for (const array of [spectrum.amplitudes, spectrum.waveVectors, spectrum.phillips]) {
+        expect(array.every(Number.isFinite)).toBe(true);
+      }
+      if (p.windSpeed === 0) {
+        expect(spectrum.amplitudes.every((x) => x === 0)).toBe(true);
+        expect(spectrum.phillips.every((x) => x === 0)).toBe(true);
+      } else {
+        expect(spectrum.amplitudes.some((x) => x !== 0)).toBe(true);
+      }
+    }
+  }, 30_000);
+});
+
+describe('wind direction edge case found in review', () => {
+  it('a tiny negative wind direction builds a spectrum', () => {
+    const params = validateParameters({ resolution: 16, windDirection: -1e-20 });
+    expect(() => createInitialSpectrum(params)).not.toThrow();
+  });
+});
