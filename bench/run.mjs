@@ -23,6 +23,9 @@ const MIN_RUNS = 30;
 const BROWSER_ROUNDS = { 64: 60, 128: 50, 256: 40, 512: 30 };
 const BROWSER_WARMUP_ROUNDS = 6;
 const BROWSER_STEP_TIMEOUT_MS = 150_000;
+/** The full frame (simulation, sky and surface) is timed at this canvas size. */
+const FRAME_SIZE = { width: 1280, height: 720 };
+const FRAME_ROUNDS = 30;
 const FIRST_PORT = 5180;
 
 const started = performance.now();
@@ -308,6 +311,32 @@ async function browserBenchmarks(results) {
       results.jsBrowser[n] = jsRow.ms;
       emit({ bench: 'fields', N: n, path: 'js-browser', ...jsRow });
     }
+    await page.goto(`http://127.0.0.1:${port}/bench/pages/frame.html`);
+    await page.waitForFunction(() => document.title === 'ready', null, { timeout: 60_000 });
+    for (const n of [256, 512]) {
+      log(`frame N=${n}: simulation + sky + surface at ${FRAME_SIZE.width}x${FRAME_SIZE.height}`);
+      const frame = await withTimeout(
+        page.evaluate((o) => window.frameBench.frames(o), { resolution: n, ...FRAME_SIZE, warmup: 5, rounds: FRAME_ROUNDS }),
+        BROWSER_STEP_TIMEOUT_MS,
+        `the frame benchmark at N=${n}`,
+      );
+      const row = stats(frame.samples);
+      results.frame[n] = row.ms;
+      emit({
+        bench: 'frame',
+        N: n,
+        size: `${FRAME_SIZE.width}x${FRAME_SIZE.height}`,
+        path: frame.path,
+        ...row,
+        drawCalls: frame.calls,
+        vertices: frame.vertices,
+        triangles: frame.triangles,
+        simulationPasses: frame.simulationPasses,
+        timer: 'readpixels-sync',
+      });
+    }
+    await page.goto(`http://127.0.0.1:${port}/bench/pages/bench.html`);
+    await page.waitForFunction(() => document.title === 'ready', null, { timeout: 60_000 });
     if (info.halfFloat) {
       log('fields N=256: GPU (rgba16f) in Chromium');
       const samples = await runFields({
@@ -327,7 +356,7 @@ async function browserBenchmarks(results) {
   }
 }
 
-const results = { fftSpeedup: {}, jsFields: {}, jsBrowser: {}, gpu: {}, gpuHalf256: null };
+const results = { fftSpeedup: {}, jsFields: {}, jsBrowser: {}, gpu: {}, gpuHalf256: null, frame: {} };
 let exitCode = 0;
 let browserError = null;
 try {
@@ -362,6 +391,8 @@ emit({
   // Wall clock against wall clock, both in the same browser run.
   gpuSpeedupVsJsBrowser256: ratio(results.jsBrowser[256], gpu(256, 'readPixels')),
   gpuSpeedupVsJsBrowser512: ratio(results.jsBrowser[512], gpu(512, 'readPixels')),
+  frameMs256At1280x720: results.frame[256] ?? null,
+  frameMs512At1280x720: results.frame[512] ?? null,
   browser: browserError === null ? 'ok' : 'failed',
   ...(browserError === null ? {} : { browserError }),
   seconds: Math.round((performance.now() - started) / 100) / 10,
