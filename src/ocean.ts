@@ -64,7 +64,7 @@ export class Ocean extends Object3D {
         patchSize: sim.uniforms.patchSize,
         environment: this.sky.environment,
         environmentFlipX: this.sky.environmentFlipX,
-        sunDirection: this.sky.sunDirection,
+        sunDirection: this.sky.skyUniforms.skySunDirection,
       },
       () => sim.parameters.patchSize / sim.parameters.resolution,
       shading,

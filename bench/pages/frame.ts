@@ -40,7 +40,7 @@ async function frames(options: { resolution: number; width: number; height: numb
     samples,
     calls: renderer.info.render.calls,
     triangles: renderer.info.render.triangles,
-    vertices: ocean.surface.geometry.getAttribute('gridVertex').count,
+    vertices: ocean.surface.geometry.getAttribute('position').count,
     simulationPasses: ocean.simulation.passCount,
     path: ocean.simulation.path,
   };

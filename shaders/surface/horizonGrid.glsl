@@ -7,7 +7,9 @@
 // (whole numbers). Vertices on a ring's outer edge are moved onto the next ring's grid (the odd
 // ones onto their even neighbour) and computed in that ring's frame, with the same arithmetic as
 // the next ring's own vertices, so the two rings meet with no crack.
-attribute vec3 gridVertex;  // (x, z) in cells from the ring centre, ring index
+// The geometry's `position` attribute (declared by three.js) holds grid coordinates, not metres:
+// (x, z) in cells from the ring centre, and the ring index. (It must be called position: three.js
+// builds wireframes and draw ranges from that attribute.)
 attribute float farScale;   // 1, or a large factor for the skirt that reaches the horizon
 
 #define SKIRT_LOD 1000.0  // beyond any mip level: GL clamps to the last one
@@ -26,8 +28,8 @@ struct GridPoint {
 };
 
 GridPoint horizonGridPoint() {
-  int ring = int(gridVertex.z);
-  vec2 cells = gridVertex.xy;
+  int ring = int(position.z);
+  vec2 cells = position.xy;
   if (max(abs(cells.x), abs(cells.y)) == halfRingCells) {
     // On the outer edge: into the next ring's frame (cells there are twice as large).
     cells = ringOffsets[ring] + (cells - mod(cells, 2.0)) * 0.5;
@@ -39,6 +41,6 @@ GridPoint horizonGridPoint() {
   point.world = frame.xy + metres;
   point.uv = ringUvOrigins[ring] + metres / patchSize;
   point.lod = farScale > 1.0 ? SKIRT_LOD : frame.w;  // the skirt samples the coarsest mip: flat, mean sea
-  point.ring = gridVertex.z;
+  point.ring = position.z;
   return point;
 }

@@ -72,17 +72,22 @@ void main() {
   vec3 refracted = refract(view, normal, iorAir / iorWater);
   float caustic = causticBrightness(normal, sunDirection, iorWater / iorAir, causticPower);
 
-  vec3 colour;
+  // The report's false-colour figures are shown exactly, without tone mapping or colour space
+  // conversion (its OpenGL output had none); radiance is tone-mapped as in the full picture.
+  vec3 displayColour = vec3(-1.0);
   if (shadingMode == SHADING_FRESNEL_CONSTANT) {
-    colour = mix(vec3(0.0, 0.3, 0.4), vec3(0.64, 0.84, 1.0), reflectance);
-  } else if (shadingMode == SHADING_REFLECTION) {
+    displayColour = mix(vec3(0.0, 0.3, 0.4), vec3(0.64, 0.84, 1.0), reflectance);
+  } else if (shadingMode == SHADING_CAUSTICS) {
+    displayColour = vec3(caustic);
+  } else if (shadingMode == SHADING_HEIGHT) {
+    displayColour = vec3(clamp(0.5 + 0.5 * vWorldPosition.y / heightScale, 0.0, 1.0));
+  }
+
+  vec3 colour;
+  if (shadingMode == SHADING_REFLECTION) {
     colour = environmentRadiance(reflected, 0.0);
   } else if (shadingMode == SHADING_REFRACTION) {
     colour = throughWater(environmentRadiance(refracted, 0.0), refracted, absorption, scatterColour, viewDepth);
-  } else if (shadingMode == SHADING_CAUSTICS) {
-    colour = vec3(caustic);
-  } else if (shadingMode == SHADING_HEIGHT) {
-    colour = vec3(clamp(0.5 + 0.5 * vWorldPosition.y / heightScale, 0.0, 1.0));
   } else {
     vec3 sky = environmentRadiance(reflected, 0.0);
     vec3 water = throughWater(environmentRadiance(refracted, 0.0), refracted, absorption, scatterColour, viewDepth);
@@ -92,4 +97,5 @@ void main() {
   gl_FragColor = vec4(colour, 1.0);
   #include <tonemapping_fragment>
   #include <colorspace_fragment>
+  if (displayColour.r >= 0.0) gl_FragColor = vec4(displayColour, 1.0);
 }

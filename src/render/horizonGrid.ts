@@ -32,17 +32,18 @@ export function cellsPerRingForViewport(heightPixels: number): number {
 }
 
 /**
- * Static geometry in grid units. Attributes: gridVertex = (x, z, ring) with x, z in cells from
- * the ring centre, farScale = 1 (or SKIRT_SCALE for the skirt's far edge).
+ * Static geometry in grid units. Attributes: position = (x, z, ring) with x, z in cells from the
+ * ring centre (called position so three.js can draw it as a wireframe), farScale = 1 (or
+ * SKIRT_SCALE for the skirt's far edge).
  */
 export function createHorizonGridGeometry(cellsPerRing: number): BufferGeometry {
   const half = cellsPerRing / 2;
-  const gridVertex: number[] = [];
+  const gridPosition: number[] = [];
   const farScale: number[] = [];
   const indices: number[] = [];
   let vertexCount = 0;
   const addVertex = (x: number, z: number, ring: number, scale: number): number => {
-    gridVertex.push(x, z, ring);
+    gridPosition.push(x, z, ring);
     farScale.push(scale);
     return vertexCount++;
   };
@@ -94,7 +95,7 @@ export function createHorizonGridGeometry(cellsPerRing: number): BufferGeometry 
   }
 
   const geometry = new BufferGeometry();
-  geometry.setAttribute('gridVertex', new Float32BufferAttribute(gridVertex, 3));
+  geometry.setAttribute('position', new Float32BufferAttribute(gridPosition, 3));
   geometry.setAttribute('farScale', new Float32BufferAttribute(farScale, 1));
   geometry.setIndex(new Uint32BufferAttribute(indices, 1));
   return geometry;

@@ -35,7 +35,8 @@ export interface OceanMaterialInputs {
   /** The environment cube and whether its x is mirrored (SkyEnvironment.environment / environmentFlipX). */
   environment: { value: Texture | null };
   environmentFlipX: { value: number };
-  sunDirection: Vector3;
+  /** Towards the sun, unit length (SkyEnvironment.skyUniforms.skySunDirection: the sky's own sun). */
+  sunDirection: { value: Vector3 };
 }
 
 export class OceanMaterial extends ShaderMaterial {
@@ -75,7 +76,7 @@ export class OceanMaterial extends ShaderMaterial {
     this.uniforms.patchSize = inputs.patchSize;
     this.uniforms.skyEnvironment = inputs.environment;
     this.uniforms.skyEnvironmentFlipX = inputs.environmentFlipX;
-    this.uniforms.sunDirection = { value: inputs.sunDirection };
+    this.uniforms.sunDirection = inputs.sunDirection;
     this.setShading(options);
   }
 

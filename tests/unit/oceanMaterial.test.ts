@@ -10,7 +10,7 @@ function material(): OceanMaterial {
     patchSize: { value: 250 },
     environment: { value: null },
     environmentFlipX: { value: 1 },
-    sunDirection: new Vector3(0, 1, 0),
+    sunDirection: { value: new Vector3(0, 1, 0) },
   });
 }
 

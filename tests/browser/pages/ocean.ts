@@ -57,7 +57,7 @@ function setup(parameters: Partial<SimulationParameters>, shading: OceanShadingO
   simulation = new OceanSimulation(renderer, parameters, { path: 'gpu', worker: false });
   const sim = simulation;
   surface = new OceanSurface(
-    { displacement: sim.uniforms.tDisplacement, derivatives: sim.uniforms.tDerivatives, patchSize: sim.uniforms.patchSize, environment, environmentFlipX: { value: 1 }, sunDirection },
+    { displacement: sim.uniforms.tDisplacement, derivatives: sim.uniforms.tDerivatives, patchSize: sim.uniforms.patchSize, environment, environmentFlipX: { value: 1 }, sunDirection: { value: sunDirection } },
     () => sim.parameters.patchSize / sim.parameters.resolution,
     shading,
   );
@@ -88,7 +88,7 @@ const harness = {
     return Array.from(out);
   },
   info: () => ({ calls: renderer.info.render.calls, triangles: renderer.info.render.triangles }),
-  vertexCount: () => surface!.geometry.getAttribute('gridVertex').count,
+  vertexCount: () => surface!.geometry.getAttribute('position').count,
   geometryCheck,
   /**
    * For each pixel (x, y from the top): its rendered value (red, 0–1) and cos θi of the view ray
@@ -117,11 +117,11 @@ function geometryCheck(t: number, withRestPoints = false) {
   const mesh = surface!;
   sim.update(t);
   mesh.placeRings(camera);
-  const count = mesh.geometry.getAttribute('gridVertex').count;
+  const count = mesh.geometry.getAttribute('position').count;
   const captureWidth = 1024;
   const captureHeight = Math.ceil(count / captureWidth);
   const material = new OceanMaterial(
-    { displacement: sim.uniforms.tDisplacement, derivatives: sim.uniforms.tDerivatives, patchSize: sim.uniforms.patchSize, environment, environmentFlipX: { value: 1 }, sunDirection },
+    { displacement: sim.uniforms.tDisplacement, derivatives: sim.uniforms.tDerivatives, patchSize: sim.uniforms.patchSize, environment, environmentFlipX: { value: 1 }, sunDirection: { value: sunDirection } },
     {},
     { CAPTURE_POSITIONS: 1 },
   );
