@@ -1,0 +1,315 @@
+/**
+ * The sky and the deep water below the horizon, as one cube map the ocean reflects and refracts
+ * and the scene shows as its background.
+ *
+ * By default the cube is the analytic sky of shaders/sky/analyticSky.glsl (clear-sky scattering,
+ * a sun disk, dark deep-water blue below the horizon), rendered in linear HDR into a half-float
+ * cube render target with mipmaps (rough reflections sample coarser mips). A set of six face
+ * images (e.g. public/skybox/clear-afternoon/, made by scripts/make-skybox-faces.mjs) can replace
+ * it; if they fail to load, the generated sky stays in use.
+ *
+ * Owns: the cube render target, the sky box geometry and material, the cube camera's scene, and
+ * the loaded face texture (if any). dispose() frees all of them.
+ *
+ * Usage:
+ *   const sky = new SkyEnvironment(renderer, { sunElevation: 30, sunAzimuth: 40 });
+ *   scene.background = sky.environment.value;
+ *   oceanMaterial.uniforms.skyEnvironment = sky.environment;          // bound once, stays current
+ *   oceanMaterial.uniforms.skyEnvironmentFlipX = sky.environmentFlipX; // see environmentLookup.glsl
+ *   oceanMaterial.uniforms.sunDirection = sky.skyUniforms.skySunDirection; // live; sunDirection is a copy
+ *   await sky.loadFaces(skyboxFaceUrls('/skybox/clear-afternoon/'));   // optional
+ *   scene.background = sky.environment.value; // scene.background is a plain reference: reassign
+ *
+ * The generated cube is linear HDR (sky about 0.05–2, the sun disk several hundred), so the
+ * renderer's tone mapping applies to it. Face images are LDR sRGB: three.js shows an sRGB
+ * background without tone mapping, and reflections of them are never brighter than 1.
+ *
+ * Conventions: directions are world space with y up; azimuth is measured from +x towards +z.
+ * three.js mirrors x when it samples a cube texture made from images (see
+ * shaders/sky/environmentLookup.glsl); environmentFlipX says which kind is in use.
+ */
+import {
+  BackSide,
+  BoxGeometry,
+  Color,
+  CubeCamera,
+  CubeTextureLoader,
+  GLSL3,
+  HalfFloatType,
+  LinearFilter,
+  LinearMipmapLinearFilter,
+  LoadingManager,
+  Mesh,
+  RGBAFormat,
+  Scene,
+  ShaderMaterial,
+  SRGBColorSpace,
+  Vector3,
+  WebGLCubeRenderTarget,
+  type CubeTexture,
+  type Texture,
+  type WebGLRenderer,
+} from 'three';
+import { shaderSource } from '../shaderSource';
+
+/** URLs of the six faces, in three.js's naming (p/n = positive/negative axis). */
+export interface CubeFaceUrls {
+  px: string;
+  nx: string;
+  py: string;
+  ny: string;
+  pz: string;
+  nz: string;
+}
+
+export interface SkyEnvironmentOptions {
+  /** Degrees above the horizon, in [-90, 90]. Default 30. */
+  sunElevation?: number;
+  /** Degrees from +x towards +z. Default 40. */
+  sunAzimuth?: number;
+  /** Cube face size in texels. Default 256. */
+  resolution?: number;
+}
+
+/**
+ * The face set shipped in public/skybox/ and where its sun is: pass these to setSun() so
+ * sunDirection matches the faces (the script that makes them uses the same values).
+ */
+export const SHIPPED_SKYBOX = { name: 'clear-afternoon', sunElevation: 30, sunAzimuth: 40 } as const;
+
+/** The six face URLs of a face set in directory `base` (px.png, nx.png, … ; base ends with /). */
+export function skyboxFaceUrls(base: string): CubeFaceUrls {
+  return {
+    px: `${base}px.png`,
+    nx: `${base}nx.png`,
+    py: `${base}py.png`,
+    ny: `${base}ny.png`,
+    pz: `${base}pz.png`,
+    nz: `${base}nz.png`,
+  };
+}
+
+/** Unit direction towards a sun at the given elevation and azimuth (degrees), y up. */
+export function sunDirectionFromAngles(elevationDeg: number, azimuthDeg: number, target = new Vector3()): Vector3 {
+  const elevation = (elevationDeg * Math.PI) / 180;
+  const azimuth = (azimuthDeg * Math.PI) / 180;
+  return target.set(Math.cos(elevation) * Math.cos(azimuth), Math.sin(elevation), Math.cos(elevation) * Math.sin(azimuth));
+}
+
+const FACE_ORDER = ['px', 'nx', 'py', 'ny', 'pz', 'nz'] as const;
+
+export class SkyEnvironment {
+  /** The cube in use (generated or loaded). A stable uniform object: bind it once. */
+  readonly environment: { value: Texture };
+  /** 1 while the generated cube is in use, −1 for a loaded face set (three.js mirrors those). */
+  readonly environmentFlipX = { value: 1 };
+  /**
+   * The analytic sky's uniforms (shared objects, updated in place: skySunDirection.value is the
+   * live sun direction), for materials that include analyticSky.glsl or need the sun.
+   */
+  readonly skyUniforms: {
+    skySunDirection: { value: Vector3 };
+    skySunColor: { value: Color };
+    skySunIntensity: { value: number };
+    skyDeepWaterColor: { value: Color };
+  };
+
+  private readonly target: WebGLCubeRenderTarget;
+  private readonly cubeCamera: CubeCamera;
+  private readonly scene = new Scene();
+  private readonly box: Mesh<BoxGeometry, ShaderMaterial>;
+  private readonly sun = new Vector3();
+  private elevation = 0;
+  private azimuth = 0;
+  private loaded: CubeTexture | null = null;
+  /** Bumped by every loadFaces, useGeneratedSky and dispose: a load that finishes late is stale. */
+  private generation = 0;
+  private disposed = false;
+  /**
+   * (embed work) A restored WebGL context has lost every render target's contents; three.js
+   * re-creates its GPU objects lazily, but the generated cube must be drawn again. This listener
+   * is added after three.js's own (registered in the WebGLRenderer constructor), so three.js has
+   * re-initialised its state when it runs.
+   */
+  private readonly onContextRestored = (): void => {
+    if (!this.disposed) this.render();
+  };
+
+  constructor(
+    private readonly renderer: WebGLRenderer,
+    options: SkyEnvironmentOptions = {},
+  ) {
+    const { sunElevation = 30, sunAzimuth = 40, resolution = 256 } = options;
+    validateSun(sunElevation, sunAzimuth);
+    if (!Number.isInteger(resolution) || resolution < 1 || resolution > renderer.capabilities.maxCubemapSize) {
+      throw new Error(
+        `SkyEnvironment: resolution must be an integer in [1, ${renderer.capabilities.maxCubemapSize}], got ${resolution}`,
+      );
+    }
+
+    this.target = new WebGLCubeRenderTarget(resolution, {
+      type: HalfFloatType,
+      format: RGBAFormat,
+      magFilter: LinearFilter,
+      minFilter: LinearMipmapLinearFilter,
+      generateMipmaps: true,
+      depthBuffer: false,
+    });
+    this.target.texture.name = 'skyEnvironment';
+    this.environment = { value: this.target.texture };
+    this.cubeCamera = new CubeCamera(0.1, 10, this.target);
+
+    this.skyUniforms = {
+      skySunDirection: { value: this.sun },
+      skySunColor: { value: new Color(1, 1, 1) },
+      skySunIntensity: { value: 16 },
+      // Linear RGB; about sRGB (13, 26, 52): the report's "very dark blue" ocean depth.
+      skyDeepWaterColor: { value: new Color(0.004, 0.01, 0.035) },
+    };
+    const material = new ShaderMaterial({
+      name: 'analyticSky',
+      glslVersion: GLSL3,
+      vertexShader: shaderSource('sky/skyBox.vert'),
+      fragmentShader: shaderSource('sky/skyBox.frag'),
+      uniforms: this.skyUniforms,
+      side: BackSide,
+      depthTest: false,
+      depthWrite: false,
+    });
+    this.box = new Mesh(new BoxGeometry(1, 1, 1), material);
+    this.box.frustumCulled = false;
+    this.scene.add(this.box);
+
+    this.applySun(sunElevation, sunAzimuth);
+    // (embed work) Redraw the cube after a context loss; removed in dispose(). An OffscreenCanvas
+    // is an EventTarget too, but guard anyway for canvas-like objects without listeners.
+    renderer.domElement.addEventListener?.('webglcontextrestored', this.onContextRestored);
+  }
+
+  /** Unit direction towards the sun of the generated sky (y up). A copy. */
+  get sunDirection(): Vector3 {
+    return this.sun.clone();
+  }
+
+  get sunElevation(): number {
+    return this.elevation;
+  }
+
+  get sunAzimuth(): number {
+    return this.azimuth;
+  }
+
+  /** Whether a loaded face set (rather than the generated sky) is in use. */
+  get usingFaces(): boolean {
+    return this.environment.value !== this.target.texture;
+  }
+
+  /**
+   * Moves the sun (degrees; elevation in [-90, 90], azimuth from +x towards +z) and re-renders the
+   * generated cube. Throws, keeping the old sun, on invalid values. A loaded face set keeps its own
+   * sun: only sunDirection and the generated cube change.
+   */
+  setSun(elevationDeg: number, azimuthDeg: number): void {
+    if (this.disposed) throw new Error('SkyEnvironment.setSun: the environment has been disposed');
+    validateSun(elevationDeg, azimuthDeg);
+    this.applySun(elevationDeg, azimuthDeg);
+  }
+
+  /**
+   * Loads six face images (sRGB) and, once all have loaded, uses them as the environment.
+   * Rejects, with the generated (or previously loaded) sky still in use, if any face fails to
+   * load or decode (404, CORS, not an image), naming the failing URLs; also if a later
+   * loadFaces, useGeneratedSky or dispose superseded this call before it finished.
+   */
+  loadFaces(urls: CubeFaceUrls): Promise<void> {
+    if (this.disposed) return Promise.reject(new Error('SkyEnvironment.loadFaces: the environment has been disposed'));
+    const list = FACE_ORDER.map((face) => urls?.[face]);
+    const missing = FACE_ORDER.filter((_face, i) => typeof list[i] !== 'string' || list[i] === '');
+    if (missing.length > 0) {
+      return Promise.reject(new Error(`SkyEnvironment.loadFaces: no URL for face ${missing.join(', ')}; the generated sky stays in use`));
+    }
+    const generation = ++this.generation;
+
+    return new Promise<void>((resolve, reject) => {
+      const failed: string[] = [];
+      const manager = new LoadingManager();
+      manager.onError = (url) => failed.push(url);
+      let texture: CubeTexture | null = null;
+      // Called once every face has either loaded or failed.
+      manager.onLoad = () => {
+        if (failed.length > 0 || generation !== this.generation || texture === null) {
+          texture?.dispose();
+          const kept = this.usingFaces ? 'the previously loaded faces stay' : 'the generated sky stays';
+          let message: string;
+          if (failed.length > 0) {
+            message = `could not load ${failed.join(', ')} (missing, blocked by CORS or not an image); ${kept} in use`;
+          } else if (this.disposed) {
+            message = `the environment was disposed before ${list.join(', ')} finished loading`;
+          } else {
+            message = `superseded by a later loadFaces or useGeneratedSky call before ${list.join(', ')} finished loading`;
+          }
+          reject(new Error(`SkyEnvironment.loadFaces: ${message}`));
+          return;
+        }
+        texture.colorSpace = SRGBColorSpace;
+        texture.name = 'skyEnvironmentFaces';
+        // Upload now so the first frame that samples it does not stall.
+        this.renderer.initTexture(texture);
+        this.loaded?.dispose();
+        this.loaded = texture;
+        this.environment.value = texture;
+        this.environmentFlipX.value = -1;
+        resolve();
+      };
+      const loader = new CubeTextureLoader(manager);
+      // Failures reach manager.onError, which (unlike the loader's own onError) gets the URL.
+      texture = loader.load(list as string[]);
+    });
+  }
+
+  /** Uses the generated sky again, freeing a loaded face set. */
+  useGeneratedSky(): void {
+    this.generation++;
+    this.environment.value = this.target.texture;
+    this.environmentFlipX.value = 1;
+    this.loaded?.dispose();
+    this.loaded = null;
+  }
+
+  dispose(): void {
+    this.useGeneratedSky();
+    this.disposed = true;
+    this.renderer.domElement.removeEventListener?.('webglcontextrestored', this.onContextRestored);
+    this.target.dispose();
+    this.box.material.dispose();
+    this.box.geometry.dispose();
+  }
+
+  private applySun(elevationDeg: number, azimuthDeg: number): void {
+    this.elevation = elevationDeg;
+    this.azimuth = azimuthDeg;
+    sunDirectionFromAngles(elevationDeg, azimuthDeg, this.sun);
+    this.render();
+  }
+
+  private render(): void {
+    const renderer = this.renderer;
+    const previousTarget = renderer.getRenderTarget();
+    const previousFace = renderer.getActiveCubeFace();
+    const previousLevel = renderer.getActiveMipmapLevel();
+    const previousXr = renderer.xr.enabled;
+    renderer.xr.enabled = false;
+    this.cubeCamera.update(renderer, this.scene);
+    renderer.xr.enabled = previousXr;
+    renderer.setRenderTarget(previousTarget, previousFace, previousLevel);
+  }
+}
+
+function validateSun(elevationDeg: number, azimuthDeg: number): void {
+  if (typeof elevationDeg !== 'number' || !Number.isFinite(elevationDeg) || elevationDeg < -90 || elevationDeg > 90) {
+    throw new Error(`SkyEnvironment: sunElevation must be a finite number of degrees in [-90, 90], got ${elevationDeg}`);
+  }
+  if (typeof azimuthDeg !== 'number' || !Number.isFinite(azimuthDeg)) {
+    throw new Error(`SkyEnvironment: sunAzimuth must be a finite number of degrees, got ${azimuthDeg}`);
+  }
+}
