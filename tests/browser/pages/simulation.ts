@@ -3,11 +3,12 @@
  * JS path beside it, and hands the Playwright tests summaries (errors relative to RMS) rather than
  * whole fields.
  */
-import { WebGLRenderer, type WebGLRenderTarget } from 'three';
+import { WebGLRenderer, type DataTexture, type WebGLRenderTarget } from 'three';
 import { CpuWaveFields } from '../../../src/sim/cpuWaveFields';
 import { GpuWaveFields, supportedGpuPrecision, type GpuPrecision } from '../../../src/sim/gpuWaveFields';
+import { OceanSimulation } from '../../../src/sim/oceanSimulation';
 import { validateParameters, type SimulationParameters } from '../../../src/sim/parameters';
-import { createInitialSpectrum } from '../../../src/sim/spectrum';
+import { createInitialSpectrum, type InitialSpectrum } from '../../../src/sim/spectrum';
 
 const renderer = new WebGLRenderer({ canvas: document.createElement('canvas') });
 
@@ -99,6 +100,79 @@ const harness = {
   spectrumBits(changes: Partial<SimulationParameters>): number[] {
     const spectrum = createInitialSpectrum(validateParameters(changes));
     return Array.from(new Uint32Array(spectrum.amplitudes.buffer));
+  },
+
+  /**
+   * The JS path as the app runs it, in a Web Worker: waits for the worker's fields at time t and
+   * compares the uploaded texture data with CpuWaveFields computed here.
+   */
+  async workerAgainstDirect(changes: Partial<SimulationParameters>, t: number): Promise<{ path: string; maxDifference: number; rms: number }> {
+    const simulation = new OceanSimulation(renderer, changes, { path: 'js', worker: true });
+    const displacement = () => simulation.uniforms.tDisplacement.value as DataTexture;
+    const deadline = performance.now() + 20_000;
+    // The worker answers a frame later; keep asking, as the render loop would.
+    while (performance.now() < deadline) {
+      simulation.update(t);
+      await new Promise((resolve) => setTimeout(resolve, 20));
+      if (Array.from(displacement().image.data as Float32Array).some((v) => v !== 0)) break;
+    }
+    const params = simulation.parameters;
+    const direct = new CpuWaveFields(simulation.spectrum as InitialSpectrum, params.choppiness, params.repeatPeriod);
+    direct.update(t);
+    const fromWorker = displacement().image.data as Float32Array;
+    let maxDifference = 0;
+    let sumSquares = 0;
+    fromWorker.forEach((value, i) => {
+      maxDifference = Math.max(maxDifference, Math.abs(value - direct.displacement[i]));
+      sumSquares += direct.displacement[i] ** 2;
+    });
+    const path = simulation.path;
+    simulation.dispose();
+    return { path, maxDifference, rms: Math.sqrt(sumSquares / fromWorker.length) };
+  },
+
+  /** Bad input: errors that name the parameter, and the simulation goes on with its last good values. */
+  badInput(): { messages: string[]; unchanged: boolean; nonFinite: number } {
+    const simulation = new OceanSimulation(renderer, { resolution: 64, windSpeed: 9 }, { path: 'gpu' });
+    const before = { ...simulation.parameters };
+    const messages: string[] = [];
+    const attempts: (() => void)[] = [
+      () => simulation.setParameters({ windSpeed: NaN }),
+      () => simulation.setParameters({ resolution: 100 }),
+      () => simulation.setParameters({ patchSize: -1 }),
+      () => simulation.setParameters({ amplitude: -1e-6 }),
+      () => simulation.setParameters({ repeatPeriod: 0 }),
+      () => simulation.setParameters({ depth: 0 }),
+      () => simulation.update(NaN),
+    ];
+    for (const attempt of attempts) {
+      try {
+        attempt();
+        messages.push('(no error)');
+      } catch (error) {
+        messages.push((error as Error).message);
+      }
+    }
+    simulation.update(4);
+    const unchanged = JSON.stringify(before) === JSON.stringify(simulation.parameters);
+    const output = (simulation as unknown as { fieldPath: GpuWaveFields }).fieldPath.output;
+    let nonFinite = 0;
+    for (const index of [0, 1]) for (const v of readTarget(output, index, 64, 'float32')) if (!Number.isFinite(v)) nonFinite++;
+    simulation.dispose();
+    return { messages, unchanged, nonFinite };
+  },
+
+  /** renderer.info.memory before and after creating, running and disposing simulations on both paths. */
+  memoryAfterCycles(cycles: number): { before: object; after: object } {
+    const before = { ...renderer.info.memory };
+    for (let i = 0; i < cycles; i++) {
+      const simulation = new OceanSimulation(renderer, { resolution: 32 + 32 * (i % 2), seed: i }, { path: i % 3 === 2 ? 'js' : 'gpu', worker: false });
+      simulation.update(i);
+      simulation.setParameters({ windSpeed: 5 + i });
+      simulation.update(i + 0.5);
+      simulation.dispose();
+    }
+    return { before, after: { ...renderer.info.memory } };
   },
 
   memory: () => ({ ...renderer.info.memory }),
