@@ -9,3 +9,4 @@ export { BatchedInverseFft2D } from './sim/fft';
 export { OceanSurface } from './render/oceanSurface';
 export { OceanMaterial, SHADING_MODES, type ShadingMode, type OceanShadingOptions } from './render/oceanMaterial';
 export { SkyEnvironment, skyboxFaceUrls, SHIPPED_SKYBOX, type CubeFaceUrls } from './render/skyEnvironment';
+export { FftOceanElement, defineFftOceanElement, FFT_OCEAN_ATTRIBUTES, type FftOceanAttribute } from './embed/fftOceanElement';

@@ -28,7 +28,7 @@ uniform float heightScale;     // metres shown as full white in the height mode
 
 varying vec2 vUv;
 varying vec3 vWorldPosition;
-varying vec2 vRestPosition;
+centroid varying vec2 vRestPosition;  // see ocean.vert
 flat varying float vRing;
 varying float vLod;
 #ifdef CAPTURE_POSITIONS

@@ -6,7 +6,9 @@ uniform sampler2D tDisplacement;
 
 varying vec2 vUv;           // field coordinates of the rest point, for the fragment stage
 varying vec3 vWorldPosition;
-varying vec2 vRestPosition;
+// centroid: with multisampling, a pixel only partly covered by a triangle must not evaluate the
+// rest point outside it (the ring-overlap test in ocean.frag would then keep a dropped triangle).
+centroid varying vec2 vRestPosition;
 flat varying float vRing;
 varying float vLod;
 #ifdef CAPTURE_POSITIONS

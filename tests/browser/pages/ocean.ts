@@ -27,7 +27,7 @@ import type { SimulationParameters } from '../../../src/sim/parameters';
 const query = new URLSearchParams(location.search);
 const width = Number(query.get('width') ?? 640);
 const height = Number(query.get('height') ?? 360);
-const renderer = new WebGLRenderer({ antialias: false, preserveDrawingBuffer: true });
+const renderer = new WebGLRenderer({ antialias: query.get('antialias') === '1', preserveDrawingBuffer: true });
 renderer.setPixelRatio(1);
 renderer.setSize(width, height);
 document.body.appendChild(renderer.domElement);
@@ -100,6 +100,39 @@ const harness = {
       const direction = ndc.unproject(camera).sub(camera.position).normalize();
       return { value: harness.pixel(x, y)[0] / 255, cosIncident: Math.abs(direction.y), hitsSea: direction.y < -0.01 };
     });
+  },
+  /**
+   * Renders with a pure red background and counts red pixels below the horizon, where only sea
+   * should be: a crack between rings or a gap before the horizon shows as red.
+   */
+  holesBelowHorizon(t: number, marginPixels = 3): { holes: number; checked: number; firstHoles: number[][] } {
+    const saved = scene.background;
+    scene.background = new Color(1, 0, 0);
+    harness.render(t, true);
+    scene.background = saved;
+    const gl = renderer.getContext();
+    const pixels = new Uint8Array(4 * width * height);
+    gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+    let holes = 0;
+    let checked = 0;
+    const firstHoles: number[][] = [];
+    const direction = new Vector3();
+    for (let y = 0; y < height; y++) {
+      for (let x = 0; x < width; x++) {
+        // The ray through this pixel (y from the bottom in GL).
+        direction.set(((x + 0.5) / width) * 2 - 1, ((y + 0.5) / height) * 2 - 1, 0.5).unproject(camera).sub(camera.position);
+        // Below the horizon with a margin (the last few pixels may show the sky between far crests).
+        const belowBy = -direction.normalize().y * (height / ((camera.fov * Math.PI) / 180));
+        if (belowBy < marginPixels) continue;
+        checked++;
+        const i = 4 * (y * width + x);
+        if (pixels[i] > 200 && pixels[i + 1] < 40 && pixels[i + 2] < 40) {
+          holes++;
+          if (firstHoles.length < 10) firstHoles.push([x, height - 1 - y]);
+        }
+      }
+    }
+    return { holes, checked, firstHoles };
   },
   setSun(direction: [number, number, number]): void {
     sunDirection.fromArray(direction).normalize();

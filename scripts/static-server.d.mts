@@ -1,0 +1,4 @@
+export declare function serveDirectory(
+  root: string,
+  options?: { host?: string; port?: number },
+): Promise<{ url: string; close: () => Promise<void> }>;

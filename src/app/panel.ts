@@ -1,0 +1,233 @@
+/**
+ * The control panel (lil-gui), bound to the app's state (urlState.ts's AppState). Every change
+ * goes through `apply`, which sets the ocean; if that throws (a ParameterError from
+ * ocean.setParameters / setShading, or the sun's range check) the panel shows a warning naming
+ * the parameter and goes back to the last good value, which the ocean also still has.
+ *
+ * Every controller's element carries data-key="<URL name>" (and the colour and absorption ones
+ * data-key="absorption.0" etc.), for the browser tests.
+ */
+import GUI, { type Controller } from 'lil-gui';
+import { Color } from 'three';
+import { SHADING_MODES } from '../render/oceanMaterial';
+import { ParameterError, type SimulationParameters } from '../sim/parameters';
+import { assignState, cloneState, PATH_PREFERENCES, urlRounded, type AppState, type Rgb } from './urlState';
+
+/** Sea states (Phillips amplitudes fitted so the significant wave height 4·σ of the simulated
+ * field matches the Pierson–Moskowitz fully developed sea, Hs ≈ 0.21·U²/g, at each wind speed). */
+export const PRESETS: Record<'calm' | 'breeze' | 'storm', Partial<SimulationParameters>> = {
+  // Beaufort 2, light breeze: Hs ≈ 0.2 m, peak wavelength ≈ 8 m.
+  calm: { windSpeed: 3, amplitude: 4e-6, patchSize: 100, choppiness: 0.5, smallWaveCutoff: 0.05 },
+  // Beaufort 4, moderate breeze: Hs ≈ 1 m, peak wavelength ≈ 45 m.
+  breeze: { windSpeed: 7, amplitude: 9e-7, patchSize: 200, choppiness: 1, smallWaveCutoff: 0.1 },
+  // Beaufort 8, gale: Hs ≈ 8.5 m, peak wavelength ≈ 360 m (so a 600 m patch).
+  storm: { windSpeed: 20, amplitude: 9e-8, patchSize: 600, choppiness: 1.5, smallWaveCutoff: 0.3 },
+};
+
+export const RESOLUTIONS = [16, 32, 64, 128, 256, 512, 1024];
+
+export interface PanelActions {
+  /** Applies the changes to the scene; throws (ParameterError or Error) and changes nothing if one is bad. */
+  apply(changes: Partial<AppState>): void;
+  /** After a change was applied (e.g. to update the URL). */
+  changed(): void;
+  warn(parameter: string, message: string): void;
+  clearWarning(parameter: string): void;
+  copyLink(): void;
+  /** Text for the read-only "running" line (the FFT path in use). */
+  runningPath(): string;
+}
+
+type Key = keyof AppState;
+
+export class Panel {
+  readonly gui: GUI;
+  /** Controllers by URL name (the absorption channels as absorption.0 … absorption.2). */
+  readonly controllers = new Map<string, Controller>();
+  /** The last values the scene accepted. */
+  private good: AppState;
+  private readonly colours: { causticColour: string; scatterColour: string };
+  private readonly depthProxy: { deep: boolean; metres: number };
+  private readonly running = { path: '' };
+  /** The Phillips amplitude in units of 10⁻⁶, which reads better on a slider. */
+  private readonly amplitudeProxy = { micro: 0 };
+
+  constructor(
+    private readonly state: AppState,
+    closed: boolean,
+    private readonly actions: PanelActions,
+  ) {
+    this.good = cloneState(state);
+    this.colours = { causticColour: toHex(state.causticColour), scatterColour: toHex(state.scatterColour) };
+    this.depthProxy = { deep: state.depth === Infinity, metres: state.depth === Infinity ? 50 : state.depth };
+    this.running.path = actions.runningPath();
+    this.amplitudeProxy.micro = state.amplitude * 1e6;
+
+    const gui = (this.gui = new GUI({ title: 'Ocean', width: 280 }));
+    gui.domElement.classList.add('ocean-panel');
+
+    const sea = gui.addFolder('Sea state');
+    const presets = { calm: () => this.preset('calm'), breeze: () => this.preset('breeze'), storm: () => this.preset('storm') };
+    this.register('preset.calm', sea.add(presets, 'calm').name('preset: calm (3 m/s)'));
+    this.register('preset.breeze', sea.add(presets, 'breeze').name('preset: breeze (7 m/s)'));
+    this.register('preset.storm', sea.add(presets, 'storm').name('preset: storm (20 m/s)'));
+    this.number(sea, 'windSpeed', 'wind speed (m/s)', 0, 40, 0.1);
+    this.number(sea, 'windDirection', 'wind direction (°)', -180, 180, 1);
+    const amplitude = sea.add(this.amplitudeProxy, 'micro', 0, 20, 0.01).name('amplitude A (×10⁻⁶)');
+    amplitude.onChange(() => this.change('amplitude', this.amplitudeProxy.micro * 1e-6));
+    this.register('amplitude', amplitude);
+    this.number(sea, 'choppiness', 'choppiness λ', 0, 3, 0.01);
+
+    const sim = gui.addFolder('Simulation');
+    this.bind(sim.add(state, 'resolution', RESOLUTIONS).name('resolution N'), 'resolution');
+    this.number(sim, 'patchSize', 'patch size (m)', 10, 2000, 1);
+    this.number(sim, 'smallWaveCutoff', 'small-wave cutoff ℓ (m)', 0, 2, 0.01);
+    const deep = sim.add(this.depthProxy, 'deep').name('deep water');
+    const depth = sim.add(this.depthProxy, 'metres', 0.5, 200, 0.5).name('depth (m)');
+    deep.onChange(() => this.change('depth', this.depthProxy.deep ? Infinity : this.depthProxy.metres));
+    depth.onChange(() => this.change('depth', this.depthProxy.metres));
+    this.register('depth.deep', deep);
+    this.register('depth', depth);
+    this.number(sim, 'repeatPeriod', 'repeat period (s)', 10, 10000, 1);
+    this.bind(sim.add(state, 'seed').name('seed').step(1), 'seed');
+    const seedActions = { newSeed: () => this.change('seed', Math.floor(Math.random() * 2 ** 32)) };
+    this.register('newSeed', sim.add(seedActions, 'newSeed').name('new seed'));
+    this.bind(sim.add(state, 'path', PATH_PREFERENCES as string[]).name('FFT path'), 'path');
+    this.register('running', sim.add(this.running, 'path').name('running').disable());
+
+    const look = gui.addFolder('Sun & shading');
+    this.number(look, 'sunElevation', 'sun elevation (°)', -10, 90, 0.5);
+    this.number(look, 'sunAzimuth', 'sun azimuth (°)', -180, 180, 1);
+    this.bind(look.add(state, 'mode', SHADING_MODES as unknown as string[]).name('shading mode'), 'mode');
+    this.number(look, 'ior', 'refractive index', 1.01, 2.5, 0.001);
+    this.number(look, 'causticPower', 'caustic power p', 1, 256, 1);
+    this.colour(look, 'causticColour', 'caustic colour');
+    (['r', 'g', 'b'] as const).forEach((channel, i) => {
+      const c = look.add(state.absorption as unknown as Record<string, number>, String(i), 0, 2, 0.005).name(`absorption ${channel} (1/m)`);
+      c.onChange(() => this.change('absorption', [...state.absorption] as Rgb));
+      this.register(`absorption.${i}`, c);
+    });
+    this.colour(look, 'scatterColour', 'scatter colour');
+    this.bind(look.add(state, 'wireframe').name('wireframe'), 'wireframe');
+
+    const time = gui.addFolder('Time & view');
+    this.number(time, 'timeScale', 'time scale', 0, 4, 0.05);
+    this.bind(time.add(state, 'paused').name('pause'), 'paused');
+    this.bind(time.add(state, 't').name('time t (s)').step(0.001).decimals(2).listen(), 't');
+    this.bind(time.add(state, 'inspector').name('inspector tiles'), 'inspector');
+    this.register('copyLink', time.add({ copyLink: () => actions.copyLink() }, 'copyLink').name('copy link'));
+
+    this.syncDepthControls();
+    // Less used folders start closed so the panel fits a laptop screen.
+    look.close();
+    if (closed) gui.close();
+  }
+
+  /** Call once per frame: refreshes the read-only "running" line. */
+  update(): void {
+    const path = this.actions.runningPath();
+    if (path !== this.running.path) {
+      this.running.path = path;
+      this.controllers.get('running')?.updateDisplay();
+    }
+  }
+
+  /** Shows the state again after it changed outside the panel (and takes it as the last good one). */
+  refresh(): void {
+    this.good = cloneState(this.state);
+    this.colours.causticColour = toHex(this.state.causticColour);
+    this.colours.scatterColour = toHex(this.state.scatterColour);
+    this.amplitudeProxy.micro = Number((this.state.amplitude * 1e6).toPrecision(10));
+    this.depthProxy.deep = this.state.depth === Infinity;
+    if (!this.depthProxy.deep) this.depthProxy.metres = this.state.depth;
+    this.syncDepthControls();
+    for (const controller of this.gui.controllersRecursive()) controller.updateDisplay();
+  }
+
+  /** Applies a preset's simulation parameters (all or nothing). */
+  preset(name: keyof typeof PRESETS): void {
+    this.changeMany(PRESETS[name], `preset ${name}`);
+  }
+
+  /** Sets one value as if it had been entered in the panel. */
+  change<K extends Key>(key: K, value: AppState[K]): boolean {
+    return this.changeMany({ [key]: value } as Partial<AppState>, key);
+  }
+
+  private changeMany(changes: Partial<AppState>, label: string): boolean {
+    const rounded: Partial<AppState> = {};
+    for (const key of Object.keys(changes) as Key[]) {
+      (rounded as Record<string, unknown>)[key] = urlRounded(key, changes[key] as AppState[Key]);
+    }
+    try {
+      this.actions.apply(rounded);
+    } catch (error) {
+      const parameter = error instanceof ParameterError ? error.parameter : label;
+      const message = error instanceof Error ? error.message.replace(/^SkyEnvironment: /, '') : String(error);
+      const keys = Object.keys(changes) as Key[];
+      const kept = keys.map((key) => `${key} ${describe(this.good[key])}`).join(', ');
+      this.actions.warn(parameter, `${message} — keeping ${kept}`);
+      // Back to the last good values (the scene kept them: the setters change nothing on error).
+      const { t, cam } = this.state;
+      assignState(this.state, { ...cloneState(this.good), t, cam });
+      this.refresh();
+      return false;
+    }
+    assignState(this.state, rounded);
+    for (const key of Object.keys(rounded) as Key[]) {
+      (this.good as unknown as Record<string, unknown>)[key] = cloneState(this.state)[key];
+      this.actions.clearWarning(key);
+    }
+    this.actions.clearWarning(label);
+    this.refresh();
+    this.actions.changed();
+    return true;
+  }
+
+  private register(key: string, controller: Controller): Controller {
+    controller.domElement.dataset.key = key;
+    this.controllers.set(key, controller);
+    return controller;
+  }
+
+  /** A controller bound straight to state[key]: lil-gui has already set the value when onChange runs. */
+  private bind(controller: Controller, key: Key): Controller {
+    controller.onChange((value: unknown) => {
+      // Undo lil-gui's write so `good` comparisons and the revert see the old value, then apply.
+      (this.state as unknown as Record<string, unknown>)[key] = this.good[key];
+      this.change(key, value as AppState[Key]);
+    });
+    return this.register(key, controller);
+  }
+
+  private number(folder: GUI, key: Key, name: string, min: number, max: number, step: number): Controller {
+    return this.bind(folder.add(this.state, key, min, max, step).name(name), key);
+  }
+
+  private colour(folder: GUI, key: 'causticColour' | 'scatterColour', name: string): void {
+    const controller = folder.addColor(this.colours, key).name(`${name} (sRGB)`);
+    controller.onChange((hex: string) => this.change(key, fromHex(hex)));
+    this.register(key, controller);
+  }
+
+  private syncDepthControls(): void {
+    this.controllers.get('depth')?.enable(!this.depthProxy.deep);
+  }
+}
+
+/** Linear RGB (the shader's units) → sRGB hex for the colour picker. */
+function toHex(rgb: Rgb): string {
+  return `#${new Color().setRGB(rgb[0], rgb[1], rgb[2]).getHexString()}`;
+}
+
+/** The picker's sRGB hex → linear RGB. */
+function fromHex(hex: string): Rgb {
+  const colour = new Color(hex);
+  return [colour.r, colour.g, colour.b];
+}
+
+function describe(value: unknown): string {
+  if (value === Infinity) return 'deep';
+  if (Array.isArray(value)) return value.join(',');
+  return String(value);
+}

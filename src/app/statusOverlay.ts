@@ -1,0 +1,169 @@
+/**
+ * What the app shows on top of the canvas, top left: the FFT path, frame rate and CPU timings
+ * (ocean.update and renderer.render as measured on the main thread — GPU work is not included),
+ * the time, a help line for the keys, and below them notices — warnings about bad values (each names its
+ * parameter and stays until dismissed or fixed) and the "copy link" field.
+ */
+import type { SimulationPath } from '../sim/oceanSimulation';
+
+export const PATH_LABELS: Record<SimulationPath, string> = {
+  'gpu-rgba32f': 'GPU RGBA32F',
+  'gpu-rgba16f': 'GPU RGBA16F',
+  'js-worker': 'JS in a worker',
+  js: 'JS',
+};
+
+export interface FrameTimings {
+  /** Frames per second over the last interval. */
+  fps: number;
+  /** Mean CPU milliseconds per frame in ocean.update. */
+  simulationMs: number;
+  /** Mean CPU milliseconds per frame in renderer.render (and the inspector's tiles). */
+  renderMs: number;
+}
+
+/** Averages frame timings over intervals of `intervalMs` (pure, for the status line). */
+export class TimingAverager {
+  private frames = 0;
+  private simulation = 0;
+  private render = 0;
+  private start: number | null = null;
+  latest: FrameTimings | null = null;
+
+  constructor(private readonly intervalMs = 500) {}
+
+  /** Adds one frame; returns fresh averages when an interval has passed, else null. */
+  add(now: number, simulationMs: number, renderMs: number): FrameTimings | null {
+    if (this.start === null) {
+      this.start = now;
+      return null;
+    }
+    this.frames++;
+    this.simulation += simulationMs;
+    this.render += renderMs;
+    const elapsed = now - this.start;
+    if (elapsed < this.intervalMs) return null;
+    this.latest = {
+      fps: (1000 * this.frames) / elapsed,
+      simulationMs: this.simulation / this.frames,
+      renderMs: this.render / this.frames,
+    };
+    this.start = now;
+    this.frames = 0;
+    this.simulation = 0;
+    this.render = 0;
+    return this.latest;
+  }
+}
+
+export class StatusOverlay {
+  readonly root: HTMLElement;
+  readonly status: HTMLElement;
+  readonly time: HTMLElement;
+  readonly help: HTMLElement;
+  readonly notices: HTMLElement;
+  private readonly warnings = new Map<string, HTMLElement>();
+  private linkNotice: HTMLElement | null = null;
+
+  constructor(root: HTMLElement, helpText: string) {
+    this.root = root;
+    root.replaceChildren();
+    this.status = element('div', 'status-line');
+    this.status.textContent = 'starting…';
+    this.time = element('div', 'status-time');
+    this.help = element('div', 'status-help');
+    this.help.textContent = helpText;
+    const box = element('div', 'status-box');
+    box.append(this.status, this.time, this.help);
+    this.notices = element('div', 'notices');
+    this.notices.setAttribute('role', 'status');
+    this.notices.setAttribute('aria-live', 'polite');
+    root.append(box, this.notices);
+  }
+
+  /** The status: FFT path, frame rate and CPU timings on one line; time and camera speed on the next. */
+  show(path: SimulationPath, timings: FrameTimings | null, t: number, paused: boolean, speed: number): void {
+    const parts = [`FFT: ${PATH_LABELS[path] ?? path}`];
+    if (timings) {
+      parts.push(
+        `${timings.fps.toFixed(0)} fps`,
+        `CPU time: sim ${timings.simulationMs.toFixed(1)} ms, render ${timings.renderMs.toFixed(1)} ms`,
+      );
+    }
+    this.status.textContent = parts.join(' · ');
+    this.time.textContent = `t = ${t.toFixed(2)} s${paused ? ' (paused)' : ''} · camera speed ${formatSpeed(speed)} m/s`;
+  }
+
+  /** Shows (or replaces) the warning for `parameter`. */
+  warn(parameter: string, message: string): void {
+    let item = this.warnings.get(parameter);
+    if (!item) {
+      item = element('div', 'notice warning');
+      item.dataset.parameter = parameter;
+      const text = element('span', 'notice-text');
+      const close = dismissButton(() => this.clearWarning(parameter));
+      item.append(text, close);
+      this.notices.append(item);
+      this.warnings.set(parameter, item);
+    }
+    item.querySelector('.notice-text')!.textContent = `⚠ ${message}`;
+  }
+
+  clearWarning(parameter: string): void {
+    this.warnings.get(parameter)?.remove();
+    this.warnings.delete(parameter);
+  }
+
+  /** Parameters with a warning on screen. */
+  get warningParameters(): string[] {
+    return [...this.warnings.keys()];
+  }
+
+  /** Shows the link in a selectable read-only field with a note whether it is in the clipboard. */
+  showLink(url: string, copied: boolean): HTMLInputElement {
+    this.linkNotice?.remove();
+    const item = element('div', 'notice link');
+    const label = element('div', 'notice-text');
+    label.textContent = copied ? 'Link copied to the clipboard:' : 'Copy this link (the clipboard is unavailable here):';
+    const field = document.createElement('input');
+    field.type = 'text';
+    field.readOnly = true;
+    field.value = url;
+    field.className = 'link-field';
+    field.addEventListener('focus', () => field.select());
+    item.append(label, dismissButton(() => this.hideLink()), field);
+    this.notices.prepend(item);
+    this.linkNotice = item;
+    if (!copied) {
+      field.focus();
+      field.select();
+    }
+    return field;
+  }
+
+  hideLink(): void {
+    this.linkNotice?.remove();
+    this.linkNotice = null;
+  }
+}
+
+function formatSpeed(speed: number): string {
+  return speed >= 10 ? speed.toFixed(0) : speed.toFixed(1);
+}
+
+function element(tag: string, className: string): HTMLElement {
+  const el = document.createElement(tag);
+  el.className = className;
+  return el;
+}
+
+function dismissButton(onClick: () => void): HTMLButtonElement {
+  const button = document.createElement('button');
+  button.type = 'button';
+  button.className = 'notice-close';
+  button.title = 'Dismiss';
+  button.setAttribute('aria-label', 'Dismiss');
+  button.textContent = '×';
+  button.addEventListener('click', onClick);
+  return button;
+}

@@ -1,0 +1,339 @@
+/**
+ * The app's whole state as URL query parameters, so a link (or a reload) shows the same scene.
+ *
+ * Names are the library's own option names (SimulationParameters, OceanShadingOptions, the sun)
+ * plus a few for the app:
+ *
+ *   windSpeed windDirection amplitude patchSize resolution choppiness smallWaveCutoff
+ *   depth (metres, or "deep") repeatPeriod seed            — simulation (src/sim/parameters.ts)
+ *   sunElevation sunAzimuth                                   — degrees
+ *   ior causticPower causticColour absorption scatterColour   — shading; colours and absorption
+ *                                                               are "r,g,b" (linear, ≥ 0)
+ *   mode       shading mode (full, fresnel, reflection, refraction, caustics, height)
+ *   wireframe  1/0        inspector  1/0        path  auto/gpu/js
+ *   timeScale  ≥ 0        paused     1/0        t     simulation time in seconds
+ *   cam        x,y,z,yawDeg,pitchDeg (metres, degrees; see flyControls.ts)
+ *
+ * serializeState writes t and cam always and every other value only where it differs from its
+ * default, in a fixed order. parseState reads any subset: a missing value takes its default, an
+ * invalid one also takes its default and produces a warning naming the parameter. Pure: no DOM.
+ */
+import { DEFAULT_PARAMETERS, ParameterError, validateParameters, type SimulationParameters } from '../sim/parameters';
+import { SHADING_MODES, type ShadingMode } from '../render/oceanMaterial';
+import { clampPitch, MIN_HEIGHT, wrapYaw } from './flyControls';
+
+export type PathPreference = 'auto' | 'gpu' | 'js';
+export const PATH_PREFERENCES: readonly PathPreference[] = ['auto', 'gpu', 'js'];
+export type Rgb = [number, number, number];
+
+export interface AppState extends SimulationParameters {
+  sunElevation: number;
+  sunAzimuth: number;
+  ior: number;
+  causticPower: number;
+  causticColour: Rgb;
+  absorption: Rgb;
+  scatterColour: Rgb;
+  mode: ShadingMode;
+  wireframe: boolean;
+  inspector: boolean;
+  path: PathPreference;
+  timeScale: number;
+  paused: boolean;
+  /** Simulation time, seconds. */
+  t: number;
+  /** Camera x, y, z (metres), yaw and pitch (degrees). */
+  cam: [number, number, number, number, number];
+}
+
+/** Shading and sun defaults are the library's (OceanMaterial, SkyEnvironment). */
+export const DEFAULT_STATE: Readonly<AppState> = Object.freeze({
+  ...DEFAULT_PARAMETERS,
+  sunElevation: 30,
+  sunAzimuth: 40,
+  ior: 1.333,
+  causticPower: 32,
+  causticColour: [0.12, 0.12, 0.12] as Rgb,
+  absorption: [0.45, 0.07, 0.04] as Rgb,
+  scatterColour: [0.0, 0.035, 0.06] as Rgb,
+  mode: 'full' as ShadingMode,
+  wireframe: false,
+  inspector: false,
+  path: 'auto' as PathPreference,
+  timeScale: 1,
+  paused: false,
+  t: 0,
+  cam: [0, 12, 0, -53.13, -6.84] as AppState['cam'],
+});
+
+export const MAX_TIME_SCALE = 10;
+
+/** A fresh, mutable copy of the defaults (arrays copied too). */
+export function defaultState(): AppState {
+  return cloneState(DEFAULT_STATE);
+}
+
+export function cloneState(state: Readonly<AppState>): AppState {
+  return {
+    ...state,
+    causticColour: [...state.causticColour],
+    absorption: [...state.absorption],
+    scatterColour: [...state.scatterColour],
+    cam: [...state.cam],
+  };
+}
+
+/**
+ * Copies `changes` into `target`, writing arrays element by element so that anything bound to
+ * target's arrays (the panel's absorption sliders) stays bound.
+ */
+export function assignState(target: AppState, changes: Partial<AppState>): void {
+  for (const key of Object.keys(changes) as (keyof AppState)[]) {
+    const value = changes[key];
+    const current = target[key];
+    if (Array.isArray(current) && Array.isArray(value)) current.splice(0, current.length, ...value);
+    else (target as unknown as Record<string, unknown>)[key] = value;
+  }
+}
+
+const SIMULATION_KEYS = Object.keys(DEFAULT_PARAMETERS) as (keyof SimulationParameters)[];
+
+/** URL names in the order serializeState writes them. */
+export const URL_KEYS: readonly (keyof AppState)[] = [
+  'windSpeed',
+  'windDirection',
+  'amplitude',
+  'patchSize',
+  'resolution',
+  'choppiness',
+  'smallWaveCutoff',
+  'depth',
+  'repeatPeriod',
+  'seed',
+  'sunElevation',
+  'sunAzimuth',
+  'ior',
+  'causticPower',
+  'causticColour',
+  'absorption',
+  'scatterColour',
+  'mode',
+  'wireframe',
+  'inspector',
+  'path',
+  'timeScale',
+  'paused',
+  't',
+  'cam',
+];
+
+/** Keys written even when they equal their default. */
+const ALWAYS_WRITTEN = new Set<keyof AppState>(['t', 'cam']);
+
+/** A number as short text that parses back to a value within `digits` significant digits. */
+function formatNumber(value: number, digits = 10): string {
+  if (value === 0) return '0';
+  return String(Number(value.toPrecision(digits)));
+}
+
+/** Fixed decimals without trailing zeros: 12.500 → "12.5". */
+function formatFixed(value: number, decimals: number): string {
+  const text = value.toFixed(decimals);
+  return text.includes('.') ? text.replace(/\.?0+$/, '') : text;
+}
+
+/** Rounds the simulation time as the URL stores it (milliseconds), so a paused t round-trips exactly. */
+export function roundTime(t: number): number {
+  return Number(formatFixed(t, 3));
+}
+
+/** Rounds the camera as the URL stores it (millimetres, thousandths of a degree). */
+export function roundCam(cam: AppState['cam']): AppState['cam'] {
+  return cam.map((value) => Number(formatFixed(value, 3))) as AppState['cam'];
+}
+
+function formatValue(key: keyof AppState, value: AppState[keyof AppState]): string {
+  if (typeof value === 'boolean') return value ? '1' : '0';
+  if (typeof value === 'string') return value;
+  if (key === 'depth' && value === Infinity) return 'deep';
+  if (key === 't') return formatFixed(value as number, 3);
+  if (key === 'cam') return roundCam(value as AppState['cam']).map((c) => formatFixed(c, 3)).join(',');
+  if (Array.isArray(value)) return value.map((c) => formatNumber(c, 4)).join(',');
+  return formatNumber(value as number);
+}
+
+/**
+ * `value` as it comes back from the URL (rounded as serializeState writes it), so a value set in
+ * the panel and the same value after a reload are identical.
+ */
+export function urlRounded<K extends keyof AppState>(key: K, value: AppState[K]): AppState[K] {
+  if (typeof value !== 'number' && !Array.isArray(value)) return value;
+  const result = parseValue(key, formatValue(key, value));
+  return 'value' in result ? result.value : value;
+}
+
+function sameValue(a: unknown, b: unknown): boolean {
+  if (Array.isArray(a) && Array.isArray(b)) return a.length === b.length && a.every((x, i) => x === b[i]);
+  return a === b;
+}
+
+/** The query string (without "?") for `state`: t and cam always, everything else when not default. */
+export function serializeState(state: Readonly<AppState>): string {
+  const parts: string[] = [];
+  for (const key of URL_KEYS) {
+    const value = state[key];
+    if (!ALWAYS_WRITTEN.has(key) && sameValue(formatValue(key, value), formatValue(key, DEFAULT_STATE[key]))) continue;
+    // Commas are safe in a query and easier to read than %2C.
+    parts.push(`${key}=${encodeURIComponent(formatValue(key, value)).replace(/%2C/g, ',')}`);
+  }
+  return parts.join('&');
+}
+
+export interface ParsedState {
+  state: AppState;
+  /** One per bad or unknown URL parameter, each starting with the parameter's name. */
+  warnings: { parameter: string; message: string }[];
+}
+
+/** A plain decimal or exponent number; Number('') is 0 and Number('0x10') is 16, neither wanted here. */
+function parseNumber(text: string): number {
+  const trimmed = text.trim();
+  return /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i.test(trimmed) ? Number(trimmed) : NaN;
+}
+
+function parseList(text: string, count: number): number[] | null {
+  const values = text.split(',').map(parseNumber);
+  return values.length === count && values.every(Number.isFinite) ? values : null;
+}
+
+function parseFlag(text: string): boolean | null {
+  const t = text.trim().toLowerCase();
+  if (t === '1' || t === 'true' || t === 'yes' || t === 'on') return true;
+  if (t === '0' || t === 'false' || t === 'no' || t === 'off') return false;
+  return null;
+}
+
+/** Checks one simulation parameter alone (the rule in parameters.ts); null if fine, else why not. */
+function simulationProblem(key: keyof SimulationParameters, value: number): string | null {
+  try {
+    validateParameters({ [key]: value }, DEFAULT_PARAMETERS);
+    return null;
+  } catch (error) {
+    // A failure of the combination check names another parameter: judged after all are read.
+    if (error instanceof ParameterError && error.parameter === key) return error.message;
+    return null;
+  }
+}
+
+/**
+ * Parses one URL value for `key`: the value, or an explanation of what is allowed. Simulation
+ * parameters follow parameters.ts; the others mirror the checks of OceanMaterial.setShading and
+ * SkyEnvironment.setSun.
+ */
+export function parseValue<K extends keyof AppState>(key: K, text: string): { value: AppState[K] } | { error: string } {
+  const ok = (value: unknown) => ({ value: value as AppState[K] });
+  const bad = (allowed: string) => ({ error: `${key} must be ${allowed}; got "${text}"` });
+  if ((SIMULATION_KEYS as string[]).includes(key)) {
+    const simKey = key as keyof SimulationParameters;
+    const value = simKey === 'depth' && /^\s*(deep|inf|infinity)\s*$/i.test(text) ? Infinity : parseNumber(text);
+    if (Number.isNaN(value)) return bad(simKey === 'depth' ? 'a depth in metres > 0 or "deep"' : 'a number');
+    const problem = simulationProblem(simKey, value);
+    return problem ? { error: problem } : ok(value);
+  }
+  switch (key) {
+    case 'sunElevation': {
+      const v = parseNumber(text);
+      return Number.isFinite(v) && v >= -90 && v <= 90 ? ok(v) : bad('a number of degrees from -90 to 90');
+    }
+    case 'sunAzimuth': {
+      const v = parseNumber(text);
+      return Number.isFinite(v) ? ok(v) : bad('a finite number of degrees');
+    }
+    case 'ior': {
+      const v = parseNumber(text);
+      return Number.isFinite(v) && v > 1 ? ok(v) : bad('a finite number > 1');
+    }
+    case 'causticPower': {
+      const v = parseNumber(text);
+      return Number.isFinite(v) && v > 0 ? ok(v) : bad('a finite number > 0');
+    }
+    case 'causticColour':
+    case 'absorption':
+    case 'scatterColour': {
+      const v = parseList(text, 3);
+      return v && v.every((c) => c >= 0) ? ok(v) : bad('three numbers ≥ 0 separated by commas (r,g,b)');
+    }
+    case 'mode':
+      return (SHADING_MODES as readonly string[]).includes(text) ? ok(text) : bad(`one of ${SHADING_MODES.join(', ')}`);
+    case 'path':
+      return (PATH_PREFERENCES as readonly string[]).includes(text) ? ok(text) : bad(PATH_PREFERENCES.join(', '));
+    case 'wireframe':
+    case 'inspector':
+    case 'paused': {
+      const v = parseFlag(text);
+      return v === null ? bad('1 or 0') : ok(v);
+    }
+    case 'timeScale': {
+      const v = parseNumber(text);
+      return Number.isFinite(v) && v >= 0 && v <= MAX_TIME_SCALE ? ok(v) : bad(`a number from 0 to ${MAX_TIME_SCALE}`);
+    }
+    case 't': {
+      const v = parseNumber(text);
+      return Number.isFinite(v) ? ok(v) : bad('a finite number of seconds');
+    }
+    case 'cam': {
+      const v = parseList(text, 5);
+      if (!v) return bad('five numbers x,y,z,yawDeg,pitchDeg');
+      // Out-of-range height and pitch are what the controls would allow, not errors.
+      return ok([v[0], Math.max(MIN_HEIGHT, v[1]), v[2], wrapYaw(v[3]), clampPitch(v[4])]);
+    }
+  }
+  return bad('a known parameter');
+}
+
+/** Reads the state from a query string ("?a=1&b=2" or "a=1&b=2"); see ParsedState. */
+export function parseState(search: string): ParsedState {
+  const state = defaultState();
+  const warnings: ParsedState['warnings'] = [];
+  const query = new URLSearchParams(search);
+  const known = new Set<string>(URL_KEYS);
+  for (const [name, text] of query) {
+    if (!known.has(name)) {
+      warnings.push({ parameter: name, message: `${name}: unknown URL parameter, ignored` });
+      continue;
+    }
+    const key = name as keyof AppState;
+    const result = parseValue(key, text);
+    if ('error' in result) {
+      warnings.push({ parameter: name, message: `${result.error} — using the default ${formatValue(key, DEFAULT_STATE[key])}` });
+    } else {
+      (state as unknown as Record<string, unknown>)[key] = result.value;
+    }
+  }
+  // Values fine alone can clash (repeatPeriod too long for resolution and patchSize): reset the
+  // parameter the check names to its default, until the combination passes.
+  for (let attempt = 0; attempt < SIMULATION_KEYS.length; attempt++) {
+    try {
+      validateParameters(simulationParameters(state));
+      break;
+    } catch (error) {
+      if (!(error instanceof ParameterError)) throw error;
+      const key = error.parameter as keyof SimulationParameters;
+      const fallback = (SIMULATION_KEYS as string[]).includes(key) && state[key] !== DEFAULT_PARAMETERS[key];
+      warnings.push({ parameter: key, message: `${error.message} — using the default ${formatValue(key, DEFAULT_STATE[key])}` });
+      if (fallback) {
+        state[key] = DEFAULT_PARAMETERS[key];
+      } else {
+        for (const k of SIMULATION_KEYS) state[k] = DEFAULT_PARAMETERS[k];
+        break;
+      }
+    }
+  }
+  return { state, warnings };
+}
+
+export function simulationParameters(state: Readonly<AppState>): SimulationParameters {
+  const result = {} as SimulationParameters;
+  for (const key of SIMULATION_KEYS) result[key] = state[key];
+  return result;
+}

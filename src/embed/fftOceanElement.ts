@@ -1,0 +1,555 @@
+/**
+ * <fft-ocean>: the ocean as an HTML element, for pages that just want a sea.
+ *
+ *   <script type="module">import 'three-fft-ocean/register';</script>
+ *   <fft-ocean wind-speed="14" sun-elevation="12" style="height: 400px"></fft-ocean>
+ *
+ * The element makes its own canvas (in its shadow root), WebGLRenderer, scene, camera and Ocean,
+ * and renders a slowly drifting view out to the horizon. Attributes (all optional, all live):
+ *
+ *   wind-speed, wind-direction, seed, resolution, choppiness, patch-size  → ocean.setParameters
+ *   sun-elevation, sun-azimuth (degrees)                                  → ocean.setSun
+ *   shading-mode (full, fresnel, reflection, refraction, caustics, height) → ocean.setShading
+ *   path (auto, gpu, js)                      which simulation path runs
+ *   time-scale (default 1)                    simulated seconds per real second
+ *   paused (boolean)                          freezes time; the view still redraws on changes
+ *   camera-height (metres, default 8)         height of the viewpoint above the mean sea level
+ *
+ * A bad value logs a console warning that names the attribute, and the last good value stays.
+ * Removing an attribute restores its default. The attributes are the element's settings: changes
+ * made directly on element.ocean last only as long as that Ocean (see removal below).
+ *
+ * Sizing: display:block, as wide as its container and 16:9 (at least 150 px high) unless the page
+ * gives it a height; the drawing buffer follows the box (ResizeObserver). It renders only while it is on screen
+ * (IntersectionObserver) and its tab is visible; simulated time stands still while it does not
+ * render, so nothing jumps when it comes back. A lost WebGL context is waited out and the same
+ * scene is drawn again at the same time once the browser restores it. Without WebGL 2 the box
+ * shows a short message instead of staying blank.
+ *
+ * Removing it from the page frees the renderer, the ocean, the WebGL context, the observers and
+ * listeners (a synchronous move to another place in the document keeps them); putting it back
+ * creates them again and continues at the same simulated time.
+ *
+ * Define it with defineFftOceanElement() (or import src/embed/register.ts, which does).
+ */
+import { ACESFilmicToneMapping, PerspectiveCamera, Scene, WebGLRenderer } from 'three';
+import { Ocean } from '../ocean';
+import { SHADING_MODES, type ShadingMode } from '../render/oceanMaterial';
+import type { PathPreference } from '../sim/oceanSimulation';
+import { DEFAULT_PARAMETERS, validateParameters, type SimulationParameters } from '../sim/parameters';
+
+/** Longest step of simulated time per frame (s, before time-scale): a stalled tab does not jump. */
+const MAX_FRAME_STEP = 0.1;
+const PATHS: readonly PathPreference[] = ['auto', 'gpu', 'js'];
+
+/** Attributes that map onto simulation parameters. */
+const SIMULATION_ATTRIBUTES = {
+  'wind-speed': 'windSpeed',
+  'wind-direction': 'windDirection',
+  seed: 'seed',
+  resolution: 'resolution',
+  choppiness: 'choppiness',
+  'patch-size': 'patchSize',
+} as const satisfies Record<string, keyof SimulationParameters>;
+type SimulationAttribute = keyof typeof SIMULATION_ATTRIBUTES;
+
+/** Every attribute the element reads. */
+export const FFT_OCEAN_ATTRIBUTES = [
+  ...(Object.keys(SIMULATION_ATTRIBUTES) as SimulationAttribute[]),
+  'sun-elevation',
+  'sun-azimuth',
+  'shading-mode',
+  'path',
+  'time-scale',
+  'paused',
+  'camera-height',
+] as const;
+export type FftOceanAttribute = (typeof FFT_OCEAN_ATTRIBUTES)[number];
+
+/** The element's current (last good) settings. */
+interface Settings {
+  simulation: Partial<SimulationParameters>;
+  sunElevation: number;
+  sunAzimuth: number;
+  shadingMode: ShadingMode;
+  path: PathPreference;
+  timeScale: number;
+  paused: boolean;
+  cameraHeight: number;
+}
+
+const DEFAULT_SETTINGS: Readonly<Omit<Settings, 'simulation'>> = {
+  sunElevation: 22,
+  sunAzimuth: 40,
+  shadingMode: 'full',
+  path: 'auto',
+  timeScale: 1,
+  paused: false,
+  cameraHeight: 8,
+};
+
+/** What exists while the element is on the page and WebGL 2 works. */
+interface Live {
+  canvas: HTMLCanvasElement;
+  renderer: WebGLRenderer;
+  scene: Scene;
+  camera: PerspectiveCamera;
+  ocean: Ocean;
+  resizeObserver: ResizeObserver;
+  intersectionObserver: IntersectionObserver;
+  /** Removes every listener start() added. */
+  removeListeners: () => void;
+  /** Whether a part of the element is inside the viewport. */
+  onScreen: boolean;
+  contextLost: boolean;
+}
+
+// The background is a sky-and-sea placeholder until the first frame (or without WebGL 2).
+// The sizer gives the box a height (16:9 of its width, at least 150 px) when the page sets none;
+// a height from the page wins (the box clips the sizer). It adds no minimum width, so the element
+// shrinks in grids and flex rows like any block (unlike aspect-ratio, which would also turn a
+// page's height into a width).
+const STYLE = `
+  :host { display: block; position: relative; overflow: hidden;
+          background: linear-gradient(#a9c0d3, #e3e8ea 49%, #2a4a66 50%, #0b1620); }
+  :host([hidden]) { display: none; }
+  .sizer { box-sizing: border-box; padding-top: 56.25%; min-height: 150px; }
+  canvas { position: absolute; inset: 0; width: 100%; height: 100%; display: block; }
+  .message { position: absolute; inset: 0; display: flex; align-items: center; justify-content: center;
+             box-sizing: border-box; padding: 1em; text-align: center; color: #dde6ee;
+             font: 15px/1.45 system-ui, sans-serif; background: linear-gradient(#5d86a8, #17324a 55%, #0b1620); }
+`;
+
+// Defined also where there is no DOM (server-side rendering, Node tests), so importing the
+// library there does not throw; the element only works in a browser.
+const ElementBase: typeof HTMLElement =
+  typeof HTMLElement === 'undefined' ? (class {} as unknown as typeof HTMLElement) : HTMLElement;
+
+export class FftOceanElement extends ElementBase {
+  static get observedAttributes(): readonly string[] {
+    return FFT_OCEAN_ATTRIBUTES;
+  }
+
+  private readonly settings: Settings = { simulation: {}, ...DEFAULT_SETTINGS };
+  private readonly root: ShadowRoot;
+  private live: Live | null = null;
+  private message: HTMLElement | null = null;
+  private simulatedTime = 0;
+  /** rAF timestamp of the last animated frame, or null when the next frame must not advance time. */
+  private lastFrameAt: number | null = null;
+  private frameRequest = 0;
+  private needsDraw = true;
+  private framesDrawn = 0;
+  private readonly onVisibilityChange = () => this.activityChanged();
+
+  constructor() {
+    super();
+    this.root = this.attachShadow({ mode: 'open' });
+    const style = document.createElement('style');
+    style.textContent = STYLE;
+    const sizer = document.createElement('div');
+    sizer.className = 'sizer';
+    this.root.append(style, sizer);
+  }
+
+  /** The Ocean while the element is on the page (null before, after removal or without WebGL 2). */
+  get ocean(): Ocean | null {
+    return this.live?.ocean ?? null;
+  }
+
+  get renderer(): WebGLRenderer | null {
+    return this.live?.renderer ?? null;
+  }
+
+  get camera(): PerspectiveCamera | null {
+    return this.live?.camera ?? null;
+  }
+
+  get scene(): Scene | null {
+    return this.live?.scene ?? null;
+  }
+
+  /** The element's canvas (inside its shadow root), or null when it has none. */
+  get canvas(): HTMLCanvasElement | null {
+    return this.live?.canvas ?? null;
+  }
+
+  /** Simulated seconds shown; settable (any finite number) to jump to a moment. */
+  get time(): number {
+    return this.simulatedTime;
+  }
+
+  set time(seconds: number) {
+    if (typeof seconds !== 'number' || !Number.isFinite(seconds)) {
+      console.warn(`<fft-ocean>: ignoring time = ${String(seconds)}: it must be a finite number of seconds`);
+      return;
+    }
+    this.simulatedTime = seconds;
+    this.invalidate();
+  }
+
+  /** Frames drawn since the element was created (for diagnostics and tests). */
+  get frameCount(): number {
+    return this.framesDrawn;
+  }
+
+  /** Whether the element is drawing frames now (on the page, on screen, tab visible, context alive). */
+  get active(): boolean {
+    return this.isActive();
+  }
+
+  /**
+   * Draws the current time now, synchronously (e.g. right before canvas.toDataURL() or
+   * readPixels). Returns false when there is nothing to draw into.
+   */
+  renderFrame(): boolean {
+    const live = this.live;
+    if (!live || live.contextLost) return false;
+    this.draw(live);
+    return true;
+  }
+
+  connectedCallback(): void {
+    if (!this.live) this.start();
+  }
+
+  disconnectedCallback(): void {
+    // A move (remove + insert in the same task) keeps everything; a real removal frees it all.
+    queueMicrotask(() => {
+      if (!this.isConnected) this.stop();
+    });
+  }
+
+  attributeChangedCallback(name: string, _previous: string | null, value: string | null): void {
+    this.applyAttribute(name as FftOceanAttribute, value);
+  }
+
+  // ---- attributes
+
+  private applyAttribute(name: FftOceanAttribute, raw: string | null): void {
+    const ocean = this.live?.ocean ?? null;
+    const s = this.settings;
+    const reject = (reason: string, kept: unknown): void => {
+      console.warn(`<fft-ocean>: ignoring ${name}="${raw}": ${reason}; keeping ${String(kept)}`);
+    };
+    if (name in SIMULATION_ATTRIBUTES) {
+      const key = SIMULATION_ATTRIBUTES[name as SimulationAttribute];
+      const kept = s.simulation[key] ?? DEFAULT_PARAMETERS[key];
+      const next = { ...s.simulation };
+      if (raw === null) delete next[key];
+      else next[key] = parseNumber(raw);
+      try {
+        validateParameters(next); // throws a ParameterError naming the rule
+        ocean?.setParameters({ [key]: next[key] ?? DEFAULT_PARAMETERS[key] });
+      } catch (error) {
+        reject(errorMessage(error), kept);
+        return;
+      }
+      s.simulation = next;
+    } else if (name === 'sun-elevation' || name === 'sun-azimuth') {
+      const isElevation = name === 'sun-elevation';
+      const kept = isElevation ? s.sunElevation : s.sunAzimuth;
+      const value = raw === null ? DEFAULT_SETTINGS[isElevation ? 'sunElevation' : 'sunAzimuth'] : parseNumber(raw);
+      if (!Number.isFinite(value) || (isElevation && Math.abs(value) > 90)) {
+        reject(isElevation ? 'it must be a number of degrees from -90 to 90' : 'it must be a finite number of degrees', kept);
+        return;
+      }
+      if (isElevation) s.sunElevation = value;
+      else s.sunAzimuth = value;
+      ocean?.setSun(s.sunElevation, s.sunAzimuth);
+    } else if (name === 'shading-mode') {
+      const value = (raw === null ? DEFAULT_SETTINGS.shadingMode : raw.trim()) as ShadingMode;
+      if (!SHADING_MODES.includes(value)) {
+        reject(`it must be one of ${SHADING_MODES.join(', ')}`, s.shadingMode);
+        return;
+      }
+      s.shadingMode = value;
+      ocean?.setShading({ shadingMode: value });
+    } else if (name === 'path') {
+      const value = (raw === null ? DEFAULT_SETTINGS.path : raw.trim()) as PathPreference;
+      if (!PATHS.includes(value)) {
+        reject(`it must be one of ${PATHS.join(', ')}`, s.path);
+        return;
+      }
+      s.path = value;
+      if (ocean && ocean.simulation.pathPreference !== value) ocean.simulation.pathPreference = value;
+    } else if (name === 'time-scale') {
+      const value = raw === null ? DEFAULT_SETTINGS.timeScale : parseNumber(raw);
+      if (!Number.isFinite(value)) {
+        reject('it must be a finite number (simulated seconds per second)', s.timeScale);
+        return;
+      }
+      s.timeScale = value;
+    } else if (name === 'camera-height') {
+      const value = raw === null ? DEFAULT_SETTINGS.cameraHeight : parseNumber(raw);
+      if (!Number.isFinite(value) || value <= 0 || value > 10000) {
+        reject('it must be a number of metres above 0 and at most 10000', s.cameraHeight);
+        return;
+      }
+      s.cameraHeight = value;
+    } else if (name === 'paused') {
+      // A boolean attribute; paused="false" is read as not paused, as people write it.
+      const paused = raw !== null && raw.trim().toLowerCase() !== 'false';
+      if (paused !== s.paused) {
+        s.paused = paused;
+        this.lastFrameAt = null;
+      }
+    }
+    this.invalidate();
+  }
+
+  // ---- life cycle
+
+  private start(): void {
+    this.message?.remove();
+    this.message = null;
+    const canvas = document.createElement('canvas');
+    canvas.setAttribute('part', 'canvas');
+    canvas.setAttribute('role', 'img');
+    canvas.setAttribute('aria-label', 'An animated view of the open sea');
+    let renderer: WebGLRenderer;
+    try {
+      renderer = new WebGLRenderer({ canvas, antialias: true, powerPreference: 'high-performance' });
+    } catch (error) {
+      this.fail(
+        'This ocean needs WebGL 2, which this browser does not provide (or has switched off).',
+        error,
+      );
+      return;
+    }
+    let ocean: Ocean;
+    const s = this.settings;
+    try {
+      ocean = new Ocean(renderer, {
+        ...s.simulation,
+        sunElevation: s.sunElevation,
+        sunAzimuth: s.sunAzimuth,
+        shadingMode: s.shadingMode,
+        path: s.path,
+      });
+    } catch (error) {
+      renderer.dispose();
+      renderer.forceContextLoss();
+      this.fail('The ocean could not start in this browser.', error);
+      return;
+    }
+    renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
+    renderer.toneMapping = ACESFilmicToneMapping;
+    const scene = new Scene();
+    scene.add(ocean);
+    scene.background = ocean.background;
+    const camera = new PerspectiveCamera(50, 16 / 9, 0.5, 1e4);
+    this.root.append(canvas);
+
+    const onContextLost = () => {
+      live.contextLost = true;
+      this.activityChanged();
+    };
+    const onContextRestored = () => {
+      // three.js has rebuilt its state and the sky has re-rendered its cube (their listeners
+      // were added first); the fields are recomputed by the next update().
+      live.contextLost = false;
+      this.activityChanged();
+    };
+    canvas.addEventListener('webglcontextlost', onContextLost);
+    canvas.addEventListener('webglcontextrestored', onContextRestored);
+    document.addEventListener('visibilitychange', this.onVisibilityChange);
+
+    const resizeObserver = new ResizeObserver(() => this.resize());
+    const intersectionObserver = new IntersectionObserver((entries) => {
+      live.onScreen = entries[entries.length - 1].isIntersecting;
+      this.activityChanged();
+    });
+    const live: Live = {
+      canvas,
+      renderer,
+      scene,
+      camera,
+      ocean,
+      resizeObserver,
+      intersectionObserver,
+      onScreen: false, // until the observer's first report, which comes promptly
+      contextLost: false,
+      removeListeners: () => {
+        canvas.removeEventListener('webglcontextlost', onContextLost);
+        canvas.removeEventListener('webglcontextrestored', onContextRestored);
+        document.removeEventListener('visibilitychange', this.onVisibilityChange);
+      },
+    };
+    this.live = live;
+    this.lastFrameAt = null;
+    this.resize();
+    resizeObserver.observe(this);
+    intersectionObserver.observe(this);
+  }
+
+  private stop(): void {
+    const live = this.live;
+    if (live) {
+      this.live = null;
+      if (this.frameRequest) cancelAnimationFrame(this.frameRequest);
+      this.frameRequest = 0;
+      live.resizeObserver.disconnect();
+      live.intersectionObserver.disconnect();
+      live.removeListeners();
+      live.scene.remove(live.ocean);
+      live.scene.background = null;
+      live.ocean.dispose();
+      live.renderer.dispose();
+      // Give the context back now rather than at garbage collection: browsers allow few at once.
+      live.renderer.forceContextLoss();
+      live.canvas.remove();
+    }
+    this.message?.remove();
+    this.message = null;
+    this.lastFrameAt = null;
+    this.needsDraw = true;
+  }
+
+  private fail(text: string, error: unknown): void {
+    console.error(`<fft-ocean>: ${text}`, error);
+    const message = document.createElement('div');
+    message.className = 'message';
+    message.setAttribute('part', 'message');
+    message.setAttribute('role', 'note');
+    message.textContent = text;
+    this.root.append(message);
+    this.message = message;
+    this.dispatchEvent(new CustomEvent('fft-ocean-error', { detail: { message: text, error } }));
+  }
+
+  // ---- frames
+
+  private isActive(): boolean {
+    const live = this.live;
+    return !!live && live.onScreen && !live.contextLost && document.visibilityState !== 'hidden';
+  }
+
+  /** Something changed that affects whether frames are drawn. */
+  private activityChanged(): void {
+    this.lastFrameAt = null; // the time that passed while inactive is not simulated
+    this.invalidate();
+  }
+
+  /** The picture is out of date: draw on the next frame if active. */
+  private invalidate(): void {
+    this.needsDraw = true;
+    this.schedule();
+  }
+
+  private schedule(): void {
+    if (this.frameRequest === 0 && this.isActive()) this.frameRequest = requestAnimationFrame(this.tick);
+  }
+
+  private readonly tick = (now: number): void => {
+    this.frameRequest = 0;
+    const live = this.live;
+    if (!live || !this.isActive()) {
+      this.lastFrameAt = null;
+      return;
+    }
+    const animating = !this.settings.paused;
+    if (animating) {
+      if (this.lastFrameAt !== null) {
+        const step = Math.min(Math.max(0, (now - this.lastFrameAt) / 1000), MAX_FRAME_STEP);
+        this.simulatedTime += step * this.settings.timeScale;
+      }
+      this.lastFrameAt = now;
+    }
+    if (animating || this.needsDraw) {
+      try {
+        this.draw(live);
+      } catch (error) {
+        console.error('<fft-ocean>: drawing failed; stopping', error);
+        return; // no further frames
+      }
+    }
+    if (animating) this.schedule();
+  };
+
+  private resize(): void {
+    const live = this.live;
+    if (!live) return;
+    const width = Math.max(1, this.clientWidth);
+    const height = Math.max(1, this.clientHeight);
+    live.renderer.setSize(width, height, false);
+    live.camera.aspect = width / height;
+    live.camera.updateProjectionMatrix();
+    // Resizing clears the canvas: draw again right away so it never shows blank.
+    if (this.isActive()) this.draw(live);
+    else this.needsDraw = true;
+  }
+
+  private draw(live: Live): void {
+    const { renderer, scene, camera, ocean } = live;
+    this.needsDraw = false;
+    placeCamera(camera, this.simulatedTime, this.settings.cameraHeight, this.settings.sunAzimuth);
+    ocean.update(this.simulatedTime);
+    // The far plane must reach the horizon, which ocean.horizonDistance reports after a render:
+    // when it grew past the far plane (first frame, camera raised), draw once more.
+    for (let attempt = 0; attempt < 2; attempt++) {
+      renderer.render(scene, camera);
+      const far = Math.max(1e4, 1.5 * ocean.horizonDistance);
+      const tooShort = far > camera.far;
+      camera.far = far;
+      camera.updateProjectionMatrix();
+      if (!tooShort) break;
+    }
+    this.framesDrawn++;
+    if (this.framesDrawn === 1) this.dispatchEvent(new CustomEvent('fft-ocean-ready'));
+  }
+}
+
+/**
+ * The default view: `height` metres up, a few degrees below the horizon, facing 30° to one side
+ * of the sun's azimuth (so its glitter path crosses the view), drifting forward at 1.5 m/s and
+ * turning slowly. A function of simulated time only, so it stands still when paused.
+ */
+export function placeCamera(camera: PerspectiveCamera, t: number, height: number, sunAzimuthDeg: number): void {
+  const yaw = ((sunAzimuthDeg - 30) * Math.PI) / 180 + 0.12 * Math.sin((2 * Math.PI * t) / 120);
+  const forwardX = Math.cos(yaw);
+  const forwardZ = Math.sin(yaw);
+  const travelled = 1.5 * t;
+  const x = travelled * Math.cos((sunAzimuthDeg - 30) * (Math.PI / 180));
+  const z = travelled * Math.sin((sunAzimuthDeg - 30) * (Math.PI / 180));
+  camera.position.set(x, height, z);
+  const pitch = (-6 * Math.PI) / 180;
+  const distance = 100;
+  camera.lookAt(
+    x + distance * Math.cos(pitch) * forwardX,
+    height + distance * Math.sin(pitch),
+    z + distance * Math.cos(pitch) * forwardZ,
+  );
+  camera.updateMatrixWorld();
+}
+
+function parseNumber(raw: string): number {
+  return raw.trim() === '' ? NaN : Number(raw);
+}
+
+function errorMessage(error: unknown): string {
+  return error instanceof Error ? error.message : String(error);
+}
+
+/**
+ * Defines the element under `tagName` (default 'fft-ocean') unless that name is already taken;
+ * safe to call any number of times. Returns the class now registered under the name.
+ */
+export function defineFftOceanElement(tagName = 'fft-ocean'): CustomElementConstructor | undefined {
+  if (typeof customElements === 'undefined') return undefined;
+  const existing = customElements.get(tagName);
+  if (existing) {
+    if (existing !== FftOceanElement) {
+      console.warn(`<${tagName}> is already defined by another script (a second copy of three-fft-ocean?); keeping that one.`);
+    }
+    return existing;
+  }
+  customElements.define(tagName, FftOceanElement);
+  return FftOceanElement;
+}
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'fft-ocean': FftOceanElement;
+  }
+}

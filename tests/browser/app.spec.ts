@@ -1,0 +1,373 @@
+/**
+ * The app (index.html, src/app/): fly controls, panel, URL state, status line, time and resize,
+ * in real Chromium. Small viewports and a small FFT keep each test to a few seconds under
+ * SwiftShader; pixels are read by the app right after its render (oceanApp.capturePixels).
+ */
+import { expect, test, type Page } from '@playwright/test';
+
+type Vec3 = [number, number, number];
+
+/** Opens the app with `query`; returns the console errors and page errors it collects. */
+async function openApp(page: Page, query = '', size = { width: 480, height: 270 }, openPanel = true): Promise<string[]> {
+  const errors: string[] = [];
+  page.on('pageerror', (error) => errors.push(error.message));
+  page.on('console', (message) => {
+    if (message.type() === 'error') errors.push(message.text());
+  });
+  await page.setViewportSize(size);
+  await page.goto(`/?${query}`);
+  await page.waitForFunction(() => window.oceanApp !== undefined);
+  // Narrow viewports (fast under SwiftShader) start with the panel closed.
+  await page.evaluate((open) => window.oceanApp.panel.gui.open(open), openPanel);
+  await frames(page, 2);
+  return errors;
+}
+
+/** Waits until the app has drawn `count` more frames. */
+async function frames(page: Page, count = 1): Promise<void> {
+  await page.evaluate(async (count) => {
+    for (let i = 0; i < count; i++) await new Promise((resolve) => requestAnimationFrame(resolve));
+  }, count);
+}
+
+/** The canvas right after the app's next render, as raw RGBA bytes. */
+async function pixels(page: Page): Promise<Buffer> {
+  const base64 = await page.evaluate(async () => {
+    const { data } = await window.oceanApp.capturePixels();
+    let text = '';
+    for (let i = 0; i < data.length; i += 8192) text += String.fromCharCode(...data.subarray(i, i + 8192));
+    return btoa(text);
+  });
+  return Buffer.from(base64, 'base64');
+}
+
+function meanAbsDifference(a: Buffer, b: Buffer): number {
+  expect(a.length).toBe(b.length);
+  let sum = 0;
+  for (let i = 0; i < a.length; i++) sum += Math.abs(a[i] - b[i]);
+  return sum / a.length;
+}
+
+const pose = (page: Page) => page.evaluate(() => window.oceanApp.controls.pose);
+
+/** v = (cos φ cos θ, sin θ, sin φ cos θ) (course report §2.6). */
+function viewDirection(yawDeg: number, pitchDeg: number): Vec3 {
+  const phi = (yawDeg * Math.PI) / 180;
+  const theta = (pitchDeg * Math.PI) / 180;
+  return [Math.cos(phi) * Math.cos(theta), Math.sin(theta), Math.sin(phi) * Math.cos(theta)];
+}
+const sub = (a: Vec3, b: Vec3): Vec3 => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+const dot = (a: Vec3, b: Vec3) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+const length = (a: Vec3) => Math.hypot(...a);
+
+/**
+ * Holds `key` for about `ms` and returns how long the page saw it held (keydown to keyup, page
+ * clock) and the longest frame meanwhile (the movement is integrated per frame).
+ */
+async function holdKey(page: Page, key: string, ms: number): Promise<{ held: number; longestFrame: number }> {
+  await page.evaluate(() => {
+    const record = { down: 0, up: 0, frames: [] as number[], running: true };
+    Object.assign(window, { keyRecord: record });
+    window.addEventListener('keydown', () => (record.down ||= performance.now()), { capture: true, once: true });
+    window.addEventListener('keyup', () => (record.up = performance.now()), { capture: true, once: true });
+    const tick = (now: number) => {
+      record.frames.push(now);
+      if (record.running) requestAnimationFrame(tick);
+    };
+    requestAnimationFrame(tick);
+  });
+  await page.keyboard.down(key);
+  await page.waitForTimeout(ms);
+  await page.keyboard.up(key);
+  await frames(page, 2); // the frame after keyup applies nothing more
+  return page.evaluate(() => {
+    const record = (window as unknown as { keyRecord: { down: number; up: number; frames: number[]; running: boolean } }).keyRecord;
+    record.running = false;
+    const intervals = record.frames.slice(1).map((t, i) => t - record.frames[i]);
+    return { held: (record.up - record.down) / 1000, longestFrame: Math.max(...intervals) / 1000 };
+  });
+}
+
+test.describe('the app', () => {
+  test('loads without console errors and shows the FFT path, CPU timings and the keys', async ({ page }) => {
+    const errors = await openApp(page, 'resolution=64');
+    const status = page.locator('#status .status-line');
+    await expect(status).toHaveText(/^FFT: (GPU RGBA32F|GPU RGBA16F|JS in a worker|JS) · \d+ fps · CPU time: sim \d+\.\d ms, render \d+\.\d ms$/);
+    await expect(page.locator('#status .status-time')).toHaveText(/^t = \d+\.\d\d s · camera speed 20 m\/s$/);
+    const path = await page.evaluate(() => window.oceanApp.ocean.simulation.path);
+    const label = { 'gpu-rgba32f': 'GPU RGBA32F', 'gpu-rgba16f': 'GPU RGBA16F', 'js-worker': 'JS in a worker', js: 'JS' }[path];
+    await expect(status).toContainText(`FFT: ${label} ·`);
+    await expect(page.locator('#status .status-help')).toContainText('Move: W A S D');
+    await expect(page.locator('[data-key="running"] input')).toHaveValue(label);
+
+    // Switching the path in the panel shows in the status and in the panel's read-only line.
+    await page.locator('[data-key="path"] select').selectOption('js');
+    await expect(status).toContainText('FFT: JS in a worker ·');
+    await expect(page.locator('[data-key="running"] input')).toHaveValue('JS in a worker');
+    expect(await page.evaluate(() => window.oceanApp.ocean.simulation.pathPreference)).toBe('js');
+    expect(errors).toEqual([]);
+  });
+
+  test('W moves along v by speed × time; A moves along l = u × v, left on screen; Shift goes down to 1 m', async ({ page }) => {
+    await openApp(page, 'resolution=32&paused=1&cam=0,10,0,30,-10', { width: 320, height: 180 });
+    await page.evaluate(() => (window.oceanApp.controls.speed = 10));
+
+    const before = await pose(page);
+    const forward = await holdKey(page, 'w', 1500);
+    const afterW = await pose(page);
+    const moved = sub(afterW.position, before.position);
+    const v = viewDirection(30, -10);
+    expect(dot(moved, v) / length(moved)).toBeGreaterThan(0.99999);
+    // Integrated per frame: off by at most about a frame at each end.
+    expect(Math.abs(length(moved) - 10 * forward.held)).toBeLessThan(10 * 2 * forward.longestFrame + 0.5);
+    expect(length(moved)).toBeGreaterThan(10 * 0.5 * forward.held);
+    expect(afterW.yaw).toBe(30);
+    expect(afterW.pitch).toBe(-10);
+
+    await holdKey(page, 'a', 800);
+    const afterA = await pose(page);
+    const left = sub(afterA.position, afterW.position);
+    expect(length(left)).toBeGreaterThan(1);
+    const l: Vec3 = [v[2], 0, -v[0]]; // u × v with u = (0, 1, 0)
+    expect(dot(left, l) / (length(left) * length(l))).toBeGreaterThan(0.99999);
+    expect(Math.abs(left[1])).toBeLessThan(1e-9);
+    // Left on screen: the camera's own x axis (its right) points the other way.
+    const rightAxis = await page.evaluate(() => window.oceanApp.camera.matrixWorld.elements.slice(0, 3) as [number, number, number]);
+    expect(dot(left, rightAxis) / length(left)).toBeLessThan(-0.99999);
+
+    await holdKey(page, 'Space', 500);
+    expect((await pose(page)).position[1]).toBeGreaterThan(afterA.position[1] + 1);
+    await holdKey(page, 'Shift', 2000); // 10 m/s down for 2 s from ~13 m: stops at 1 m
+    expect((await pose(page)).position[1]).toBe(1);
+  });
+
+  test('dragging turns the view: right increases yaw, up increases pitch, pitch clamps at ±89°', async ({ page }) => {
+    await openApp(page, 'resolution=32&paused=1&cam=0,10,0,30,-10', { width: 320, height: 180 }, false);
+    const start = await pose(page);
+    await page.mouse.move(100, 120);
+    await page.mouse.down();
+    await page.mouse.move(150, 100, { steps: 5 }); // 50 px right, 20 px up
+    await page.mouse.up();
+    const turned = await pose(page);
+    expect(turned.yaw).toBeCloseTo(start.yaw + 50 * 0.15, 6);
+    expect(turned.pitch).toBeCloseTo(start.pitch + 20 * 0.15, 6);
+    expect(turned.position).toEqual(start.position);
+    // The new view leans to the old right (−l) and up.
+    const oldView = viewDirection(start.yaw, start.pitch);
+    const newView = viewDirection(turned.yaw, turned.pitch);
+    const oldLeft: Vec3 = [oldView[2], 0, -oldView[0]];
+    expect(dot(newView, oldLeft)).toBeLessThan(0);
+    expect(newView[1]).toBeGreaterThan(oldView[1]);
+    // And the camera really looks there.
+    const cameraForward = await page.evaluate(() => {
+      const e = window.oceanApp.camera.matrixWorld.elements;
+      return [-e[8], -e[9], -e[10]] as [number, number, number];
+    });
+    expect(dot(cameraForward, newView)).toBeGreaterThan(0.99999);
+
+    for (const [pitch, dy, limit] of [
+      [80, -100, 89], // 80° + 15° up stops at 89°
+      [-80, 100, -89],
+    ]) {
+      await page.evaluate((pitch) => (window.oceanApp.controls.pose = { position: [0, 10, 0], yaw: 30, pitch }), pitch);
+      const y = dy < 0 ? 150 : 30;
+      await page.mouse.move(100, y);
+      await page.mouse.down();
+      await page.mouse.move(100, y + dy, { steps: 5 });
+      await page.mouse.up();
+      expect((await pose(page)).pitch).toBe(limit);
+    }
+  });
+
+  test('touch: one finger turns, two fingers dragged up move forward', async ({ page }) => {
+    await openApp(page, 'resolution=32&paused=1&cam=0,10,0,30,-10', { width: 320, height: 180 }, false);
+    const result = await page.evaluate(() => {
+      const { controls, renderer } = window.oceanApp;
+      const canvas = renderer.domElement;
+      const touch = (type: string, pointerId: number, x: number, y: number) =>
+        canvas.dispatchEvent(new PointerEvent(type, { pointerId, pointerType: 'touch', clientX: x, clientY: y, bubbles: true }));
+      touch('pointerdown', 1, 100, 100);
+      touch('pointermove', 1, 140, 100); // one finger 40 px right
+      touch('pointerup', 1, 140, 100);
+      const turned = controls.pose;
+      touch('pointerdown', 1, 100, 120);
+      touch('pointerdown', 2, 160, 120);
+      touch('pointermove', 1, 100, 70); // both fingers 50 px up
+      touch('pointermove', 2, 160, 70);
+      touch('pointerup', 1, 100, 70);
+      touch('pointerup', 2, 160, 70);
+      return { turned, moved: controls.pose, speed: controls.speed };
+    });
+    expect(result.turned.yaw).toBeCloseTo(30 + 40 * 0.25, 6);
+    expect(result.turned.pitch).toBe(-10);
+    const moved = sub(result.moved.position, result.turned.position);
+    const v = viewDirection(result.turned.yaw, result.turned.pitch);
+    expect(dot(moved, v) / length(moved)).toBeGreaterThan(0.99999);
+    expect(length(moved)).toBeCloseTo((50 * result.speed) / 100, 6); // speed/100 metres per pixel
+  });
+
+  test('URL → scene and panel; panel → URL; reload → the same scene and picture', async ({ page }) => {
+    const query = 'windSpeed=7.5&resolution=64&depth=35&seed=9&mode=fresnel&sunElevation=15&absorption=0.5,0.1,0.05&paused=1&t=3.5&cam=5,8,-3,20,-12';
+    const errors = await openApp(page, query);
+    const scene = await page.evaluate(() => {
+      const { ocean, state, controls } = window.oceanApp;
+      return { parameters: ocean.parameters, shading: ocean.shading, sun: ocean.sky.sunElevation, t: state.t, pose: controls.pose };
+    });
+    expect(scene.parameters).toMatchObject({ windSpeed: 7.5, resolution: 64, depth: 35, seed: 9 });
+    expect(scene.shading.shadingMode).toBe('fresnel');
+    expect(scene.shading.absorption.map((c) => Number(c.toFixed(6)))).toEqual([0.5, 0.1, 0.05]);
+    expect(scene.sun).toBe(15);
+    expect(scene.t).toBe(3.5);
+    expect(scene.pose).toEqual({ position: [5, 8, -3], yaw: 20, pitch: -12 });
+    await expect(page.locator('[data-key="windSpeed"] input')).toHaveValue('7.5');
+    await expect(page.locator('[data-key="resolution"] select')).toHaveValue('64');
+    await expect(page.locator('[data-key="depth.deep"] input')).not.toBeChecked();
+    await expect(page.locator('[data-key="depth"] input')).toHaveValue('35');
+    await expect(page.locator('[data-key="seed"] input')).toHaveValue('9');
+    await expect(page.locator('[data-key="paused"] input')).toBeChecked();
+
+    // Change values in the panel: they reach the ocean and, shortly after, the URL.
+    await page.locator('[data-key="windSpeed"] input').fill('9.5');
+    await page.locator('[data-key="resolution"] select').selectOption('128');
+    await page.locator('[data-key="depth.deep"] input').check();
+    expect(await page.evaluate(() => window.oceanApp.ocean.parameters)).toMatchObject({ windSpeed: 9.5, resolution: 128, depth: Infinity });
+    const urlParams = () => new URL(page.url()).searchParams;
+    // Deep water is the default, so depth leaves the URL.
+    await expect.poll(() => [urlParams().get('windSpeed'), urlParams().get('resolution'), urlParams().has('depth')]).toEqual(['9.5', '128', false]);
+    const url = new URL(page.url());
+    expect(url.searchParams.get('mode')).toBe('fresnel');
+    expect(url.searchParams.get('t')).toBe('3.5');
+    const picture = await pixels(page);
+
+    await page.reload();
+    await page.waitForFunction(() => window.oceanApp !== undefined);
+    await frames(page, 2);
+    expect(await page.evaluate(() => window.oceanApp.ocean.parameters)).toMatchObject({
+      windSpeed: 9.5,
+      resolution: 128,
+      depth: Infinity,
+      seed: 9,
+    });
+    expect(await pose(page)).toEqual({ position: [5, 8, -3], yaw: 20, pitch: -12 });
+    expect(meanAbsDifference(picture, await pixels(page))).toBeLessThan(0.01);
+    expect(errors).toEqual([]);
+  });
+
+  test('an invalid URL value shows a warning naming it, and the default is used', async ({ page }) => {
+    await openApp(page, 'windSpeed=abc&resolution=100&mode=shiny&seed=5');
+    const warnings = page.locator('#status .notice.warning');
+    await expect(warnings).toHaveCount(3);
+    await expect(warnings.nth(0)).toBeVisible();
+    await expect(warnings.nth(0)).toContainText('windSpeed must be');
+    await expect(warnings.nth(1)).toContainText('resolution must be a power of two');
+    await expect(warnings.nth(2)).toContainText('mode must be one of');
+    await expect(warnings.nth(0)).toContainText('using the default 12');
+    const { parameters, mode } = await page.evaluate(() => ({
+      parameters: window.oceanApp.ocean.parameters,
+      mode: window.oceanApp.ocean.shading.shadingMode,
+    }));
+    expect(parameters).toMatchObject({ windSpeed: 12, resolution: 256, seed: 5 });
+    expect(mode).toBe('full');
+    // The URL now holds what runs; a warning can be dismissed.
+    expect(page.url()).not.toContain('abc');
+    expect(page.url()).toContain('seed=5');
+    await warnings.nth(0).getByRole('button', { name: 'Dismiss' }).click();
+    await expect(warnings).toHaveCount(2);
+  });
+
+  test('a bad panel value shows a warning naming it and the ocean keeps its last good value', async ({ page }) => {
+    await openApp(page, 'resolution=32&seed=3');
+    const seed = page.locator('[data-key="seed"] input');
+    await seed.fill('-5');
+    const warning = page.locator('#status .notice.warning[data-parameter="seed"]');
+    await expect(warning).toBeVisible();
+    await expect(warning).toContainText('seed must be an integer');
+    await expect(warning).toContainText('keeping seed 3');
+    expect(await page.evaluate(() => window.oceanApp.ocean.parameters.seed)).toBe(3);
+    await seed.blur();
+    await expect(seed).toHaveValue('3');
+    // A good value clears the warning.
+    await seed.fill('4');
+    await expect(warning).toHaveCount(0);
+    expect(await page.evaluate(() => window.oceanApp.ocean.parameters.seed)).toBe(4);
+
+    // Presets and "new seed" go through the same path.
+    await page.locator('[data-key="preset.storm"] button').click();
+    expect(await page.evaluate(() => window.oceanApp.ocean.parameters)).toMatchObject({ windSpeed: 20, amplitude: 9e-8, patchSize: 600 });
+    await expect(page.locator('[data-key="windSpeed"] input')).toHaveValue('20');
+    await page.locator('[data-key="newSeed"] button').click();
+    expect(await page.evaluate(() => window.oceanApp.ocean.parameters.seed)).not.toBe(4);
+    await expect.poll(() => new URL(page.url()).searchParams.get('windSpeed')).toBe('20');
+  });
+
+  test('switching the shading mode in the panel changes the picture', async ({ page }) => {
+    await openApp(page, 'resolution=64&paused=1&t=2');
+    const full = await pixels(page);
+    await page.getByText('Sun & shading').click(); // the folder starts closed
+    await page.locator('[data-key="mode"] select').selectOption('height');
+    expect(await page.evaluate(() => window.oceanApp.ocean.shading.shadingMode)).toBe('height');
+    const height = await pixels(page);
+    expect(meanAbsDifference(full, height)).toBeGreaterThan(10);
+    await expect.poll(() => new URL(page.url()).searchParams.get('mode')).toBe('height');
+    // Wireframe too reaches the material.
+    await page.locator('[data-key="wireframe"] input').check();
+    expect(await page.evaluate(() => window.oceanApp.ocean.surface.material.wireframe)).toBe(true);
+  });
+
+  test('time: paused keeps t; a stalled frame advances t by at most 0.1 s × time scale', async ({ page }) => {
+    await openApp(page, 'resolution=32&paused=1&t=5', { width: 320, height: 180 });
+    await page.waitForTimeout(300);
+    expect(await page.evaluate(() => window.oceanApp.state.t)).toBe(5);
+    const step = await page.evaluate(async () => {
+      const app = window.oceanApp;
+      app.set({ paused: false, timeScale: 2 });
+      await new Promise((resolve) => requestAnimationFrame(resolve));
+      const before = app.state.t;
+      const end = performance.now() + 1500; // the main thread stalls for 1.5 s
+      while (performance.now() < end) {
+        // busy
+      }
+      await new Promise((resolve) => requestAnimationFrame(resolve)); // runs right after the app's frame
+      return app.state.t - before;
+    });
+    expect(step).toBeGreaterThan(0);
+    expect(step).toBeLessThanOrEqual(0.2 + 1e-9);
+  });
+
+  test('resizing the viewport resizes the canvas and the camera aspect', async ({ page }) => {
+    await openApp(page, 'resolution=32', { width: 320, height: 180 });
+    await page.setViewportSize({ width: 400, height: 300 });
+    await expect
+      .poll(() =>
+        page.evaluate(() => {
+          const { renderer, camera } = window.oceanApp;
+          const canvas = renderer.domElement;
+          return [canvas.clientWidth, canvas.clientHeight, canvas.width / devicePixelRatio, canvas.height / devicePixelRatio, camera.aspect];
+        }),
+      )
+      .toEqual([400, 300, 400, 300, 400 / 300]);
+  });
+
+  test('copy link: without a clipboard the link is shown in a visible field', async ({ page }) => {
+    await page.addInitScript(() => {
+      Object.defineProperty(navigator, 'clipboard', { value: { writeText: () => Promise.reject(new Error('denied')) } });
+    });
+    await openApp(page, 'resolution=32&seed=12');
+    await page.locator('[data-key="copyLink"] button').click();
+    const field = page.locator('#status .notice.link input');
+    await expect(field).toBeVisible();
+    await expect(page.locator('#status .notice.link')).toContainText('clipboard is unavailable');
+    expect(await field.inputValue()).toBe(page.url());
+    expect(page.url()).toContain('seed=12');
+  });
+
+  test('?inspector=1 shows the inspector tiles and the panel toggles them', async ({ page }) => {
+    await openApp(page, 'resolution=32&inspector=1');
+    await expect(page.locator('.inspector-labels > div')).toHaveCount(9);
+    expect(await page.evaluate(() => window.oceanApp.inspector !== null)).toBe(true);
+    await page.locator('[data-key="inspector"] input').uncheck();
+    await expect(page.locator('.inspector-labels')).toHaveCount(0);
+    expect(await page.evaluate(() => window.oceanApp.inspector)).toBeNull();
+    await expect.poll(() => new URL(page.url()).searchParams.has('inspector')).toBe(false);
+  });
+});

@@ -1,0 +1,233 @@
+import { expect, test, type Page } from '@playwright/test';
+
+// <fft-ocean> in a page: zero-configuration rendering, sizing, live attributes, pausing when it
+// cannot be seen, and the message a browser without WebGL 2 gets. Small boxes and N = 64 keep
+// SwiftShader fast.
+
+async function openPage(page: Page): Promise<{ errors: string[]; warnings: string[] }> {
+  const log = { errors: [] as string[], warnings: [] as string[] };
+  page.on('pageerror', (error) => log.errors.push(error.message));
+  page.on('console', (message) => {
+    if (message.type() === 'warning') log.warnings.push(message.text());
+  });
+  await page.goto('/tests/browser/pages/embed.html');
+  await expect(page).toHaveTitle('ready');
+  return log;
+}
+
+test('with no attributes and no size it fills its container at 16:9 and draws the sea', async ({ page }) => {
+  const { errors } = await openPage(page);
+  const result = await page.evaluate(async () => {
+    const el = window.embed.create({ resolution: '64' });
+    await window.embed.drawn(el, 3);
+    const box = el.getBoundingClientRect();
+    const canvas = el.shadowRoot!.querySelector('canvas')!;
+    return {
+      box: [box.width, box.height],
+      buffer: [canvas.width, canvas.height],
+      display: getComputedStyle(el).display,
+      pixels: window.embed.pixels(el),
+      path: el.ocean!.simulation.path,
+    };
+  });
+  expect(result.display).toBe('block');
+  expect(result.box).toEqual([480, 270]);
+  expect(result.buffer).toEqual([480, 270]); // device pixel ratio 1 here
+  expect(result.path).toBe('gpu-rgba32f');
+  // Not black, not blank: sky above, darker water below, waves in between.
+  expect(result.pixels.mean).toBeGreaterThan(40);
+  expect(result.pixels.spread).toBeGreaterThan(15);
+  const rows = 16;
+  const rowMean = (row: number) => result.pixels.samples.slice(row * rows, (row + 1) * rows).reduce((a, b) => a + b) / rows;
+  expect(rowMean(0), 'the bottom rows (water) are darker than the top (sky)').toBeLessThan(rowMean(rows - 1));
+  expect(errors).toEqual([]);
+});
+
+test('it follows its box: a page-given height, then a resize', async ({ page }) => {
+  await openPage(page);
+  const sizes = await page.evaluate(async () => {
+    const el = window.embed.create({ resolution: '64' });
+    el.style.height = '150px';
+    await window.embed.drawn(el);
+    await window.embed.frames(3);
+    const first = [el.canvas!.width, el.canvas!.height, el.camera!.aspect];
+    el.style.width = '240px';
+    el.style.height = '200px';
+    await window.embed.frames(4);
+    return [first, [el.canvas!.width, el.canvas!.height, el.camera!.aspect]];
+  });
+  expect(sizes[0]).toEqual([480, 150, 480 / 150]);
+  expect(sizes[1]).toEqual([240, 200, 240 / 200]);
+});
+
+test('attributes apply live; a bad value warns, naming the attribute, and keeps the last good one', async ({ page }) => {
+  const log = await openPage(page);
+  const result = await page.evaluate(async () => {
+    // Attributes present before the element is connected are used to create the ocean.
+    const el = window.embed.create({ resolution: '64', 'wind-speed': '6', seed: '9', 'sun-elevation': '10' });
+    await window.embed.drawn(el);
+    const ocean = el.ocean!;
+    const initial = { ...ocean.parameters, sun: ocean.sky.sunElevation };
+    el.setAttribute('wind-speed', '20');
+    el.setAttribute('wind-direction', '-45');
+    el.setAttribute('choppiness', '1.5');
+    el.setAttribute('sun-azimuth', '200');
+    el.setAttribute('shading-mode', 'height');
+    const changed = { ...ocean.parameters, sunAzimuth: ocean.sky.sunAzimuth, mode: ocean.shading.shadingMode };
+    el.setAttribute('wind-speed', 'fast');
+    el.setAttribute('resolution', '100');
+    el.setAttribute('sun-elevation', '95');
+    el.setAttribute('shading-mode', 'shiny');
+    el.setAttribute('time-scale', 'NaN');
+    const kept = { ...ocean.parameters, sun: ocean.sky.sunElevation, mode: ocean.shading.shadingMode };
+    el.removeAttribute('wind-speed'); // back to the default
+    const defaulted = ocean.parameters.windSpeed;
+    return { initial, changed, kept, defaulted, sameOcean: el.ocean === ocean };
+  });
+  expect(result.initial).toMatchObject({ resolution: 64, windSpeed: 6, seed: 9, sun: 10 });
+  expect(result.changed).toMatchObject({ windSpeed: 20, windDirection: -45, choppiness: 1.5, sunAzimuth: 200, mode: 'height' });
+  expect(result.kept).toMatchObject({ windSpeed: 20, resolution: 64, sun: 10, mode: 'height' });
+  expect(result.defaulted).toBe(12);
+  expect(result.sameOcean).toBe(true);
+  const warnings = log.warnings.join('\n');
+  for (const [name, value] of [
+    ['wind-speed', 'fast'],
+    ['resolution', '100'],
+    ['sun-elevation', '95'],
+    ['shading-mode', 'shiny'],
+    ['time-scale', 'NaN'],
+  ]) {
+    expect(warnings).toContain(`<fft-ocean>: ignoring ${name}="${value}"`);
+  }
+  expect(warnings).toContain('keeping 20'); // wind-speed kept its last good value
+  expect(warnings).toContain('a power of two from 16 to 1024');
+});
+
+test('paused freezes time and draws only on changes; the time can be set', async ({ page }) => {
+  await openPage(page);
+  const result = await page.evaluate(async () => {
+    const el = window.embed.create({ resolution: '64', paused: '' });
+    await window.embed.drawn(el);
+    await window.embed.frames(5);
+    const frames0 = el.frameCount;
+    const time0 = el.time;
+    await window.embed.frames(10);
+    const idle = el.frameCount - frames0;
+    el.time = 42.5;
+    el.setAttribute('wind-speed', '15');
+    await window.embed.frames(3);
+    const afterChange = el.frameCount - frames0;
+    el.removeAttribute('paused');
+    await window.embed.frames(10);
+    return { time0, idle, afterChange, timeAfterChange: el.time, running: el.frameCount - frames0 };
+  });
+  expect(result.time0).toBe(0);
+  expect(result.idle).toBe(0);
+  expect(result.afterChange).toBe(1); // two changes in one task: one frame
+  expect(result.timeAfterChange).toBeGreaterThan(42.5);
+  expect(result.running).toBeGreaterThan(4);
+});
+
+test('it draws only while on screen, and time does not jump when it comes back', async ({ page }) => {
+  await openPage(page);
+  const result = await page.evaluate(async () => {
+    const spacer = document.createElement('div');
+    spacer.style.height = '3000px';
+    document.body.prepend(spacer);
+    const el = window.embed.create({ resolution: '64' }); // below the fold
+    await new Promise((resolve) => setTimeout(resolve, 800));
+    const offscreenFrames = el.frameCount;
+    el.scrollIntoView();
+    await window.embed.drawn(el, 5);
+    window.scrollTo(0, 0);
+    await new Promise((resolve) => setTimeout(resolve, 300)); // the observer reports
+    const frames1 = el.frameCount;
+    const time1 = el.time;
+    await new Promise((resolve) => setTimeout(resolve, 1000));
+    const framesWhileAway = el.frameCount - frames1;
+    el.scrollIntoView();
+    await window.embed.drawn(el, el.frameCount + 3);
+    return { offscreenFrames, framesWhileAway, timeGained: el.time - time1 };
+  });
+  expect(result.offscreenFrames).toBe(0);
+  expect(result.framesWhileAway).toBe(0);
+  // Three or four frames at most 0.1 s each: not the second it was away.
+  expect(result.timeGained).toBeLessThan(0.5);
+});
+
+test('it stops while the tab is hidden and resumes without a jump in time', async ({ page }) => {
+  await openPage(page);
+  const result = await page.evaluate(async () => {
+    const el = window.embed.create({ resolution: '64' });
+    await window.embed.drawn(el, 3);
+    const setHidden = (hidden: boolean) => {
+      if (hidden) Object.defineProperty(document, 'visibilityState', { configurable: true, get: () => 'hidden' });
+      else delete (document as { visibilityState?: unknown }).visibilityState;
+      document.dispatchEvent(new Event('visibilitychange'));
+    };
+    setHidden(true);
+    await window.embed.frames(2);
+    const frames1 = el.frameCount;
+    const time1 = el.time;
+    const activeWhileHidden = el.active;
+    await new Promise((resolve) => setTimeout(resolve, 1200));
+    const framesWhileHidden = el.frameCount - frames1;
+    setHidden(false);
+    await window.embed.drawn(el, el.frameCount + 3);
+    return { activeWhileHidden, framesWhileHidden, timeGained: el.time - time1 };
+  });
+  expect(result.activeWhileHidden).toBe(false);
+  expect(result.framesWhileHidden).toBe(0);
+  expect(result.timeGained).toBeLessThan(0.5);
+});
+
+test('defining it twice is harmless', async ({ page }) => {
+  const { errors } = await openPage(page);
+  const result = await page.evaluate(() => {
+    const again = window.embed.defineFftOceanElement();
+    return { same: again === customElements.get('fft-ocean'), isClass: again === window.embed.FftOceanElement };
+  });
+  expect(result).toEqual({ same: true, isClass: true });
+  expect(errors).toEqual([]);
+});
+
+test('without WebGL 2 the box shows a message instead of staying blank', async ({ page }) => {
+  // The browser has no WebGL 2: getContext('webgl2') returns null, as on old devices or with
+  // hardware acceleration off. (Only the context's absence is simulated; nothing else is.)
+  await page.addInitScript(() => {
+    const original = HTMLCanvasElement.prototype.getContext;
+    HTMLCanvasElement.prototype.getContext = function (this: HTMLCanvasElement, type: string, ...rest: unknown[]) {
+      if (type === 'webgl2') return null;
+      return (original as (...args: unknown[]) => unknown).call(this, type, ...rest);
+    } as typeof original;
+  });
+  const errors: string[] = [];
+  page.on('pageerror', (error) => errors.push(error.message));
+  await page.goto('/tests/browser/pages/embed.html');
+  await expect(page).toHaveTitle('ready');
+  const result = await page.evaluate(async () => {
+    let event: string | null = null;
+    const el = document.createElement('fft-ocean');
+    el.addEventListener('fft-ocean-error', (e) => (event = (e as CustomEvent).detail.message));
+    document.querySelector('#box')!.append(el);
+    await window.embed.frames(3);
+    const message = el.shadowRoot!.querySelector('[part="message"]') as HTMLElement | null;
+    const box = el.getBoundingClientRect();
+    return {
+      text: message?.textContent ?? null,
+      visible: message ? message.getBoundingClientRect().height > 100 : false,
+      canvas: el.shadowRoot!.querySelector('canvas') !== null,
+      box: [box.width, box.height],
+      ocean: el.ocean,
+      event,
+    };
+  });
+  expect(result.text).toContain('needs WebGL 2');
+  expect(result.visible).toBe(true);
+  expect(result.canvas).toBe(false);
+  expect(result.box).toEqual([480, 270]);
+  expect(result.ocean).toBeNull();
+  expect(result.event).toContain('WebGL 2');
+  expect(errors).toEqual([]); // a message, not an uncaught exception
+  await expect(page.getByText('This ocean needs WebGL 2')).toBeVisible(); // what a person sees
+});

@@ -1,0 +1,192 @@
+import { expect, test, type Page } from '@playwright/test';
+import { spawnSync } from 'node:child_process';
+import { existsSync, readdirSync, readFileSync, statSync } from 'node:fs';
+import { join, resolve } from 'node:path';
+import type { DataTexture, Mesh, PerspectiveCamera, Scene, WebGLRenderer } from 'three';
+import type { FftOceanElement } from '../../src/embed/fftOceanElement';
+import type { Ocean } from '../../src/ocean';
+import { serveDirectory } from '../../scripts/static-server.mjs';
+
+// The example pages (served by Vite, as in the app build) and the built library (dist/lib)
+// loaded by a plain page through an import map.
+
+declare global {
+  interface Window {
+    example: { renderer: WebGLRenderer; scene: Scene; camera: PerspectiveCamera; ocean: Ocean; crate: Mesh; frames: () => number };
+    lib: { Ocean: typeof Ocean; FftOceanElement: typeof FftOceanElement; WebGLRenderer: typeof WebGLRenderer; defined: boolean };
+  }
+}
+
+function collectErrors(page: Page): string[] {
+  const errors: string[] = [];
+  page.on('pageerror', (error) => errors.push(error.message));
+  page.on('console', (message) => {
+    // Resource 404s (e.g. a favicon) are not the page's fault; everything else is.
+    if (message.type() === 'error' && !message.text().startsWith('Failed to load resource')) errors.push(message.text());
+  });
+  return errors;
+}
+
+test('element.html: three <fft-ocean>s among page content, sized by the page, all drawing', async ({ page }) => {
+  const errors = collectErrors(page);
+  await page.setViewportSize({ width: 1000, height: 1400 }); // all three on screen
+  await page.goto('/examples/element.html');
+  const result = await page.evaluate(async () => {
+    await customElements.whenDefined('fft-ocean');
+    const elements = [...document.querySelectorAll('fft-ocean')];
+    const start = performance.now();
+    while (elements.some((el) => el.frameCount < 2) && performance.now() - start < 60_000) {
+      await new Promise((resolve) => requestAnimationFrame(resolve));
+    }
+    const main = document.querySelector('main')!;
+    const style = getComputedStyle(main);
+    const contentRight = main.getBoundingClientRect().right - parseFloat(style.paddingRight);
+    return {
+      contentWidth: main.clientWidth - parseFloat(style.paddingLeft) - parseFloat(style.paddingRight),
+      contentRight,
+      elements: elements.map((el) => {
+        const box = el.getBoundingClientRect();
+        el.renderFrame();
+        const gl = el.renderer!.getContext();
+        const pixel = new Uint8Array(4);
+        // A pixel of sky (near the top) and one of sea (near the bottom).
+        gl.readPixels(gl.drawingBufferWidth >> 1, gl.drawingBufferHeight - 5, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+        const sky = [...pixel];
+        gl.readPixels(gl.drawingBufferWidth >> 1, 5, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+        return { id: el.id, width: box.width, height: box.height, right: box.right, frames: el.frameCount, wind: el.ocean!.parameters.windSpeed, sky, sea: [...pixel] };
+      }),
+    };
+  });
+  const [hero, calm, storm] = result.elements;
+  expect(result.elements.map((el) => el.id)).toEqual(['hero', 'calm', 'storm']);
+  // No size given: the column's width at 16:9.
+  expect(hero.width).toBeCloseTo(result.contentWidth, 0);
+  expect(hero.height).toBeCloseTo((result.contentWidth * 9) / 16, 0);
+  // 220 px high side by side, inside the column.
+  for (const el of [calm, storm]) {
+    expect(el.height).toBe(220);
+    expect(el.width).toBeLessThan(result.contentWidth / 2);
+    expect(el.right).toBeLessThanOrEqual(result.contentRight + 0.5);
+  }
+  expect([hero.wind, calm.wind, storm.wind]).toEqual([12, 4, 26]);
+  for (const el of result.elements) {
+    expect(el.frames, el.id).toBeGreaterThanOrEqual(2);
+    expect(Math.max(...el.sky.slice(0, 3)), `${el.id} sky`).toBeGreaterThan(120); // a bright sky, not a black box
+    expect(Math.min(...el.sea.slice(0, 3)), `${el.id} sea`).toBeLessThan(Math.max(...el.sky.slice(0, 3)));
+  }
+  expect(errors).toEqual([]);
+});
+
+test('three-scene.html: the ocean in a plain three.js scene, a crate riding heightAt', async ({ page }) => {
+  const errors = collectErrors(page);
+  await page.setViewportSize({ width: 480, height: 270 });
+  await page.goto('/examples/three-scene.html');
+  await page.waitForFunction(() => window.example?.frames() > 2, null, { timeout: 60_000 });
+  const result = await page.evaluate(async () => {
+    const { ocean, crate, scene, renderer, camera } = window.example;
+    const samples: { t: number; y: number; expected: number; tilt: number }[] = [];
+    for (let i = 0; i < 2; i++) {
+      await new Promise((resolve) => setTimeout(resolve, 700));
+      await new Promise((resolve) => requestAnimationFrame(resolve));
+      // The crate was placed in this frame's loop, at the ocean's time of this frame.
+      samples.push({ t: ocean.time, y: crate.position.y, expected: ocean.heightAt(crate.position.x, crate.position.z), tilt: 2 * Math.acos(Math.min(1, Math.abs(crate.quaternion.w))) });
+    }
+    renderer.render(scene, camera);
+    const gl = renderer.getContext();
+    const pixel = new Uint8Array(4);
+    gl.readPixels(gl.drawingBufferWidth >> 1, gl.drawingBufferHeight - 3, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+    return { samples, background: scene.background === ocean.background, sky: [...pixel] };
+  });
+  for (const { y, expected, tilt } of result.samples) {
+    expect(y).toBeCloseTo(expected, 5);
+    expect(tilt).toBeGreaterThan(0); // tilted with the slope
+    expect(tilt).toBeLessThan(0.6);
+  }
+  const [a, b] = result.samples;
+  expect(b.t).toBeGreaterThan(a.t);
+  expect(Math.abs(b.y - a.y)).toBeGreaterThan(1e-3); // it bobs
+  expect(result.background).toBe(true);
+  expect(Math.max(...result.sky.slice(0, 3))).toBeGreaterThan(120);
+  expect(errors).toEqual([]);
+});
+
+test.describe('the built library (dist/lib) in a page without a bundler', () => {
+  const root = resolve(import.meta.dirname, '../..');
+  const bundle = join(root, 'dist/lib/three-fft-ocean.js');
+
+  /** Newest modification time of the files the library is built from. */
+  function newestSource(): number {
+    let newest = 0;
+    const visit = (path: string) => {
+      if (!existsSync(path)) return;
+      const info = statSync(path);
+      if (info.isDirectory()) for (const entry of readdirSync(path)) visit(join(path, entry));
+      else newest = Math.max(newest, info.mtimeMs);
+    };
+    for (const path of ['src', 'shaders', 'vite.config.ts', 'tsconfig.build.json', 'package.json']) visit(join(root, path));
+    return newest;
+  }
+
+  test.beforeAll(() => {
+    // This part tests build output, so it builds the library first when it is missing or stale
+    // (npm run build:lib: vite build --mode lib and tsc declarations, a few seconds).
+    if (existsSync(bundle) && statSync(bundle).mtimeMs >= newestSource()) return;
+    const result = spawnSync('npm', ['run', 'build:lib'], { cwd: root, encoding: 'utf8' });
+    if (result.status !== 0) throw new Error(`npm run build:lib failed:\n${result.stdout}\n${result.stderr}`);
+  });
+
+  test('the bundle keeps three.js external and carries the shaders, the worker and the types', () => {
+    const files = readdirSync(join(root, 'dist/lib')).filter((name) => name.endsWith('.js'));
+    const code = files.map((name) => readFileSync(join(root, 'dist/lib', name), 'utf8')).join('\n');
+    expect(code).toMatch(/from "three"/);
+    expect(code).not.toContain('REVISION = '); // three.js itself is not bundled
+    expect(code).toContain('void main'); // GLSL sources as strings
+    expect(code).toMatch(/new URL\("assets\/waveFieldWorker-[\w-]+\.js", import\.meta\.url\)/); // relative, not site-root
+    const pkg = JSON.parse(readFileSync(join(root, 'package.json'), 'utf8'));
+    for (const entry of Object.values(pkg.exports as Record<string, string | Record<string, string>>)) {
+      for (const file of typeof entry === 'string' ? [entry] : Object.values(entry)) expect(existsSync(join(root, file)), file).toBe(true);
+    }
+    expect(pkg.peerDependencies.three).toBeTruthy();
+  });
+
+  test('imported through an import map, <fft-ocean> and Ocean render, and the JS worker path runs', async ({ page }) => {
+    const server = await serveDirectory(root);
+    try {
+      const errors = collectErrors(page);
+      await page.goto(`${server.url}/tests/browser/pages/lib-import-map.html`);
+      await expect(page).toHaveTitle('ready');
+      const result = await page.evaluate(async () => {
+        const el = document.querySelector('fft-ocean')!;
+        const start = performance.now();
+        while (el.frameCount < 2 && performance.now() - start < 30_000) await new Promise((resolve) => requestAnimationFrame(resolve));
+        el.renderFrame();
+        const gl = el.renderer!.getContext();
+        const pixel = new Uint8Array(4);
+        gl.readPixels(gl.drawingBufferWidth >> 1, gl.drawingBufferHeight - 5, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+
+        // The JS path in its Web Worker, loaded from dist/lib/assets next to the bundle.
+        const renderer = new window.lib.WebGLRenderer();
+        const ocean = new window.lib.Ocean(renderer, { resolution: 32, path: 'js', worker: true });
+        const field = () => (ocean.simulation.uniforms.tDisplacement.value as DataTexture).image.data as Float32Array;
+        let workerResult = false;
+        for (let i = 0; i < 100 && !workerResult; i++) {
+          ocean.update(3 + i * 0.01);
+          await new Promise((resolve) => setTimeout(resolve, 50));
+          workerResult = field().some((value) => value !== 0);
+        }
+        const path = ocean.simulation.path;
+        ocean.dispose();
+        renderer.dispose();
+        return { defined: window.lib.defined, frames: el.frameCount, sky: [...pixel], path, workerResult };
+      });
+      expect(result.defined).toBe(true);
+      expect(result.frames).toBeGreaterThanOrEqual(2);
+      expect(Math.max(...result.sky.slice(0, 3))).toBeGreaterThan(120);
+      expect(result.path).toBe('js-worker');
+      expect(result.workerResult).toBe(true);
+      expect(errors).toEqual([]);
+    } finally {
+      await server.close();
+    }
+  });
+});

@@ -1,0 +1,185 @@
+import { describe, expect, it } from 'vitest';
+import { DEFAULT_PARAMETERS } from '../../src/sim/parameters';
+import {
+  assignState,
+  DEFAULT_STATE,
+  defaultState,
+  parseState,
+  parseValue,
+  roundTime,
+  serializeState,
+  urlRounded,
+  URL_KEYS,
+  type AppState,
+} from '../../src/app/urlState';
+
+function changed(): AppState {
+  return {
+    ...defaultState(),
+    windSpeed: 7.5,
+    windDirection: -45,
+    amplitude: 9e-7,
+    patchSize: 200,
+    resolution: 128,
+    choppiness: 1.25,
+    smallWaveCutoff: 0.05,
+    depth: 35,
+    repeatPeriod: 120,
+    seed: 4294967295,
+    sunElevation: 12.5,
+    sunAzimuth: -100,
+    ior: 1.34,
+    causticPower: 64,
+    causticColour: [0.2, 0.25, 0.3],
+    absorption: [0.5, 0.1, 0.05],
+    scatterColour: [0, 0.04, 0.07],
+    mode: 'height',
+    wireframe: true,
+    inspector: true,
+    path: 'js',
+    timeScale: 0.5,
+    paused: true,
+    t: 12.345,
+    cam: [100.5, 7.25, -30.125, 170, -20.5],
+  };
+}
+
+describe('serializeState / parseState', () => {
+  it('round-trips every value', () => {
+    const state = changed();
+    const query = serializeState(state);
+    const { state: parsed, warnings } = parseState(query);
+    expect(warnings).toEqual([]);
+    expect(parsed).toEqual(state);
+    expect(serializeState(parsed)).toBe(query);
+  });
+
+  it('names every panel parameter and the app values in the query', () => {
+    const query = new URLSearchParams(serializeState(changed()));
+    expect([...query.keys()]).toEqual(URL_KEYS);
+    expect(query.get('depth')).toBe('35');
+    expect(query.get('mode')).toBe('height');
+    expect(query.get('paused')).toBe('1');
+    expect(query.get('cam')).toBe('100.5,7.25,-30.125,170,-20.5');
+    expect(query.get('absorption')).toBe('0.5,0.1,0.05');
+  });
+
+  it('writes only t and cam for the default state, and reads the defaults back', () => {
+    const query = serializeState(DEFAULT_STATE);
+    expect(query).toBe('t=0&cam=0,12,0,-53.13,-6.84');
+    expect(parseState(query)).toEqual({ state: defaultState(), warnings: [] });
+    expect(parseState('')).toEqual({ state: defaultState(), warnings: [] });
+    expect(parseState('?')).toEqual({ state: defaultState(), warnings: [] });
+  });
+
+  it('writes deep water as depth=deep and reads deep / Infinity', () => {
+    expect(serializeState({ ...defaultState(), depth: 35 })).toContain('depth=35');
+    expect(parseState('depth=deep').state.depth).toBe(Infinity);
+    expect(parseState('depth=Infinity').state.depth).toBe(Infinity);
+    expect(parseState('depth=12.5').state.depth).toBe(12.5);
+  });
+
+  it('reads flags as 1/0 and true/false', () => {
+    expect(parseState('paused=1&wireframe=true&inspector=0').state).toMatchObject({ paused: true, wireframe: true, inspector: false });
+  });
+
+  it('clamps the camera height and pitch the way the controls do', () => {
+    expect(parseState('cam=1,-5,2,370,120').state.cam).toEqual([1, 1, 2, 10, 89]);
+  });
+
+  it('stores t to the millisecond, so roundTime(t) round-trips exactly', () => {
+    const t = roundTime(1234.56789);
+    expect(t).toBe(1234.568);
+    expect(parseState(serializeState({ ...defaultState(), t })).state.t).toBe(t);
+  });
+});
+
+describe('invalid values', () => {
+  const cases: [string, string][] = [
+    ['windSpeed', 'abc'],
+    ['windSpeed', '150'],
+    ['windSpeed', ''],
+    ['resolution', '100'],
+    ['resolution', '2048'],
+    ['patchSize', '-3'],
+    ['amplitude', '0x10'],
+    ['depth', '0'],
+    ['depth', 'shallow'],
+    ['seed', '1.5'],
+    ['sunElevation', '100'],
+    ['ior', '0.9'],
+    ['causticPower', '0'],
+    ['causticColour', '1,2'],
+    ['absorption', '1,-1,1'],
+    ['scatterColour', 'red'],
+    ['mode', 'shiny'],
+    ['path', 'webgpu'],
+    ['wireframe', 'maybe'],
+    ['timeScale', '-1'],
+    ['timeScale', '11'],
+    ['paused', '2'],
+    ['t', 'NaN'],
+    ['cam', '1,2,3'],
+    ['cam', '1,2,3,4,x'],
+  ];
+  for (const [name, value] of cases) {
+    it(`${name}=${value} warns naming ${name} and keeps the default`, () => {
+      const { state, warnings } = parseState(`${name}=${encodeURIComponent(value)}&windDirection=10`);
+      expect(warnings).toHaveLength(1);
+      expect(warnings[0].parameter).toBe(name);
+      expect(warnings[0].message.startsWith(name)).toBe(true);
+      expect(warnings[0].message).toContain('default');
+      expect(state).toEqual({ ...defaultState(), windDirection: 10 });
+    });
+  }
+
+  it('keeps the good values next to a bad one', () => {
+    const { state, warnings } = parseState('windSpeed=abc&seed=9&mode=height');
+    expect(warnings.map((w) => w.parameter)).toEqual(['windSpeed']);
+    expect(state.windSpeed).toBe(DEFAULT_PARAMETERS.windSpeed);
+    expect(state.seed).toBe(9);
+    expect(state.mode).toBe('height');
+  });
+
+  it('warns about unknown parameters and ignores them', () => {
+    const { state, warnings } = parseState('windspeed=5');
+    expect(warnings).toEqual([{ parameter: 'windspeed', message: expect.stringContaining('unknown') }]);
+    expect(state).toEqual(defaultState());
+  });
+
+  it('resets the parameter a combination check names (repeatPeriod too long for N and patch size)', () => {
+    // N = 1024 on a 10 m patch repeats at most every ~6160 s; each value alone is fine.
+    const { state, warnings } = parseState('resolution=1024&patchSize=10&repeatPeriod=9000');
+    expect(warnings.map((w) => w.parameter)).toEqual(['repeatPeriod']);
+    expect(state).toMatchObject({ resolution: 1024, patchSize: 10, repeatPeriod: DEFAULT_PARAMETERS.repeatPeriod });
+  });
+
+  it('parseValue explains what is allowed', () => {
+    expect(parseValue('resolution', '100')).toEqual({ error: expect.stringMatching(/^resolution must be a power of two/) });
+    expect(parseValue('mode', 'x')).toEqual({ error: expect.stringContaining('full, fresnel') });
+  });
+});
+
+describe('helpers', () => {
+  it('urlRounded gives the value a reload would give', () => {
+    expect(urlRounded('windSpeed', 0.1 + 0.2)).toBe(0.3);
+    expect(urlRounded('cam', [1.23456, 2, 3, 4.00049, 5])).toEqual([1.235, 2, 3, 4, 5]);
+    expect(urlRounded('mode', 'height')).toBe('height');
+  });
+
+  it('assignState writes arrays in place', () => {
+    const state = defaultState();
+    const absorption = state.absorption;
+    assignState(state, { absorption: [1, 2, 3], windSpeed: 5 });
+    expect(state.absorption).toBe(absorption);
+    expect(absorption).toEqual([1, 2, 3]);
+    expect(state.windSpeed).toBe(5);
+  });
+
+  it('defaultState is a fresh copy', () => {
+    const a = defaultState();
+    a.absorption[0] = 99;
+    expect(DEFAULT_STATE.absorption[0]).toBe(0.45);
+    expect(defaultState().absorption[0]).toBe(0.45);
+  });
+});
