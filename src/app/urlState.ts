@@ -13,6 +13,7 @@
  *   wireframe  1/0        inspector  1/0        path  auto/gpu/js
  *   timeScale  ≥ 0        paused     1/0        t     simulation time in seconds
  *   cam        x,y,z,yawDeg,pitchDeg (metres, degrees; see flyControls.ts)
+ *   skybox     "generated" (the analytic sky), or the folder URL of six faces px.png … nz.png
  *
  * serializeState writes t and cam always and every other value only where it differs from its
  * default, in a fixed order. parseState reads any subset: a missing value takes its default, an
@@ -44,6 +45,8 @@ export interface AppState extends SimulationParameters {
   t: number;
   /** Camera x, y, z (metres), yaw and pitch (degrees). */
   cam: [number, number, number, number, number];
+  /** 'generated', or the folder URL of a six-face skybox (SkyEnvironment.loadFaces). */
+  skybox: string;
 }
 
 /** Shading and sun defaults are the library's (OceanMaterial, SkyEnvironment). */
@@ -64,6 +67,7 @@ export const DEFAULT_STATE: Readonly<AppState> = Object.freeze({
   paused: false,
   t: 0,
   cam: [0, 12, 0, -53.13, -6.84] as AppState['cam'],
+  skybox: 'generated',
 });
 
 export const MAX_TIME_SCALE = 10;
@@ -125,6 +129,7 @@ export const URL_KEYS: readonly (keyof AppState)[] = [
   'paused',
   't',
   'cam',
+  'skybox',
 ];
 
 /** Keys written even when they equal their default. */
@@ -281,6 +286,8 @@ export function parseValue<K extends keyof AppState>(key: K, text: string): { va
       const v = parseNumber(text);
       return Number.isFinite(v) ? ok(v) : bad('a finite number of seconds');
     }
+    case 'skybox':
+      return text.trim() === '' ? bad('"generated" or the folder URL of six face images') : ok(text.trim());
     case 'cam': {
       const v = parseList(text, 5);
       if (!v) return bad('five numbers x,y,z,yawDeg,pitchDeg');

@@ -371,3 +371,37 @@ test.describe('the app', () => {
     await expect.poll(() => new URL(page.url()).searchParams.has('inspector')).toBe(false);
   });
 });
+
+test.describe('failures the app explains', () => {
+  test('a skybox that fails to load shows a warning naming it, and the generated sky stays', async ({ page }) => {
+    await page.goto('/?skybox=/no-such-skybox/');
+    await page.waitForFunction(() => window.oceanApp !== undefined);
+    await expect(page.locator('.notice.warning', { hasText: 'skybox' })).toBeVisible({ timeout: 30_000 });
+    await expect(page.locator('.notice.warning', { hasText: 'skybox' })).toContainText('/no-such-skybox/px.png');
+    const generated = await page.evaluate(() => !window.oceanApp.ocean.sky.usingFaces);
+    expect(generated).toBe(true);
+  });
+
+  test('the shipped skybox loads from the URL', async ({ page }) => {
+    await page.goto('/?skybox=/skybox/clear-afternoon/');
+    await page.waitForFunction(() => window.oceanApp !== undefined);
+    await expect.poll(() => page.evaluate(() => window.oceanApp.ocean.sky.usingFaces), { timeout: 30_000 }).toBe(true);
+    await expect(page.locator('.notice.warning', { hasText: 'skybox' })).toHaveCount(0);
+  });
+
+  test('without WebGL2 the page explains instead of showing a blank canvas', async ({ page }) => {
+    await page.addInitScript(() => {
+      const original = HTMLCanvasElement.prototype.getContext;
+      HTMLCanvasElement.prototype.getContext = function (this: HTMLCanvasElement, type: string, ...rest: unknown[]) {
+        if (type === 'webgl2') return null;
+        return (original as (...args: unknown[]) => unknown).call(this, type, ...rest);
+      } as typeof original;
+    });
+    const errors: string[] = [];
+    page.on('pageerror', (error) => errors.push(error.message));
+    await page.goto('/');
+    await expect(page.locator('.no-webgl')).toContainText('needs WebGL2');
+    await expect(page.locator('canvas')).toHaveCount(0);
+    expect(errors).toEqual([]);
+  });
+});

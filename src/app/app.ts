@@ -1,0 +1,255 @@
+/**
+ * The app (main.ts starts it once WebGL2 is known to work): the ocean in a full-window canvas with
+ * fly controls (flyControls.ts), a panel for every parameter (panel.ts), the whole state in the
+ * URL (urlState.ts), and the FFT path, frame rate, CPU timings and warnings on screen
+ * (statusOverlay.ts). ?inspector=1 (or the panel) adds the
+ * inspector's tiles along the bottom.
+ *
+ * Time: the simulation advances by min(real frame time, 0.1 s) × time scale per frame, so a
+ * hidden tab or a stalled frame never makes the sea jump; paused keeps t fixed.
+ */
+import { ACESFilmicToneMapping, PerspectiveCamera, Scene, WebGLRenderer } from 'three';
+import { Ocean } from '../ocean';
+import { skyboxFaceUrls } from '../render/skyEnvironment';
+import { CONTROLS_HELP, FlyControls } from './flyControls';
+import { Inspector } from './inspector';
+import { Panel } from './panel';
+import { PATH_LABELS, StatusOverlay, TimingAverager } from './statusOverlay';
+import { parseState, roundTime, serializeState, simulationParameters, type AppState } from './urlState';
+
+/** Longest step of simulation time per frame, seconds (before the time scale). */
+const MAX_SIMULATION_STEP = 0.1;
+const INSPECTOR_TILES = 9;
+
+const container = document.querySelector<HTMLElement>('#app')!;
+const overlay = new StatusOverlay(document.querySelector<HTMLElement>('#status')!, CONTROLS_HELP);
+
+const { state, warnings } = parseState(location.search);
+for (const { parameter, message } of warnings) overlay.warn(parameter, message);
+
+const renderer = new WebGLRenderer({ antialias: true });
+renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
+renderer.toneMapping = ACESFilmicToneMapping;
+container.appendChild(renderer.domElement);
+
+const scene = new Scene();
+const camera = new PerspectiveCamera(55, 1, 0.5, 1e5);
+const ocean = new Ocean(renderer, {
+  ...simulationParameters(state),
+  path: state.path,
+  sunElevation: state.sunElevation,
+  sunAzimuth: state.sunAzimuth,
+  ior: state.ior,
+  absorption: state.absorption,
+  scatterColour: state.scatterColour,
+  causticPower: state.causticPower,
+  causticColour: state.causticColour,
+  shadingMode: state.mode,
+});
+ocean.surface.material.wireframe = state.wireframe;
+scene.add(ocean);
+scene.background = ocean.background;
+if (state.skybox !== 'generated') {
+  const base = state.skybox.endsWith('/') ? state.skybox : `${state.skybox}/`;
+  // A face set that fails to load (404, CORS, not an image) leaves the generated sky in use.
+  ocean.sky.loadFaces(skyboxFaceUrls(base)).then(
+    () => (scene.background = ocean.background),
+    (error: Error) => overlay.warn('skybox', `skybox: ${error.message}`),
+  );
+}
+
+const [x, y, z, yaw, pitch] = state.cam;
+const controls = new FlyControls(camera, renderer.domElement, { position: [x, y, z], yaw, pitch });
+if (state.paused) state.t = roundTime(state.t);
+
+let inspector: Inspector | null = null;
+function showInspector(show: boolean): void {
+  if (show && !inspector) inspector = new Inspector(ocean, container);
+  if (!show && inspector) {
+    inspector.dispose();
+    inspector = null;
+  }
+  fitPanel();
+}
+
+// --- the URL ---------------------------------------------------------------------------------
+
+let urlTimer: ReturnType<typeof setTimeout> | undefined;
+let lastUrlWrite = 0;
+/** Writes the state into the address bar now (history.replaceState: no new history entries). */
+function writeUrl(): void {
+  clearTimeout(urlTimer);
+  urlTimer = undefined;
+  lastUrlWrite = performance.now();
+  const query = serializeState(state);
+  if (location.search.slice(1) !== query) history.replaceState(history.state, '', `${location.pathname}?${query}${location.hash}`);
+}
+/** Writes the URL after `delayMs` without further changes (panel edits, camera moves). */
+function scheduleUrl(delayMs: number): void {
+  clearTimeout(urlTimer);
+  urlTimer = setTimeout(writeUrl, delayMs);
+}
+
+controls.onChange = () => {
+  const { position, yaw, pitch } = controls.pose;
+  state.cam = [...position, yaw, pitch];
+  scheduleUrl(300); // once the camera stops moving
+};
+
+// --- the panel -------------------------------------------------------------------------------
+
+/** Applies changes to the scene; throws (and changes nothing) when the ocean rejects a value. */
+function apply(changes: Partial<AppState>): void {
+  const has = (key: keyof AppState) => Object.hasOwn(changes, key);
+  const simulation = Object.fromEntries(Object.entries(changes).filter(([key]) => key in ocean.parameters));
+  if (Object.keys(simulation).length > 0) ocean.setParameters(simulation);
+  const shading = {
+    ior: changes.ior,
+    absorption: changes.absorption,
+    scatterColour: changes.scatterColour,
+    causticPower: changes.causticPower,
+    causticColour: changes.causticColour,
+    shadingMode: changes.mode,
+  };
+  if (Object.values(shading).some((value) => value !== undefined)) ocean.setShading(shading);
+  if (has('sunElevation') || has('sunAzimuth')) {
+    ocean.setSun(changes.sunElevation ?? state.sunElevation, changes.sunAzimuth ?? state.sunAzimuth);
+  }
+  if (changes.path !== undefined) ocean.simulation.pathPreference = changes.path;
+  if (changes.wireframe !== undefined) ocean.surface.material.wireframe = changes.wireframe;
+  if (changes.inspector !== undefined) showInspector(changes.inspector);
+  if (changes.paused) changes.t = roundTime(state.t); // a paused t is exactly what the URL holds
+}
+
+async function copyLink(): Promise<void> {
+  writeUrl();
+  const url = location.href;
+  let copied = false;
+  try {
+    if (!navigator.clipboard) throw new Error('no clipboard');
+    // Headless or unfocused pages may never settle the promise: give up after a second.
+    await Promise.race([
+      navigator.clipboard.writeText(url),
+      new Promise((_resolve, reject) => setTimeout(() => reject(new Error('clipboard timeout')), 1000)),
+    ]);
+    copied = true;
+  } catch {
+    copied = false;
+  }
+  overlay.showLink(url, copied);
+}
+
+// On a narrow screen the panel starts closed (its title bar opens it).
+const panel = new Panel(state, window.innerWidth <= 700, {
+  apply,
+  changed: () => scheduleUrl(150),
+  warn: (parameter, message) => overlay.warn(parameter, message),
+  clearWarning: (parameter) => overlay.clearWarning(parameter),
+  copyLink: () => void copyLink(),
+  runningPath: () => PATH_LABELS[ocean.simulation.path] ?? ocean.simulation.path,
+});
+
+/** Keeps the panel above the inspector's tiles. */
+function fitPanel(): void {
+  const tiles = inspector ? Inspector.tileSize(window.innerWidth, INSPECTOR_TILES) : 0;
+  panel.gui.domElement.style.maxHeight = `calc(100% - ${tiles}px)`;
+  document.documentElement.style.setProperty('--inspector-height', `${tiles}px`);
+}
+
+showInspector(state.inspector);
+
+// --- size and frames -------------------------------------------------------------------------
+
+function resize(): void {
+  renderer.setSize(window.innerWidth, window.innerHeight);
+  camera.aspect = window.innerWidth / window.innerHeight;
+  camera.updateProjectionMatrix();
+  fitPanel();
+}
+window.addEventListener('resize', resize);
+resize();
+
+let pendingCaptures: ((pixels: { width: number; height: number; data: Uint8Array }) => void)[] = [];
+/** The canvas's pixels right after the next frame's render (bottom row first, RGBA). */
+function capturePixels(): Promise<{ width: number; height: number; data: Uint8Array }> {
+  return new Promise((resolve) => pendingCaptures.push(resolve));
+}
+function readCanvas(): { width: number; height: number; data: Uint8Array } {
+  const gl = renderer.getContext();
+  renderer.setRenderTarget(null);
+  const width = gl.drawingBufferWidth;
+  const height = gl.drawingBufferHeight;
+  const data = new Uint8Array(width * height * 4);
+  gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, data);
+  return { width, height, data };
+}
+
+const averager = new TimingAverager(500);
+let lastFrame: number | null = null;
+let lastStatus = 0;
+document.addEventListener('visibilitychange', () => {
+  lastFrame = null; // the first frame back advances nothing
+});
+
+renderer.setAnimationLoop((now: number) => {
+  const dt = lastFrame === null ? 0 : Math.max(0, (now - lastFrame) / 1000);
+  lastFrame = now;
+  if (!state.paused) state.t += Math.min(dt, MAX_SIMULATION_STEP) * state.timeScale;
+  controls.update(dt);
+
+  const start = performance.now();
+  ocean.update(state.t);
+  const simulated = performance.now();
+  camera.far = Math.max(1e4, 1.5 * ocean.horizonDistance);
+  camera.updateProjectionMatrix();
+  renderer.render(scene, camera);
+  inspector?.render(renderer);
+  const rendered = performance.now();
+  if (pendingCaptures.length > 0) {
+    const pixels = readCanvas();
+    for (const resolve of pendingCaptures) resolve(pixels);
+    pendingCaptures = [];
+  }
+
+  averager.add(rendered, simulated - start, rendered - simulated);
+  if (rendered - lastStatus > 250) {
+    overlay.show(ocean.simulation.path, averager.latest, state.t, state.paused, controls.speed);
+    lastStatus = rendered;
+  }
+  panel.update();
+  // While time runs, t in the URL is refreshed now and then so a reload comes back near now.
+  if (!state.paused && urlTimer === undefined && rendered - lastUrlWrite > 1000) writeUrl();
+});
+
+writeUrl();
+
+// For the console and the browser tests: the live objects of this page.
+const oceanApp = {
+  renderer,
+  scene,
+  camera,
+  ocean,
+  controls,
+  state,
+  panel,
+  overlay,
+  get inspector(): Inspector | null {
+    return inspector;
+  },
+  /** Sets state values as the panel would (warnings included); false if the ocean rejected them. */
+  set(changes: Partial<AppState>): boolean {
+    let ok = true;
+    for (const [key, value] of Object.entries(changes)) ok = panel.change(key as keyof AppState, value) && ok;
+    return ok;
+  },
+  writeUrl,
+  capturePixels,
+};
+Object.assign(window, { oceanApp });
+
+export type OceanApp = typeof oceanApp;
+declare global {
+  interface Window {
+    oceanApp: OceanApp;
+  }
+}
