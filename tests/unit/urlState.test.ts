@@ -41,6 +41,7 @@ function changed(): AppState {
     paused: true,
     t: 12.345,
     cam: [100.5, 7.25, -30.125, 170, -20.5],
+    skybox: '/skybox/clear-afternoon/',
   };
 }
 
