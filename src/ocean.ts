@@ -120,22 +120,38 @@ export class Ocean extends Object3D {
 
   /**
    * Height of the water surface at the world point (x, z) at the current time: the height of the
-   * surface point that the choppy displacement moves onto (x, z), found by fixed-point iteration
-   * x0 ← (x, z) − D(x0), which converges wherever the surface does not fold (Jacobian > 0).
-   * Computes the fields on the CPU once per time it is asked for (a few ms at N = 256).
+   * surface point x0 that the choppy displacement moves onto (x, z), x0 + D(x0) = (x, z), found by
+   * Newton's method with the Jacobian of the fields (waveFieldLayout.ts). Where the surface folds
+   * over itself (Jacobian ≤ 0, breaking crests) several points land on (x, z) and the one nearest
+   * the start is returned. Computes the fields on the CPU once per time asked (a few ms at N = 256).
    */
   heightAt(x: number, z: number): number {
     if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError('heightAt(x, z)', `${x}, ${z}`, 'finite coordinates');
     const { fields, spectrum } = this.fieldsNow();
     const n = spectrum.resolution;
     const scale = n / spectrum.patchSize; // texels per metre
+    const sample = (data: Float32Array, restX: number, restZ: number, channel: number) =>
+      sampleField(data, n, restX * scale, restZ * scale, channel);
     let restX = x;
     let restZ = z;
-    for (let iteration = 0; iteration < 12; iteration++) {
-      restX = x - sampleField(fields.displacement, n, restX * scale, restZ * scale, 0);
-      restZ = z - sampleField(fields.displacement, n, restX * scale, restZ * scale, 2);
+    for (let iteration = 0; iteration < 20; iteration++) {
+      const residualX = restX + sample(fields.displacement, restX, restZ, 0) - x;
+      const residualZ = restZ + sample(fields.displacement, restX, restZ, 2) - z;
+      if (Math.abs(residualX) + Math.abs(residualZ) < 1e-7) break;
+      const jxx = 1 + sample(fields.derivatives, restX, restZ, 2);
+      const jzz = 1 + sample(fields.derivatives, restX, restZ, 3);
+      const jxz = sample(fields.displacement, restX, restZ, 3);
+      const determinant = jxx * jzz - jxz * jxz;
+      if (determinant > 0.05) {
+        restX -= (jzz * residualX - jxz * residualZ) / determinant;
+        restZ -= (jxx * residualZ - jxz * residualX) / determinant;
+      } else {
+        // Near a fold Newton steps explode: fall back to a damped fixed-point step.
+        restX -= 0.5 * residualX;
+        restZ -= 0.5 * residualZ;
+      }
     }
-    return sampleField(fields.displacement, n, restX * scale, restZ * scale, 1);
+    return sample(fields.displacement, restX, restZ, 1);
   }
 
   private fieldsNow(): { fields: CpuWaveFields; spectrum: InitialSpectrum } {

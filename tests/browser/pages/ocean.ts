@@ -18,6 +18,7 @@ import {
   WebGLRenderer,
   WebGLRenderTarget,
 } from 'three';
+import { Ocean } from '../../../src/ocean';
 import { OceanMaterial, type OceanShadingOptions } from '../../../src/render/oceanMaterial';
 import { OceanSurface } from '../../../src/render/oceanSurface';
 import { CpuWaveFields } from '../../../src/sim/cpuWaveFields';
@@ -90,6 +91,31 @@ const harness = {
   info: () => ({ calls: renderer.info.render.calls, triangles: renderer.info.render.triangles }),
   vertexCount: () => surface!.geometry.getAttribute('position').count,
   geometryCheck,
+  /**
+   * heightAt against the rendered surface: an Ocean's own surface is read back from the vertex
+   * shader (geometryCheck); a vertex displaced to (px, py, pz) is the surface point that lands on
+   * (px, pz), so heightAt(px, pz) must be py.
+   */
+  heightAtCheck(changes: Partial<SimulationParameters>, t: number): { compared: number; folded: number; maxError: number; rms: number } {
+    surface?.removeFromParent();
+    surface?.dispose();
+    simulation?.dispose();
+    const ocean = new Ocean(renderer, { ...changes, path: 'gpu', worker: false });
+    simulation = ocean.simulation;
+    surface = ocean.surface;
+    ocean.update(t);
+    const { displacedAtMip0, rms } = geometryCheck(t);
+    // Where the surface folds (J ≤ 0.2 at the rest point) more than one point lands on (x, z).
+    const unfolded = displacedAtMip0.filter(([, , , jacobian]) => jacobian > 0.2);
+    let maxError = 0;
+    for (const [x, y, z] of unfolded) maxError = Math.max(maxError, Math.abs(ocean.heightAt(x, z) - y));
+    ocean.sky.dispose();
+    simulation = null;
+    surface.dispose();
+    surface = null;
+    ocean.simulation.dispose();
+    return { compared: unfolded.length, folded: displacedAtMip0.length - unfolded.length, maxError, rms };
+  },
   /**
    * For each pixel (x, y from the top): its rendered value (red, 0–1) and cos θi of the view ray
    * where it meets the flat sea plane y = 0.
@@ -195,6 +221,8 @@ function geometryCheck(t: number, withRestPoints = false) {
   let maxOffGrid = 0;
   const heights: number[] = [];
   const restPoints: string[] = [];
+  /** (x, y, z) displaced, and the Jacobian of the choppy map at the rest point. */
+  const displacedAtMip0: [number, number, number, number][] = [];
   for (let v = 0; v < count; v++) {
     const [x, z, lod, ring] = rest.subarray(4 * v, 4 * v + 4);
     const [px, py, pz] = displaced.subarray(4 * v, 4 * v + 3);
@@ -213,9 +241,13 @@ function geometryCheck(t: number, withRestPoints = false) {
     const cell = mesh.material.uniforms.ringFrames.value[4 * ring + 2] as number;
     for (const c of [x, z]) maxOffGrid = Math.max(maxOffGrid, Math.abs(c / cell - Math.round(c / cell)));
     heights.push(py);
+    if (level === 0) {
+      const [, , dxx, dzz] = sampleBilinear(fields.derivatives, n, x / patchSize + 0.5 / n, z / patchSize + 0.5 / n);
+      displacedAtMip0.push([px, py, pz, (1 + dxx) * (1 + dzz) - expected[3] * expected[3]]);
+    }
     if (withRestPoints) restPoints.push(`${x},${z},${level}`);
   }
-  return { count, skirt, rms, byLevel, maxOffGrid, heights, restPoints };
+  return { count, skirt, rms, byLevel, maxOffGrid, heights, restPoints, displacedAtMip0 };
 }
 
 /** Mip levels of an RGBA N×N texture by 2×2 averaging, level 0 first. */
