@@ -4,6 +4,7 @@
  * SwiftShader; pixels are read by the app right after its render (oceanApp.capturePixels).
  */
 import { expect, test, type Page } from '@playwright/test';
+import { withoutWebGL2 } from './withoutWebGL2';
 
 type Vec3 = [number, number, number];
 
@@ -390,13 +391,7 @@ test.describe('failures the app explains', () => {
   });
 
   test('without WebGL2 the page explains instead of showing a blank canvas', async ({ page }) => {
-    await page.addInitScript(() => {
-      const original = HTMLCanvasElement.prototype.getContext;
-      HTMLCanvasElement.prototype.getContext = function (this: HTMLCanvasElement, type: string, ...rest: unknown[]) {
-        if (type === 'webgl2') return null;
-        return (original as (...args: unknown[]) => unknown).call(this, type, ...rest);
-      } as typeof original;
-    });
+    await withoutWebGL2(page);
     const errors: string[] = [];
     page.on('pageerror', (error) => errors.push(error.message));
     await page.goto('/');

@@ -1,4 +1,5 @@
 import { expect, test, type Page } from '@playwright/test';
+import { withoutWebGL2 } from './withoutWebGL2';
 
 // <fft-ocean> in a page: zero-configuration rendering, sizing, live attributes, pausing when it
 // cannot be seen, and the message a browser without WebGL 2 gets. Small boxes and N = 64 keep
@@ -192,15 +193,7 @@ test('defining it twice is harmless', async ({ page }) => {
 });
 
 test('without WebGL 2 the box shows a message instead of staying blank', async ({ page }) => {
-  // The browser has no WebGL 2: getContext('webgl2') returns null, as on old devices or with
-  // hardware acceleration off. (Only the context's absence is simulated; nothing else is.)
-  await page.addInitScript(() => {
-    const original = HTMLCanvasElement.prototype.getContext;
-    HTMLCanvasElement.prototype.getContext = function (this: HTMLCanvasElement, type: string, ...rest: unknown[]) {
-      if (type === 'webgl2') return null;
-      return (original as (...args: unknown[]) => unknown).call(this, type, ...rest);
-    } as typeof original;
-  });
+  await withoutWebGL2(page);
   const errors: string[] = [];
   page.on('pageerror', (error) => errors.push(error.message));
   await page.goto('/tests/browser/pages/embed.html');
