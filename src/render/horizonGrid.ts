@@ -115,6 +115,8 @@ export class RingFrames {
   readonly offsets = new Float32Array(2 * (RING_COUNT + 1));
   /** Distance from the camera to the far corner of the skirt: the camera's far plane must reach it. */
   farEdgeDistance = 0;
+  /** Ring centres in double precision (frames holds them as float32). */
+  private readonly centres = new Float64Array(2 * (RING_COUNT + 1));
 
   /**
    * @param cameraX, cameraZ camera position on the sea plane (m)
@@ -126,22 +128,26 @@ export class RingFrames {
     // that ring 0 would cover less than about 8× the camera height.
     const heightPerCell = Math.max(1, cameraHeight) / (cellsPerRing / 8);
     const level = Math.max(0, Math.ceil(Math.log2(heightPerCell / texelSize)));
-    const centres: number[] = [];
+    const halfTexel = (0.5 * texelSize) / patchSize;
     for (let ring = 0; ring <= RING_COUNT; ring++) {
       const cell = texelSize * 2 ** (level + ring);
       const x = Math.floor(cameraX / (2 * cell)) * 2 * cell;
       const z = Math.floor(cameraZ / (2 * cell)) * 2 * cell;
-      centres.push(x, z);
-      this.frames.set([x, z, cell, level + ring], 4 * ring);
-      const halfTexel = (0.5 * texelSize) / patchSize;
-      this.uvOrigins.set([fractional(x / patchSize + halfTexel), fractional(z / patchSize + halfTexel)], 2 * ring);
+      this.centres[2 * ring] = x;
+      this.centres[2 * ring + 1] = z;
+      this.frames[4 * ring] = x;
+      this.frames[4 * ring + 1] = z;
+      this.frames[4 * ring + 2] = cell;
+      this.frames[4 * ring + 3] = level + ring;
+      this.uvOrigins[2 * ring] = fractional(x / patchSize + halfTexel);
+      this.uvOrigins[2 * ring + 1] = fractional(z / patchSize + halfTexel);
     }
     const lastCell = this.frames[4 * (RING_COUNT - 1) + 2];
     this.farEdgeDistance = Math.SQRT2 * (cellsPerRing / 2 + 2) * lastCell * SKIRT_SCALE + Math.max(0, cameraHeight);
     for (let ring = 0; ring < RING_COUNT; ring++) {
       const nextCell = 2 * this.frames[4 * ring + 2];
-      this.offsets[2 * ring] = Math.round((centres[2 * ring] - centres[2 * ring + 2]) / nextCell);
-      this.offsets[2 * ring + 1] = Math.round((centres[2 * ring + 1] - centres[2 * ring + 3]) / nextCell);
+      this.offsets[2 * ring] = Math.round((this.centres[2 * ring] - this.centres[2 * ring + 2]) / nextCell);
+      this.offsets[2 * ring + 1] = Math.round((this.centres[2 * ring + 1] - this.centres[2 * ring + 3]) / nextCell);
     }
   }
 }

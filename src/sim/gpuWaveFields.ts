@@ -45,6 +45,9 @@ import type { InitialSpectrum } from './spectrum';
 
 export type GpuPrecision = 'float32' | 'float16';
 
+/** The FFT runs along x (alongZ = false), then along z. */
+const AXES = [false, true] as const;
+
 /** Which GPU precision this renderer can render to, best first; null when neither works. */
 export function supportedGpuPrecision(renderer: WebGLRenderer): GpuPrecision | null {
   if (!renderer.capabilities.isWebGL2) return null;
@@ -177,7 +180,7 @@ export class GpuWaveFields {
     let spare = this.pong;
     const passes = this.stages.length * 2;
     let pass = 0;
-    for (const alongZ of [false, true]) {
+    for (const alongZ of AXES) {
       for (const stage of this.stages) {
         const material = stage.radix === 4 ? this.radix4Material : this.radix2Material!;
         const uniforms = material.uniforms;
