@@ -11,7 +11,7 @@
 import { ACESFilmicToneMapping, PerspectiveCamera, Scene, WebGLRenderer } from 'three';
 import { Ocean } from '../ocean';
 import { skyboxFaceUrls } from '../render/skyEnvironment';
-import { CONTROLS_HELP, FlyControls } from './flyControls';
+import { CONTROLS_HELP, FlyControls, MIN_HEIGHT } from './flyControls';
 import { Inspector } from './inspector';
 import { Panel } from './panel';
 import { PATH_LABELS, StatusOverlay, TimingAverager } from './statusOverlay';
@@ -199,6 +199,13 @@ renderer.setAnimationLoop((now: number) => {
 
   const start = performance.now();
   ocean.update(state.t);
+  // The controls keep the eye above the mean sea level; near the water it must also stay above the
+  // crest under it. heightAt updates the fields on the CPU, so it is asked only when a crest
+  // (4 standard deviations of the height) could reach the camera.
+  if (camera.position.y < MIN_HEIGHT + 4 * ocean.heightRms) {
+    const water = ocean.heightAt(camera.position.x, camera.position.z);
+    camera.position.y = Math.max(camera.position.y, water + MIN_HEIGHT);
+  }
   const simulated = performance.now();
   camera.far = Math.max(1e4, 1.5 * ocean.horizonDistance);
   camera.updateProjectionMatrix();

@@ -373,6 +373,17 @@ test.describe('the app', () => {
   });
 });
 
+test('flying low over a rough sea, the eye stays above the crest under it', async ({ page }) => {
+  await openApp(page, 'resolution=64&windSpeed=16&paused=1&t=8&cam=10,1,20,0,-10');
+  await frames(page, 3);
+  const { eye, water, rms } = await page.evaluate(() => {
+    const { camera, ocean } = window.oceanApp;
+    return { eye: camera.position.y, water: ocean.heightAt(camera.position.x, camera.position.z), rms: ocean.heightRms };
+  });
+  expect(rms).toBeGreaterThan(0.5); // a sea whose crests reach above 1 m
+  expect(eye).toBeGreaterThanOrEqual(water + 1 - 1e-6);
+});
+
 test.describe('failures the app explains', () => {
   test('a skybox that fails to load shows a warning naming it, and the generated sky stays', async ({ page }) => {
     await page.goto('/?skybox=/no-such-skybox/');

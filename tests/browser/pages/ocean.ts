@@ -96,7 +96,10 @@ const harness = {
    * shader (geometryCheck); a vertex displaced to (px, py, pz) is the surface point that lands on
    * (px, pz), so heightAt(px, pz) must be py.
    */
-  heightAtCheck(changes: Partial<SimulationParameters>, t: number): { compared: number; folded: number; maxError: number; rms: number } {
+  heightAtCheck(
+    changes: Partial<SimulationParameters>,
+    t: number,
+  ): { compared: number; folded: number; maxError: number; rms: number } {
     surface?.removeFromParent();
     surface?.dispose();
     simulation?.dispose();
