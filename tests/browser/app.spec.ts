@@ -373,6 +373,51 @@ test.describe('the app', () => {
   });
 });
 
+test('the inspector draws the real height field: a tile matches the texture it shows', async ({ page }) => {
+  // The JS path keeps the field in a DataTexture the test can read; paused, so it stays put.
+  await openApp(page, 'resolution=32&path=js&paused=1&t=7.5&inspector=1', { width: 720, height: 405 }, false);
+  await expect.poll(() => page.evaluate(() => window.oceanApp.ocean.simulation.path)).toBe('js-worker');
+  await frames(page, 10);
+  const result = await page.evaluate(async () => {
+    const { ocean, inspector } = window.oceanApp;
+    const heightTile = 3; // P(k), Re h̃0, Im h̃0, height h, …
+    const view = inspector!.tiles[heightTile].view as unknown as { material: { uniforms: { scale: { value: number } } } };
+    const scale = view.material.uniforms.scale.value;
+    const field = (ocean.simulation.uniforms.tDisplacement.value as unknown as { image: { data: Float32Array } }).image.data;
+    const { width, data } = await window.oceanApp.capturePixels();
+    const n = 32;
+    const size = Math.floor(width / 9);
+    // GL-style bilinear sample of h (channel 1) with REPEAT at uv.
+    const sample = (u: number, v: number) => {
+      const x = u * n - 0.5;
+      const y = v * n - 0.5;
+      const x0 = Math.floor(x);
+      const y0 = Math.floor(y);
+      const at = (i: number, j: number) => field[4 * (((j + n) % n) * n + ((i + n) % n)) + 1];
+      const fx = x - x0;
+      const fy = y - y0;
+      return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) + fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
+    };
+    let worst = 0;
+    const greys: number[] = [];
+    for (let j = 0; j < 6; j++) {
+      for (let i = 0; i < 6; i++) {
+        const px = heightTile * size + Math.floor(((i + 0.5) / 6) * size);
+        const py = Math.floor(((j + 0.5) / 6) * size); // rows from the bottom, as readPixels gives them
+        const grey = data[4 * (py * width + px)] / 255;
+        const expected = 0.5 + 0.5 * Math.max(-1, Math.min(1, sample((px - heightTile * size + 0.5) / size, (py + 0.5) / size) / scale));
+        worst = Math.max(worst, Math.abs(grey - expected));
+        greys.push(grey);
+      }
+    }
+    const mean = greys.reduce((a, b) => a + b, 0) / greys.length;
+    const spread = Math.sqrt(greys.reduce((a, b) => a + (b - mean) ** 2, 0) / greys.length);
+    return { worst, spread };
+  });
+  expect(result.spread).toBeGreaterThan(0.03); // not a blank or uniform tile
+  expect(result.worst).toBeLessThan(0.03); // 8-bit output and float32 filtering: ~0.005
+});
+
 test('flying low over a rough sea, the eye stays above the crest under it', async ({ page }) => {
   await openApp(page, 'resolution=64&windSpeed=16&paused=1&t=8&cam=10,1,20,0,-10');
   await frames(page, 3);
