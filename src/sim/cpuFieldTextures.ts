@@ -17,13 +17,12 @@ import {
 } from 'three';
 import { CpuWaveFields } from './cpuWaveFields';
 import type { InitialSpectrum } from './spectrum';
+import { FIELD_TEXTURES } from './waveFieldLayout';
 import type { WorkerReply, WorkerRequest } from './waveFieldWorker';
 
 export class CpuFieldTextures {
   readonly displacement: DataTexture;
   readonly derivatives: DataTexture;
-  /** Time of the fields now in the textures, or NaN before the first result. */
-  fieldTime = NaN;
   private readonly fields: CpuWaveFields | null = null;
   private readonly worker: Worker | null = null;
   private inFlight = false;
@@ -33,30 +32,27 @@ export class CpuFieldTextures {
   constructor(renderer: WebGLRenderer, spectrum: InitialSpectrum, choppiness: number, repeatPeriod: number, useWorker: boolean) {
     const n = spectrum.resolution;
     const filterable = renderer.extensions.has('OES_texture_float_linear');
-    this.displacement = fieldTexture(new Float32Array(4 * n * n), n, filterable, 'displacement');
-    this.derivatives = fieldTexture(new Float32Array(4 * n * n), n, filterable, 'derivatives');
-    this.spare = { displacement: new Float32Array(4 * n * n), derivatives: new Float32Array(4 * n * n) };
+    // Without a worker the textures show CpuWaveFields' own arrays: nothing is copied.
+    this.fields = useWorker ? null : new CpuWaveFields(spectrum, choppiness, repeatPeriod);
+    const [displacement, derivatives] = FIELD_TEXTURES.map((name) =>
+      fieldTexture(this.fields?.[name] ?? new Float32Array(4 * n * n), n, filterable, name),
+    );
+    this.displacement = displacement;
+    this.derivatives = derivatives;
+    this.spare = useWorker ? { displacement: new Float32Array(4 * n * n), derivatives: new Float32Array(4 * n * n) } : null;
     if (useWorker) {
       this.worker = new Worker(new URL('./waveFieldWorker.ts', import.meta.url), { type: 'module' });
       this.worker.onmessage = (event: MessageEvent<WorkerReply>) => this.receive(event.data);
       this.worker.onerror = (event) => console.error(`three-fft-ocean: the JS field worker failed: ${event.message}`);
       const request: WorkerRequest = { type: 'spectrum', spectrum, choppiness, repeatPeriod };
       this.worker.postMessage(request);
-    } else {
-      this.fields = new CpuWaveFields(spectrum, choppiness, repeatPeriod);
     }
-  }
-
-  get usesWorker(): boolean {
-    return this.worker !== null;
   }
 
   update(t: number): void {
     if (this.fields) {
       this.fields.update(t);
-      this.displacement.image.data!.set(this.fields.displacement);
-      this.derivatives.image.data!.set(this.fields.derivatives);
-      this.markUpdated(t);
+      this.markUpdated();
       return;
     }
     if (this.inFlight || !this.spare || !this.worker) return; // drop frames while the worker is busy
@@ -76,11 +72,10 @@ export class CpuFieldTextures {
     };
     this.displacement.image.data = reply.displacement;
     this.derivatives.image.data = reply.derivatives;
-    this.markUpdated(reply.t);
+    this.markUpdated();
   }
 
-  private markUpdated(t: number): void {
-    this.fieldTime = t;
+  private markUpdated(): void {
     this.displacement.needsUpdate = true;
     this.derivatives.needsUpdate = true;
   }

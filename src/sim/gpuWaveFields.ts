@@ -42,6 +42,7 @@ import {
 import { shaderSource } from '../shaderSource';
 import { fillPhaseTable, PHASE_TABLE_SIZE } from './dispersion';
 import type { InitialSpectrum } from './spectrum';
+import { FIELD_TEXTURES } from './waveFieldLayout';
 
 export type GpuPrecision = 'float32' | 'float16';
 
@@ -114,8 +115,7 @@ export class GpuWaveFields {
       generateMipmaps: filterable,
     });
     [this.displacement, this.derivatives] = this.output.textures;
-    this.displacement.name = 'displacement';
-    this.derivatives.name = 'derivatives';
+    this.output.textures.forEach((texture, i) => (texture.name = FIELD_TEXTURES[i]));
 
     const vertexShader = shaderSource('sim/fullscreen.vert');
     this.evolveMaterial = new ShaderMaterial({

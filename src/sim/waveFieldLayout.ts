@@ -21,5 +21,5 @@
  * transform of F + i·G is f + i·g. The four packed spectra, in texture order, are
  *   Dx + i·h,   Dz + i·∂Dx/∂z,   ∂h/∂x + i·∂h/∂z,   ∂Dx/∂x + i·∂Dz/∂z.
  */
+/** The two field textures, in this order in the GPU path's output target. */
 export const FIELD_TEXTURES = ['displacement', 'derivatives'] as const;
-export type FieldTextureName = (typeof FIELD_TEXTURES)[number];

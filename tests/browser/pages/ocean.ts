@@ -88,8 +88,6 @@ const harness = {
     gl.readPixels(x, height - 1 - y, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, out);
     return Array.from(out);
   },
-  info: () => ({ calls: renderer.info.render.calls, triangles: renderer.info.render.triangles }),
-  vertexCount: () => surface!.geometry.getAttribute('position').count,
   geometryCheck,
   /**
    * heightAt against the rendered surface: an Ocean's own surface is read back from the vertex

@@ -174,8 +174,6 @@ const harness = {
     }
     return { before, after: { ...renderer.info.memory } };
   },
-
-  memory: () => ({ ...renderer.info.memory }),
 };
 
 declare global {
