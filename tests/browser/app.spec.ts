@@ -383,8 +383,11 @@ test('the inspector draws the real height field: a tile matches the texture it s
     const heightTile = 3; // P(k), Re h̃0, Im h̃0, height h, …
     const view = inspector!.tiles[heightTile].view as unknown as { material: { uniforms: { scale: { value: number } } } };
     const scale = view.material.uniforms.scale.value;
-    const field = (ocean.simulation.uniforms.tDisplacement.value as unknown as { image: { data: Float32Array } }).image.data;
     const { width, data } = await window.oceanApp.capturePixels();
+    // Read the field after the await: the worker path swaps arrays between frames, and the one
+    // the texture no longer holds is transferred to the worker (detached). Paused, every frame
+    // carries the same field.
+    const field = (ocean.simulation.uniforms.tDisplacement.value as unknown as { image: { data: Float32Array } }).image.data.slice();
     const n = 32;
     const size = Math.floor(width / 9);
     // GL-style bilinear sample of h (channel 1) with REPEAT at uv.
