@@ -1,50 +1,94 @@
-// One pass of an inverse Stockham FFT (Stockham 1966; the gather form of Govindaraju et al. 2008,
-// "High performance discrete Fourier transforms on graphics processors") along x or z, of radix
-// RADIX (2 or 4), over two render targets that each hold two complex fields per texel.
+// One pass of an inverse Stockham FFT (Stockham 1966; radix-4 as in Govindaraju et al. 2008,
+// "High performance discrete Fourier transforms on graphics processors"), in the butterfly form:
+// each fragment computes one whole butterfly and writes its outputs to four layers of the working
+// textures (quarterLayout.glsl). Each working texture holds two complex fields per texel; the two
+// together hold the four packed spectra of src/sim/waveFieldLayout.ts.
 //
-// RADIX_LOG2 is defined with it. A pass takes sub-transforms of length p to length P = p·RADIX.
-// For output index o:
-//   r = o mod P,  i = (o div P)·p + (r mod p),
-//   out[o] = Σ_s in[i + s·N/RADIX] · e^{+2πi·s·r/P},  s = 0 … RADIX−1.
+// RADIX (4 or 2), RADIX_LOG2, ALONG_Z (0 or 1) and INPUT_LAYOUT (quarterLayout.glsl) are defined
+// with it. A pass takes sub-transforms of length p to length P = p·RADIX. Radix 4, butterfly
+// i = g·p + r (r < p) of a line:
+//   a_s = in[i + s·N/4] · e^{2πi·s·r/P},   s = 0 … 3
+//   out[g·P + r + t·p] = Σ_s a_s · e^{2πi·s·t/4} = Σ_s a_s · i^{s·t},   t = 0 … 3   → layer t
+// Radix 2 runs only as the first pass of an axis (p = 1), when log2 N is odd; the fragment does
+// the two butterflies i = b and i = b + N/4:
+//   out[2i] = in[i] + in[i + N/2],  out[2i + 1] = in[i] − in[i + N/2]   → layers 2h, 2h + 1
 // The twiddle comes from a table of e^{2πi·j/N} that JS computed in double precision: GLSL sin/cos
 // are approximate (about 2e-4 off under SwiftShader, see ../shared/BROWSER.md).
 #include "common/complex.glsl"
+#include "sim/quarterLayout.glsl"
 
-uniform highp sampler2D tSpectra0;
-uniform highp sampler2D tSpectra1;
+uniform highp sampler2DArray tSpectra0;
+uniform highp sampler2DArray tSpectra1;
 uniform highp sampler2D tTwiddles;  // N×1: (cos 2πj/N, sin 2πj/N)
 uniform int sizeLog2;               // log2 N
 uniform int subtransformLog2;       // log2 p
-uniform bool alongZ;                // false: along x (texture columns); true: along z (rows)
 
-layout(location = 0) out vec4 out0;
-layout(location = 1) out vec4 out1;
+layout(location = 0) out vec4 spectra0[4];  // layer t of the next tSpectra0
+layout(location = 4) out vec4 spectra1[4];  // layer t of the next tSpectra1
+
+struct Element {
+  vec4 spectra0;
+  vec4 spectra1;
+};
+
+// Element b + s·N/4 of the fragment's line.
+Element load(QuarterAddresses addresses, int s) {
+  ivec3 at = quarterAddress(addresses, s);
+  return Element(texelFetch(tSpectra0, at, 0), texelFetch(tSpectra1, at, 0));
+}
+
+// Both complex numbers of a texel times the same complex factor.
+vec4 times(vec4 pair, vec2 factor) {
+  return vec4(complexMultiply(pair.xy, factor), complexMultiply(pair.zw, factor));
+}
+
+// The radix-4 butterfly for both complex numbers of a texel: y_t = Σ_s a_s·w^s·i^{s·t}, as two
+// 2-point stages (i^{s·t} is ±1 or ±i, so no multiplications).
+void butterfly4(vec4 a0, vec4 a1, vec4 a2, vec4 a3, vec2 w1, vec2 w2, vec2 w3,
+                out vec4 y0, out vec4 y1, out vec4 y2, out vec4 y3) {
+  vec4 x1 = times(a1, w1), x2 = times(a2, w2), x3 = times(a3, w3);
+  vec4 sum02 = a0 + x2, difference02 = a0 - x2;
+  vec4 sum13 = x1 + x3, difference13 = x1 - x3;
+  vec4 iDifference13 = vec4(-difference13.y, difference13.x, -difference13.w, difference13.z);
+  y0 = sum02 + sum13;
+  y1 = difference02 + iDifference13;
+  y2 = sum02 - sum13;
+  y3 = difference02 - iDifference13;
+}
+
+// The radix-2 butterfly (twiddle 1, p = 1) for both complex numbers of a texel.
+void butterfly2(vec4 a0, vec4 a1, out vec4 y0, out vec4 y1) {
+  y0 = a0 + a1;
+  y1 = a0 - a1;
+}
 
 void main() {
-  ivec2 texel = ivec2(gl_FragCoord.xy);
-  int o = alongZ ? texel.y : texel.x;
-  // All lengths are powers of two, so divisions and remainders are shifts and masks (integer
-  // division is slow where the GPU is emulated, as under SwiftShader).
-  int spanLog2 = subtransformLog2 + RADIX_LOG2;  // P = p·RADIX
-  int r = o & ((1 << spanLog2) - 1);
-  int i = ((o >> spanLog2) << subtransformLog2) | (r & ((1 << subtransformLog2) - 1));
-  int stride = 1 << (sizeLog2 - RADIX_LOG2);      // N / RADIX
+  // Butterfly b of line `line` (z for the x axis, x for the z axis); see quarterLayout.glsl.
+#if ALONG_Z
+  int b = int(gl_FragCoord.y), line = int(gl_FragCoord.x);
+#else
+  int b = int(gl_FragCoord.x), line = int(gl_FragCoord.y);
+#endif
+  QuarterAddresses addresses = quarterAddresses(b, line, sizeLog2, subtransformLog2);
+#if RADIX == 4
   // e^{2πi·r/P} = table[r·N/P], exact from double precision; its powers by complex products
   // (float32 rounding, ~1e-7, instead of one more texture fetch each).
-  vec2 twiddle = texelFetch(tTwiddles, ivec2(r << (sizeLog2 - spanLog2), 0), 0).xy;
-
-  ivec2 from = alongZ ? ivec2(texel.x, i) : ivec2(i, texel.y);
-  vec4 sum0 = texelFetch(tSpectra0, from, 0);  // s = 0: twiddle 1
-  vec4 sum1 = texelFetch(tSpectra1, from, 0);
-  vec2 power = vec2(1.0, 0.0);
-  for (int s = 1; s < RADIX; s++) {
-    power = complexMultiply(power, twiddle);  // e^{2πi·s·r/P}
-    from = alongZ ? ivec2(texel.x, i + s * stride) : ivec2(i + s * stride, texel.y);
-    vec4 a = texelFetch(tSpectra0, from, 0);
-    vec4 b = texelFetch(tSpectra1, from, 0);
-    sum0 += vec4(complexMultiply(a.xy, power), complexMultiply(a.zw, power));
-    sum1 += vec4(complexMultiply(b.xy, power), complexMultiply(b.zw, power));
-  }
-  out0 = sum0;
-  out1 = sum1;
+  int r = b & ((1 << subtransformLog2) - 1);
+  vec2 w1 = texelFetch(tTwiddles, ivec2(r << (sizeLog2 - subtransformLog2 - RADIX_LOG2), 0), 0).xy;
+  vec2 w2 = complexMultiply(w1, w1);
+  vec2 w3 = complexMultiply(w2, w1);
+  Element a0 = load(addresses, 0), a1 = load(addresses, 1), a2 = load(addresses, 2), a3 = load(addresses, 3);
+  // (Fragment outputs take constant indexes only.)
+  butterfly4(a0.spectra0, a1.spectra0, a2.spectra0, a3.spectra0, w1, w2, w3,
+             spectra0[0], spectra0[1], spectra0[2], spectra0[3]);
+  butterfly4(a0.spectra1, a1.spectra1, a2.spectra1, a3.spectra1, w1, w2, w3,
+             spectra1[0], spectra1[1], spectra1[2], spectra1[3]);
+#else
+  Element first0 = load(addresses, 0), second0 = load(addresses, 2);  // h = 0: in[b], in[b + N/2]
+  Element first1 = load(addresses, 1), second1 = load(addresses, 3);  // h = 1: in[b + N/4], in[b + 3N/4]
+  butterfly2(first0.spectra0, second0.spectra0, spectra0[0], spectra0[1]);
+  butterfly2(first1.spectra0, second1.spectra0, spectra0[2], spectra0[3]);
+  butterfly2(first0.spectra1, second0.spectra1, spectra1[0], spectra1[1]);
+  butterfly2(first1.spectra1, second1.spectra1, spectra1[2], spectra1[3]);
+#endif
 }

@@ -2,19 +2,28 @@
  * The GPU simulation path: every field of waveFieldLayout.ts computed in fragment-shader passes
  * over float render targets (WebGL2 through three.js), with no CPU readback.
  *
- * Per update: one pass evolves the spectrum into two render targets (MRT) holding the four packed
- * complex spectra, then log4-many Stockham passes along x and as many along z (a radix-2 pass
- * first when log2 N is odd) ping-pong between two such targets. The last pass writes into the
- * output target, whose two textures (`displacement`, `derivatives`) wrap with REPEAT and, where the
- * format is filterable, filter linearly with mipmaps generated after the pass.
+ * Per update: one pass evolves the spectrum (four packed complex spectra), then log4-many Stockham
+ * FFT passes along x and as many along z (a radix-2 pass first on each axis when log2 N is odd)
+ * ping-pong between two sets of working textures, and a last pass copies the fields into the
+ * output target, whose two textures (`displacement`, `derivatives`) wrap with REPEAT and, where
+ * the format is filterable, filter linearly with mipmaps generated after the pass.
  *
- * Textures (all N×N RGBA unless said):
- *   amplitudes  (h̃0(k), h̃0*(−k))               static, from spectrum.ts
- *   waveVectors (kx, kz, 1/k, m)                static, from spectrum.ts
- *   phases      256×1, (e^{ijφ}, e^{i256jφ})    uploaded each update, from dispersion.ts
- *   twiddles    N×1, (cos 2πj/N, sin 2πj/N)     static
- *   ping, pong  2 targets × (packed spectra)    working storage
- *   output      (displacement, derivatives)     the result
+ * Each FFT pass computes a whole radix-4 butterfly per fragment and writes its four outputs to
+ * four layers of (N/4)×N array textures (shaders/sim/quarterLayout.glsl says where each element
+ * lives after each pass). That reads every input once per pass instead of four times, and under
+ * SwiftShader makes a pass about three times cheaper than one output per fragment. three.js cannot
+ * render to several layers at once, so this file attaches the layers to a framebuffer of its own
+ * and hands it to three.js through setRenderTargetFramebuffer; three.js still allocates, binds
+ * and frees the textures.
+ *
+ * Textures (RGBA unless said):
+ *   amplitudes  N×N (h̃0(k), h̃0*(−k))            static, from spectrum.ts
+ *   waveVectors N×N (kx, kz, 1/k, m)             static, from spectrum.ts
+ *   phases      256×1, (e^{ijφ}, e^{i256jφ})     uploaded each update, from dispersion.ts
+ *   twiddles    N×1, (cos 2πj/N, sin 2πj/N)      static
+ *   working     2 × (N/4)×N×4 layers, twice      working storage along x (two complex fields per texel)
+ *               2 × N×(N/4)×4 layers, twice      working storage along z
+ *   output      N×N (displacement, derivatives)  the result
  * This object owns all of them and frees them in dispose().
  */
 import {
@@ -37,6 +46,7 @@ import {
   type PixelFormat,
   type Texture,
   type TextureDataType,
+  WebGLArrayRenderTarget,
   type WebGLRenderer,
 } from 'three';
 import { shaderSource } from '../shaderSource';
@@ -46,8 +56,17 @@ import { FIELD_TEXTURES } from './waveFieldLayout';
 
 export type GpuPrecision = 'float32' | 'float16';
 
-/** The FFT runs along x (alongZ = false), then along z. */
-const AXES = [false, true] as const;
+/** How the previous pass left the data: INPUT_LAYOUT of shaders/sim/quarterLayout.glsl. */
+type InputLayout = 'QUARTERS' | 'QUARTERS_TRANSPOSED' | 'AFTER_RADIX2' | 'AFTER_RADIX4';
+
+interface FftPass {
+  material: ShaderMaterial;
+  /** Reads `source`, writes `target`. */
+  source: LayeredSpectra;
+  target: LayeredSpectra;
+  /** log2 of the sub-transform length p before the pass. */
+  subtransformLog2: number;
+}
 
 /** Which GPU precision this renderer can render to, best first; null when neither works. */
 export function supportedGpuPrecision(renderer: WebGLRenderer): GpuPrecision | null {
@@ -62,7 +81,7 @@ export class GpuWaveFields {
   readonly displacement: Texture;
   /** (∂h/∂x, ∂h/∂z, ∂Dx/∂x, ∂Dz/∂z) */
   readonly derivatives: Texture;
-  /** Fragment passes per update (evolution + FFT). */
+  /** Fragment passes per update (evolution, FFT, copy to the output). */
   readonly passCount: number;
   readonly output: WebGLRenderTarget;
 
@@ -70,15 +89,16 @@ export class GpuWaveFields {
   private readonly waveVectors: DataTexture;
   private readonly phases: DataTexture;
   private readonly twiddles: DataTexture;
-  private readonly ping: WebGLRenderTarget;
-  private readonly pong: WebGLRenderTarget;
+  /** Working storage along x ((N/4)×N) and along z (N×(N/4)), two sets each to ping-pong. */
+  private readonly working: LayeredSpectra[];
   private readonly evolveMaterial: ShaderMaterial;
-  private readonly radix4Material: ShaderMaterial;
-  private readonly radix2Material: ShaderMaterial | null;
+  /** One program per radix and input layout the passes need. */
+  private readonly fftMaterials = new Map<string, ShaderMaterial>();
+  /** Along x, then along z. */
+  private readonly fftPasses: FftPass[] = [];
+  private readonly unpackMaterial: ShaderMaterial;
   private readonly quad: Mesh;
   private readonly camera = new Camera();
-  /** Sub-transform lengths p before each pass along one axis, and the radix of that pass. */
-  private readonly stages: { radix: 2 | 4; subtransformSize: number }[] = [];
 
   constructor(
     private readonly renderer: WebGLRenderer,
@@ -88,6 +108,7 @@ export class GpuWaveFields {
     readonly precision: GpuPrecision,
   ) {
     const n = spectrum.resolution;
+    const sizeLog2 = Math.log2(n);
     const type: TextureDataType = precision === 'float32' ? FloatType : HalfFloatType;
     this.amplitudes = dataTexture(spectrum.amplitudes, n, n, RGBAFormat);
     this.waveVectors = dataTexture(spectrum.waveVectors, n, n, RGBAFormat);
@@ -99,8 +120,12 @@ export class GpuWaveFields {
     }
     this.twiddles = dataTexture(twiddleTable, n, 1, RGFormat);
 
-    this.ping = workTarget(n, type);
-    this.pong = workTarget(n, type);
+    const [x0, x1, z0, z1] = (this.working = [
+      new LayeredSpectra(n / 4, n, type),
+      new LayeredSpectra(n / 4, n, type),
+      new LayeredSpectra(n, n / 4, type),
+      new LayeredSpectra(n, n / 4, type),
+    ]);
     // Float32 textures filter linearly only with OES_texture_float_linear; half floats always do.
     const filterable = precision === 'float16' || renderer.extensions.has('OES_texture_float_linear');
     this.output = new WebGLRenderTarget(n, n, {
@@ -118,46 +143,56 @@ export class GpuWaveFields {
     this.output.textures.forEach((texture, i) => (texture.name = FIELD_TEXTURES[i]));
 
     const vertexShader = shaderSource('sim/fullscreen.vert');
-    this.evolveMaterial = new ShaderMaterial({
-      glslVersion: GLSL3,
-      vertexShader,
-      fragmentShader: shaderSource('sim/evolveSpectrum.frag'),
-      uniforms: {
-        tAmplitudes: { value: this.amplitudes },
-        tWaveVectors: { value: this.waveVectors },
-        tPhases: { value: this.phases },
-        choppiness: { value: choppiness },
-      },
-      depthTest: false,
-      depthWrite: false,
-    });
-    const fftMaterial = (radix: number): ShaderMaterial =>
+    const material = (fragmentShader: string, uniforms: Record<string, { value: unknown }>, defines = {}) =>
       new ShaderMaterial({
         glslVersion: GLSL3,
-        defines: { RADIX: radix, RADIX_LOG2: Math.log2(radix) },
+        defines,
         vertexShader,
-        fragmentShader: shaderSource('sim/fftPass.frag'),
-        uniforms: {
-          tSpectra0: { value: null },
-          tSpectra1: { value: null },
-          tTwiddles: { value: this.twiddles },
-          sizeLog2: { value: Math.log2(n) },
-          subtransformLog2: { value: 0 },
-          alongZ: { value: false },
-        },
+        fragmentShader: shaderSource(fragmentShader),
+        uniforms: { sizeLog2: { value: sizeLog2 }, ...uniforms },
         depthTest: false,
         depthWrite: false,
       });
-    this.radix4Material = fftMaterial(4);
-    const log2 = Math.log2(n);
-    this.radix2Material = log2 % 2 === 1 ? fftMaterial(2) : null;
-    let p = 1;
-    if (this.radix2Material) {
-      this.stages.push({ radix: 2, subtransformSize: 1 });
-      p = 2;
+    this.evolveMaterial = material('sim/evolveSpectrum.frag', {
+      tAmplitudes: { value: this.amplitudes },
+      tWaveVectors: { value: this.waveVectors },
+      tPhases: { value: this.phases },
+      choppiness: { value: choppiness },
+    });
+    const fftMaterial = (radix: 2 | 4, alongZ: boolean, layout: InputLayout): ShaderMaterial => {
+      const key = `${radix} ${alongZ} ${layout}`;
+      let fft = this.fftMaterials.get(key);
+      if (!fft) {
+        const uniforms = { tSpectra0: { value: null }, tSpectra1: { value: null }, tTwiddles: { value: this.twiddles } };
+        const defines = { RADIX: radix, RADIX_LOG2: Math.log2(radix), ALONG_Z: Number(alongZ), INPUT_LAYOUT: layout };
+        fft = material('sim/fftPass.frag', { ...uniforms, subtransformLog2: { value: 0 } }, defines);
+        this.fftMaterials.set(key, fft);
+      }
+      return fft;
+    };
+    // Radix 4 from sub-length p = 1 (or 2 after a radix-2 pass when log2 N is odd) up to N. The
+    // first pass of the x axis reads what the evolution pass wrote; the first of the z axis what
+    // the last x pass wrote (the same quarters, with x as the line). Each axis ping-pongs between
+    // its two sets of working textures, starting from where the data is.
+    let source = x0;
+    for (const alongZ of [false, true]) {
+      let layout: InputLayout = alongZ ? 'QUARTERS_TRANSPOSED' : 'QUARTERS';
+      const [first, second] = alongZ ? [z0, z1] : [x1, x0];
+      const pass = (radix: 2 | 4, p: number): void => {
+        const target = source === first ? second : first;
+        this.fftPasses.push({ material: fftMaterial(radix, alongZ, layout), source, target, subtransformLog2: Math.log2(p) });
+        source = target;
+      };
+      let p = 1;
+      if (sizeLog2 % 2 === 1) {
+        pass(2, p);
+        [layout, p] = ['AFTER_RADIX2', 2];
+      }
+      for (; p < n; p *= 4, layout = 'AFTER_RADIX4') pass(4, p);
     }
-    for (; p < n; p *= 4) this.stages.push({ radix: 4, subtransformSize: p });
-    this.passCount = 1 + 2 * this.stages.length;
+    const [result0, result1] = source.textures;
+    this.unpackMaterial = material('sim/unpackFields.frag', { tSpectra0: { value: result0 }, tSpectra1: { value: result1 } });
+    this.passCount = 2 + this.fftPasses.length;
 
     const geometry = new BufferGeometry();
     geometry.setAttribute('position', new BufferAttribute(new Float32Array([-1, -1, 0, 3, -1, 0, -1, 3, 0]), 3));
@@ -175,44 +210,119 @@ export class GpuWaveFields {
     const previousXr = renderer.xr.enabled;
     renderer.xr.enabled = false;
 
-    this.draw(this.evolveMaterial, this.ping);
-    let source = this.ping;
-    let spare = this.pong;
-    const passes = this.stages.length * 2;
-    let pass = 0;
-    for (const alongZ of AXES) {
-      for (const stage of this.stages) {
-        const material = stage.radix === 4 ? this.radix4Material : this.radix2Material!;
-        const uniforms = material.uniforms;
-        uniforms.tSpectra0.value = source.textures[0];
-        uniforms.tSpectra1.value = source.textures[1];
-        uniforms.subtransformLog2.value = Math.log2(stage.subtransformSize);
-        uniforms.alongZ.value = alongZ;
-        pass++;
-        const target = pass === passes ? this.output : spare;
-        this.draw(material, target);
-        spare = source;
-        source = target;
-      }
+    this.working[0].bind(renderer);
+    this.draw(this.evolveMaterial);
+    for (const { material, source, target, subtransformLog2 } of this.fftPasses) {
+      const uniforms = material.uniforms;
+      uniforms.tSpectra0.value = source.textures[0];
+      uniforms.tSpectra1.value = source.textures[1];
+      uniforms.subtransformLog2.value = subtransformLog2;
+      target.bind(renderer);
+      this.draw(material);
     }
+    renderer.setRenderTarget(this.output);
+    this.draw(this.unpackMaterial);
 
     renderer.xr.enabled = previousXr;
     renderer.setRenderTarget(previousTarget);
   }
 
-  private draw(material: ShaderMaterial, target: WebGLRenderTarget): void {
+  private draw(material: ShaderMaterial): void {
     this.quad.material = material;
-    this.renderer.setRenderTarget(target);
     this.renderer.render(this.quad, this.camera);
   }
 
   dispose(): void {
     for (const texture of [this.amplitudes, this.waveVectors, this.phases, this.twiddles]) texture.dispose();
-    for (const target of [this.ping, this.pong, this.output]) target.dispose();
-    this.evolveMaterial.dispose();
-    this.radix4Material.dispose();
-    this.radix2Material?.dispose();
+    for (const spectra of this.working) spectra.dispose(this.renderer);
+    this.output.dispose();
+    for (const material of [this.evolveMaterial, ...this.fftMaterials.values(), this.unpackMaterial]) material.dispose();
     this.quad.geometry.dispose();
+  }
+}
+
+/** WebGLRenderer.setRenderTargetFramebuffer exists (for WebXR) but @types/three does not list it. */
+interface ExternalFramebufferRenderer {
+  setRenderTargetFramebuffer(target: WebGLRenderTarget, framebuffer: WebGLFramebuffer | null): void;
+}
+
+/**
+ * One set of FFT working storage: two array textures of four layers (the two working textures of
+ * fftPass.frag) and a framebuffer with all eight layers as colour attachments, so one pass writes
+ * a butterfly's four outputs to each texture.
+ */
+class LayeredSpectra {
+  readonly textures: [Texture, Texture];
+  private readonly arrays: [WebGLArrayRenderTarget, WebGLArrayRenderTarget];
+  /** Stands for the framebuffer in three.js's setRenderTarget; three.js allocates nothing for it. */
+  private readonly target: WebGLRenderTarget;
+  private framebuffer: WebGLFramebuffer | null = null;
+  /** The GL textures attached to `framebuffer`; they change when the context is lost and restored. */
+  private attached: WebGLTexture[] = [];
+
+  constructor(width: number, height: number, type: TextureDataType) {
+    const array = () =>
+      new WebGLArrayRenderTarget(width, height, 4, {
+        type,
+        format: RGBAFormat,
+        depthBuffer: false,
+        minFilter: NearestFilter,
+        magFilter: NearestFilter,
+        generateMipmaps: false,
+      });
+    this.arrays = [array(), array()];
+    this.textures = [this.arrays[0].texture, this.arrays[1].texture];
+    this.target = new WebGLRenderTarget(width, height, { depthBuffer: false, generateMipmaps: false });
+  }
+
+  /** Makes the eight layers the render target of the next draw. */
+  bind(renderer: WebGLRenderer): void {
+    const textures = this.arrays.map((array) => {
+      renderer.initRenderTarget(array);
+      // three.js keeps each texture's GL object in its property map (an internal it does not type).
+      return (renderer.properties.get(array.texture) as { __webglTexture: WebGLTexture }).__webglTexture;
+    });
+    if (this.framebuffer === null || textures.some((texture, i) => texture !== this.attached[i])) {
+      this.createFramebuffer(renderer, textures);
+    }
+    (renderer as unknown as ExternalFramebufferRenderer).setRenderTargetFramebuffer(this.target, this.framebuffer);
+    renderer.setRenderTarget(this.target);
+  }
+
+  private createFramebuffer(renderer: WebGLRenderer, textures: WebGLTexture[]): void {
+    const gl = renderer.getContext() as WebGL2RenderingContext;
+    this.deleteFramebuffer(renderer);
+    const framebuffer = gl.createFramebuffer();
+    renderer.state.bindFramebuffer(gl.FRAMEBUFFER, framebuffer);
+    const attachments: GLenum[] = [];
+    textures.forEach((texture, a) => {
+      for (let layer = 0; layer < 4; layer++) {
+        const attachment = gl.COLOR_ATTACHMENT0 + 4 * a + layer;
+        gl.framebufferTextureLayer(gl.FRAMEBUFFER, attachment, texture, 0, layer);
+        attachments.push(attachment);
+      }
+    });
+    gl.drawBuffers(attachments); // framebuffer state: set once
+    const status = gl.checkFramebufferStatus(gl.FRAMEBUFFER);
+    renderer.state.bindFramebuffer(gl.FRAMEBUFFER, null);
+    if (status !== gl.FRAMEBUFFER_COMPLETE) {
+      gl.deleteFramebuffer(framebuffer);
+      throw new Error(`GPU FFT: the layered framebuffer is incomplete (status 0x${status.toString(16)})`);
+    }
+    this.framebuffer = framebuffer;
+    this.attached = textures;
+  }
+
+  private deleteFramebuffer(renderer: WebGLRenderer): void {
+    const gl = renderer.getContext();
+    // After a lost and restored context the old framebuffer is already gone.
+    if (this.framebuffer !== null && gl.isFramebuffer(this.framebuffer)) gl.deleteFramebuffer(this.framebuffer);
+    this.framebuffer = null;
+  }
+
+  dispose(renderer: WebGLRenderer): void {
+    this.deleteFramebuffer(renderer);
+    for (const array of this.arrays) array.dispose();
   }
 }
 
@@ -222,16 +332,4 @@ function dataTexture(data: Float32Array, width: number, height: number, format: 
   texture.magFilter = NearestFilter;
   texture.needsUpdate = true;
   return texture;
-}
-
-function workTarget(n: number, type: TextureDataType): WebGLRenderTarget {
-  return new WebGLRenderTarget(n, n, {
-    count: 2,
-    type,
-    format: RGBAFormat,
-    depthBuffer: false,
-    minFilter: NearestFilter,
-    magFilter: NearestFilter,
-    generateMipmaps: false,
-  });
 }
