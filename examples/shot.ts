@@ -62,7 +62,6 @@ function start(): void {
   const ocean = new Ocean(renderer, options);
   const scene = new Scene();
   scene.add(ocean);
-  scene.background = ocean.background;
   const camera = new PerspectiveCamera(numberParameter(query, 'fov') ?? 50, width / height, 0.5, 1e4);
   const cameraText = query.get('camera');
   if (cameraText === null) {

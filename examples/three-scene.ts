@@ -1,6 +1,6 @@
 /**
  * The Ocean in an ordinary three.js scene: your renderer, camera, lights and controls; the sea is
- * one Object3D, its sky the scene background, and a crate floats on ocean.heightAt(x, z), tilted
+ * one Object3D that also draws its sky behind everything, and a crate floats on ocean.heightAt(x, z), tilted
  * to the local slope.
  *
  * Query parameters (for tests and screenshots): t=<seconds> freezes time, seed=<n>.
@@ -48,7 +48,6 @@ const ocean = new Ocean(renderer, {
   sunAzimuth,
 });
 scene.add(ocean);
-scene.background = ocean.background;
 
 // Light from where the ocean's sky has its sun, plus sky and sea bounce.
 const sun = new DirectionalLight(new Color(1, 0.95, 0.85), 2.5);

@@ -3,17 +3,17 @@
  * surface (OceanSurface) — for any scene.
  *
  *   const ocean = new Ocean(renderer, { windSpeed: 12, seed: 7 });
- *   scene.add(ocean);
- *   scene.background = ocean.background;
+ *   scene.add(ocean);                    // the sea and, behind everything, its sky
  *   renderer.setAnimationLoop((ms) => { ocean.update(ms / 1000); renderer.render(scene, camera); });
  *
  * The sea is the plane y = 0 of world space; give the camera a far plane of at least
  * ocean.horizonDistance (about 4000 camera heights) so the surface reaches the horizon. Owns everything it creates and frees it
  * in dispose().
  */
-import { Object3D, type Texture, type WebGLRenderer } from 'three';
+import { Object3D, type WebGLRenderer } from 'three';
 import { OceanSurface } from './render/oceanSurface';
 import type { OceanShadingOptions } from './render/oceanMaterial';
+import { SkyBackground } from './render/skyBackground';
 import { SkyEnvironment } from './render/skyEnvironment';
 import { CpuWaveFields } from './sim/cpuWaveFields';
 import { OceanSimulation, type SimulationOptions } from './sim/oceanSimulation';
@@ -45,6 +45,8 @@ export class Ocean extends Object3D {
   readonly simulation: OceanSimulation;
   readonly sky: SkyEnvironment;
   readonly surface: OceanSurface;
+  /** The sky behind everything (a child; set skyBackground.visible = false to show your own). */
+  readonly skyBackground: SkyBackground;
   private currentTime = 0;
   /** CPU copy of the fields for heightAt(), computed lazily for the current time. */
   private probe: { spectrum: InitialSpectrum; fields: CpuWaveFields; time: number } | null = null;
@@ -64,18 +66,13 @@ export class Ocean extends Object3D {
         derivatives: sim.uniforms.tDerivatives,
         patchSize: sim.uniforms.patchSize,
         environment: this.sky.environment,
-        environmentFlipX: this.sky.environmentFlipX,
         sunDirection: this.sky.skyUniforms.skySunDirection,
       },
       () => sim.parameters.patchSize / sim.parameters.resolution,
       shading,
     );
-    this.add(this.surface);
-  }
-
-  /** The sky cube texture, for scene.background (reassign after loading a face set). */
-  get background(): Texture {
-    return this.sky.environment.value;
+    this.skyBackground = new SkyBackground(this.sky);
+    this.add(this.surface, this.skyBackground);
   }
 
   /**
@@ -186,6 +183,7 @@ export class Ocean extends Object3D {
   dispose(): void {
     this.surface.removeFromParent();
     this.surface.dispose();
+    this.skyBackground.dispose();
     this.sky.dispose();
     this.simulation.dispose();
     this.probe = null;

@@ -20,7 +20,6 @@ async function frames(options: { resolution: number; width: number; height: numb
   camera.lookAt(60, 0, -80);
   const ocean = new Ocean(renderer, { resolution: options.resolution, seed: 7, path: 'gpu' });
   scene.add(ocean);
-  scene.background = ocean.background;
   const pixel = new Uint8Array(4);
   const sync = () => gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
   const samples: number[] = [];

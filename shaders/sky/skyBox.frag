@@ -1,9 +1,11 @@
-// The analytic sky in the direction of this fragment, linear HDR (no tone mapping, no sRGB).
+// The analytic sky in the direction of this fragment, linear HDR, RGBM-encoded for
+// SkyEnvironment's 8-bit cube (rgbm.glsl).
 #include "sky/analyticSky.glsl"
+#include "sky/rgbm.glsl"
 
 in vec3 vDirection;
 out vec4 fragColor;
 
 void main() {
-  fragColor = vec4(skyRadiance(vDirection), 1.0);
+  fragColor = rgbmEncode(skyRadiance(vDirection));
 }

@@ -85,12 +85,12 @@ void main() {
 
   vec3 colour;
   if (shadingMode == SHADING_REFLECTION) {
-    colour = environmentRadiance(reflected, 0.0);
+    colour = environmentRadiance(reflected);
   } else if (shadingMode == SHADING_REFRACTION) {
-    colour = throughWater(environmentRadiance(refracted, 0.0), refracted, absorption, scatterColour, viewDepth);
+    colour = throughWater(environmentRadiance(refracted), refracted, absorption, scatterColour, viewDepth);
   } else {
-    vec3 sky = environmentRadiance(reflected, 0.0);
-    vec3 water = throughWater(environmentRadiance(refracted, 0.0), refracted, absorption, scatterColour, viewDepth);
+    vec3 sky = environmentRadiance(reflected);
+    vec3 water = throughWater(environmentRadiance(refracted), refracted, absorption, scatterColour, viewDepth);
     vec3 glint = sunColour * reflectance * pow(max(dot(reflected, sunDirection), 0.0), sunShininess);
     colour = reflectance * sky + (1.0 - reflectance) * water + caustic * causticColour + glint;
   }

@@ -48,14 +48,10 @@ const ocean = new Ocean(renderer, {
 });
 ocean.surface.material.wireframe = state.wireframe;
 scene.add(ocean);
-scene.background = ocean.background;
 if (state.skybox !== 'generated') {
   const base = state.skybox.endsWith('/') ? state.skybox : `${state.skybox}/`;
   // A face set that fails to load (404, CORS, not an image) leaves the generated sky in use.
-  ocean.sky.loadFaces(skyboxFaceUrls(base)).then(
-    () => (scene.background = ocean.background),
-    (error: Error) => overlay.warn('skybox', `skybox: ${error.message}`),
-  );
+  ocean.sky.loadFaces(skyboxFaceUrls(base)).catch((error: Error) => overlay.warn('skybox', `skybox: ${error.message}`));
 }
 
 const [x, y, z, yaw, pitch] = state.cam;

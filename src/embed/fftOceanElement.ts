@@ -337,7 +337,6 @@ export class FftOceanElement extends ElementBase {
     renderer.toneMapping = ACESFilmicToneMapping;
     const scene = new Scene();
     scene.add(ocean);
-    scene.background = ocean.background;
     const camera = new PerspectiveCamera(50, 16 / 9, 0.5, 1e4);
     this.root.append(canvas);
 
@@ -393,7 +392,6 @@ export class FftOceanElement extends ElementBase {
       live.intersectionObserver.disconnect();
       live.removeListeners();
       live.scene.remove(live.ocean);
-      live.scene.background = null;
       live.ocean.dispose();
       live.renderer.dispose();
       // Give the context back now rather than at garbage collection: browsers allow few at once.

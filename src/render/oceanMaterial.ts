@@ -32,9 +32,8 @@ export interface OceanMaterialInputs {
   displacement: { value: Texture | null };
   derivatives: { value: Texture | null };
   patchSize: { value: number };
-  /** The environment cube and whether its x is mirrored (SkyEnvironment.environment / environmentFlipX). */
+  /** The environment cube, RGBM-encoded (SkyEnvironment.environment). */
   environment: { value: Texture | null };
-  environmentFlipX: { value: number };
   /** Towards the sun, unit length (SkyEnvironment.skyUniforms.skySunDirection: the sky's own sun). */
   sunDirection: { value: Vector3 };
 }
@@ -75,7 +74,6 @@ export class OceanMaterial extends ShaderMaterial {
     this.uniforms.tDerivatives = inputs.derivatives;
     this.uniforms.patchSize = inputs.patchSize;
     this.uniforms.skyEnvironment = inputs.environment;
-    this.uniforms.skyEnvironmentFlipX = inputs.environmentFlipX;
     this.uniforms.sunDirection = inputs.sunDirection;
     this.setShading(options);
   }

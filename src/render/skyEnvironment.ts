@@ -1,32 +1,30 @@
 /**
  * The sky and the deep water below the horizon, as one cube map the ocean reflects and refracts
- * and the scene shows as its background.
+ * and SkyBackground (skyBackground.ts) shows behind everything.
  *
  * By default the cube is the analytic sky of shaders/sky/analyticSky.glsl (clear-sky scattering,
- * a sun disk, dark deep-water blue below the horizon), rendered in linear HDR into a half-float
- * cube render target with mipmaps (rough reflections sample coarser mips). A set of six face
- * images (e.g. public/skybox/clear-afternoon/, made by scripts/make-skybox-faces.mjs) can replace
- * it; if they fail to load, the generated sky stays in use.
+ * a sun disk, dark deep-water blue below the horizon). A set of six face images (e.g.
+ * public/skybox/clear-afternoon/, made by scripts/make-skybox-faces.mjs) can replace it; if they
+ * fail to load, the generated sky stays in use. Either is drawn into one cube render target in
+ * linear HDR, RGBM-encoded in 8 bits and without mipmaps (shaders/sky/rgbm.glsl says why: under
+ * SwiftShader that samples several times faster than half floats); read it through
+ * shaders/sky/environmentLookup.glsl.
  *
- * Owns: the cube render target, the sky box geometry and material, the cube camera's scene, and
- * the loaded face texture (if any). dispose() frees all of them.
+ * Owns: the cube render target, the sky box geometry and its two materials (analytic sky, face
+ * copy), the cube camera's scene, and the loaded face texture (if any, kept to redraw the cube
+ * after a lost context). dispose() frees all of them.
  *
  * Usage:
  *   const sky = new SkyEnvironment(renderer, { sunElevation: 30, sunAzimuth: 40 });
- *   scene.background = sky.environment.value;
+ *   scene.add(new SkyBackground(sky.environment));
  *   oceanMaterial.uniforms.skyEnvironment = sky.environment;          // bound once, stays current
- *   oceanMaterial.uniforms.skyEnvironmentFlipX = sky.environmentFlipX; // see environmentLookup.glsl
  *   oceanMaterial.uniforms.sunDirection = sky.skyUniforms.skySunDirection; // live; sunDirection is a copy
  *   await sky.loadFaces(skyboxFaceUrls('/skybox/clear-afternoon/'));   // optional
- *   scene.background = sky.environment.value; // scene.background is a plain reference: reassign
  *
- * The generated cube is linear HDR (sky about 0.05–2, the sun disk several hundred), so the
- * renderer's tone mapping applies to it. Face images are LDR sRGB: three.js shows an sRGB
- * background without tone mapping, and reflections of them are never brighter than 1.
+ * The generated sky is linear HDR (sky about 0.05–2, the sun disk clipped at the RGBM range), so
+ * the renderer's tone mapping applies to it. Face images are LDR sRGB, never brighter than 1.
  *
  * Conventions: directions are world space with y up; azimuth is measured from +x towards +z.
- * three.js mirrors x when it samples a cube texture made from images (see
- * shaders/sky/environmentLookup.glsl); environmentFlipX says which kind is in use.
  */
 import {
   BackSide,
@@ -35,15 +33,14 @@ import {
   CubeCamera,
   CubeTextureLoader,
   GLSL3,
-  HalfFloatType,
   LinearFilter,
-  LinearMipmapLinearFilter,
   LoadingManager,
   Mesh,
   RGBAFormat,
   Scene,
   ShaderMaterial,
   SRGBColorSpace,
+  UnsignedByteType,
   Vector3,
   WebGLCubeRenderTarget,
   type CubeTexture,
@@ -99,10 +96,8 @@ export function sunDirectionFromAngles(elevationDeg: number, azimuthDeg: number,
 const FACE_ORDER = ['px', 'nx', 'py', 'ny', 'pz', 'nz'] as const;
 
 export class SkyEnvironment {
-  /** The cube in use (generated or loaded). A stable uniform object: bind it once. */
+  /** The cube (RGBM, see shaders/sky/rgbm.glsl). A stable uniform object: bind it once. */
   readonly environment: { value: Texture };
-  /** 1 while the generated cube is in use, −1 for a loaded face set (three.js mirrors those). */
-  readonly environmentFlipX = { value: 1 };
   /**
    * The analytic sky's uniforms (shared objects, updated in place: skySunDirection.value is the
    * live sun direction), for materials that include analyticSky.glsl or need the sun.
@@ -118,6 +113,8 @@ export class SkyEnvironment {
   private readonly cubeCamera: CubeCamera;
   private readonly scene = new Scene();
   private readonly box: Mesh<BoxGeometry, ShaderMaterial>;
+  private readonly analyticSky: ShaderMaterial;
+  private readonly faceCopy: ShaderMaterial;
   private readonly sun = new Vector3();
   private elevation = 0;
   private azimuth = 0;
@@ -148,11 +145,11 @@ export class SkyEnvironment {
     }
 
     this.target = new WebGLCubeRenderTarget(resolution, {
-      type: HalfFloatType,
+      type: UnsignedByteType,
       format: RGBAFormat,
       magFilter: LinearFilter,
-      minFilter: LinearMipmapLinearFilter,
-      generateMipmaps: true,
+      minFilter: LinearFilter,
+      generateMipmaps: false,
       depthBuffer: false,
     });
     this.target.texture.name = 'skyEnvironment';
@@ -166,17 +163,20 @@ export class SkyEnvironment {
       // Linear RGB; about sRGB (13, 26, 52): the report's "very dark blue" ocean depth.
       skyDeepWaterColor: { value: new Color(0.004, 0.01, 0.035) },
     };
-    const material = new ShaderMaterial({
-      name: 'analyticSky',
-      glslVersion: GLSL3,
-      vertexShader: shaderSource('sky/skyBox.vert'),
-      fragmentShader: shaderSource('sky/skyBox.frag'),
-      uniforms: this.skyUniforms,
-      side: BackSide,
-      depthTest: false,
-      depthWrite: false,
-    });
-    this.box = new Mesh(new BoxGeometry(1, 1, 1), material);
+    const cubeMaterial = (name: string, fragmentShader: string, uniforms: ShaderMaterial['uniforms']) =>
+      new ShaderMaterial({
+        name,
+        glslVersion: GLSL3,
+        vertexShader: shaderSource('sky/skyBox.vert'),
+        fragmentShader: shaderSource(fragmentShader),
+        uniforms,
+        side: BackSide,
+        depthTest: false,
+        depthWrite: false,
+      });
+    this.analyticSky = cubeMaterial('analyticSky', 'sky/skyBox.frag', this.skyUniforms);
+    this.faceCopy = cubeMaterial('skyFaceCopy', 'sky/copyFaces.frag', { tFaces: { value: null } });
+    this.box = new Mesh(new BoxGeometry(1, 1, 1), this.analyticSky);
     this.box.frustumCulled = false;
     this.scene.add(this.box);
 
@@ -201,13 +201,18 @@ export class SkyEnvironment {
 
   /** Whether a loaded face set (rather than the generated sky) is in use. */
   get usingFaces(): boolean {
-    return this.environment.value !== this.target.texture;
+    return this.loaded !== null;
+  }
+
+  /** The loaded face set in use (sRGB images), or null for the generated sky. */
+  get faces(): CubeTexture | null {
+    return this.loaded;
   }
 
   /**
    * Moves the sun (degrees; elevation in [-90, 90], azimuth from +x towards +z) and re-renders the
    * generated cube. Throws, keeping the old sun, on invalid values. A loaded face set keeps its own
-   * sun: only sunDirection and the generated cube change.
+   * sun: only sunDirection changes.
    */
   setSun(elevationDeg: number, azimuthDeg: number): void {
     if (this.disposed) throw new Error('SkyEnvironment.setSun: the environment has been disposed');
@@ -253,12 +258,9 @@ export class SkyEnvironment {
         }
         texture.colorSpace = SRGBColorSpace;
         texture.name = 'skyEnvironmentFaces';
-        // Upload now so the first frame that samples it does not stall.
-        this.renderer.initTexture(texture);
         this.loaded?.dispose();
         this.loaded = texture;
-        this.environment.value = texture;
-        this.environmentFlipX.value = -1;
+        this.render();
         resolve();
       };
       const loader = new CubeTextureLoader(manager);
@@ -270,18 +272,19 @@ export class SkyEnvironment {
   /** Uses the generated sky again, freeing a loaded face set. */
   useGeneratedSky(): void {
     this.generation++;
-    this.environment.value = this.target.texture;
-    this.environmentFlipX.value = 1;
+    const hadFaces = this.loaded !== null;
     this.loaded?.dispose();
     this.loaded = null;
+    if (hadFaces && !this.disposed) this.render();
   }
 
   dispose(): void {
-    this.useGeneratedSky();
     this.disposed = true;
+    this.useGeneratedSky();
     this.renderer.domElement.removeEventListener?.('webglcontextrestored', this.onContextRestored);
     this.target.dispose();
-    this.box.material.dispose();
+    this.analyticSky.dispose();
+    this.faceCopy.dispose();
     this.box.geometry.dispose();
   }
 
@@ -289,10 +292,13 @@ export class SkyEnvironment {
     this.elevation = elevationDeg;
     this.azimuth = azimuthDeg;
     sunDirectionFromAngles(elevationDeg, azimuthDeg, this.sun);
-    this.render();
+    if (!this.loaded) this.render();
   }
 
+  /** Draws the cube from the loaded faces if there are any, else from the analytic sky. */
   private render(): void {
+    this.faceCopy.uniforms.tFaces.value = this.loaded;
+    this.box.material = this.loaded ? this.faceCopy : this.analyticSky;
     const renderer = this.renderer;
     const previousTarget = renderer.getRenderTarget();
     const previousFace = renderer.getActiveCubeFace();

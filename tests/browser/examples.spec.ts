@@ -95,7 +95,7 @@ test('three-scene.html: the ocean in a plain three.js scene, a crate riding heig
     const gl = renderer.getContext();
     const pixel = new Uint8Array(4);
     gl.readPixels(gl.drawingBufferWidth >> 1, gl.drawingBufferHeight - 3, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
-    return { samples, background: scene.background === ocean.background, sky: [...pixel] };
+    return { samples, background: ocean.skyBackground.parent === ocean && ocean.parent === scene, sky: [...pixel] };
   });
   for (const { y, expected, tilt } of result.samples) {
     expect(y).toBeCloseTo(expected, 5);

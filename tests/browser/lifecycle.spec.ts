@@ -50,7 +50,6 @@ test('50 Ocean create/dispose cycles on one renderer leave GPU memory and listen
     const cycle = (i: number) => {
       const ocean = new Ocean(renderer, { resolution: 32, seed: i, path: i % 2 ? 'js' : 'auto', worker: false });
       scene.add(ocean);
-      scene.background = ocean.background;
       ocean.update(1.5 + i);
       renderer.render(scene, camera);
       ocean.setParameters({ windSpeed: 10 + (i % 5) }); // rebuilds the simulation's textures
@@ -59,7 +58,6 @@ test('50 Ocean create/dispose cycles on one renderer leave GPU memory and listen
       renderer.render(scene, camera);
       ocean.heightAt(1, 2);
       scene.remove(ocean);
-      scene.background = null;
       ocean.dispose();
     };
     window.lifecycle = { renderer, memory, cycle, canvas: renderer.domElement };
@@ -68,8 +66,7 @@ test('50 Ocean create/dispose cycles on one renderer leave GPU memory and listen
   const result = await page.evaluate(() => {
     const { memory, cycle } = window.lifecycle;
     const empty = memory();
-    // One warm-up cycle: three.js keeps a box (one geometry) to draw cube backgrounds for the
-    // renderer's lifetime, and the first render sets up its own state.
+    // One warm-up cycle: the first render sets up three.js's own state.
     cycle(0);
     const baseline = memory();
     for (let i = 1; i <= 50; i++) cycle(i);

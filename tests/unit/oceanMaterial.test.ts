@@ -9,7 +9,6 @@ function material(): OceanMaterial {
     derivatives: { value: null },
     patchSize: { value: 250 },
     environment: { value: null },
-    environmentFlipX: { value: 1 },
     sunDirection: { value: new Vector3(0, 1, 0) },
   });
 }

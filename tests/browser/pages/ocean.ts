@@ -19,6 +19,7 @@ import {
   WebGLRenderTarget,
 } from 'three';
 import { Ocean } from '../../../src/ocean';
+import { shaderSource } from '../../../src/shaderSource';
 import { OceanMaterial, type OceanShadingOptions } from '../../../src/render/oceanMaterial';
 import { OceanSurface } from '../../../src/render/oceanSurface';
 import { CpuWaveFields } from '../../../src/sim/cpuWaveFields';
@@ -37,16 +38,22 @@ const scene = new Scene();
 const camera = new PerspectiveCamera(55, width / height, 0.5, 2e7);
 const sunDirection = new Vector3(0.3, 0.5, -0.8).normalize();
 
-// A uniform-colour environment (for shading probes).
+// A uniform-colour environment (for shading probes), in the RGBM encoding the surface decodes
+// (shaders/sky/rgbm.glsl): in a float cube, (colour / range, 1) decodes exactly to the colour.
+const RGBM_RANGE = Number(/SKY_RGBM_RANGE = ([\d.]+)/.exec(shaderSource('sky/rgbm.glsl'))![1]);
 const uniformCube = new WebGLCubeRenderTarget(16, { type: FloatType });
 function setUniformEnvironment(colour: [number, number, number]): void {
-  renderer.setClearColor(new Color().fromArray(colour));
+  // three.js converts a clear colour to the colour space of the target current when it is set:
+  // set it with the (linear) cube current, not the (sRGB) canvas.
+  renderer.setRenderTarget(uniformCube);
+  renderer.setClearColor(new Color().fromArray(colour).multiplyScalar(1 / RGBM_RANGE));
   uniformCube.clear(renderer, true, true, true);
+  renderer.setRenderTarget(null);
   renderer.setClearColor(0x000000);
+  scene.background = new Color().fromArray(colour); // the same sky, for pixels the sea leaves
 }
 setUniformEnvironment([0.5, 0.6, 0.7]);
 const environment = { value: uniformCube.texture };
-scene.background = uniformCube.texture;
 
 let simulation: OceanSimulation | null = null;
 let surface: OceanSurface | null = null;
@@ -58,7 +65,7 @@ function setup(parameters: Partial<SimulationParameters>, shading: OceanShadingO
   simulation = new OceanSimulation(renderer, parameters, { path: 'gpu', worker: false });
   const sim = simulation;
   surface = new OceanSurface(
-    { displacement: sim.uniforms.tDisplacement, derivatives: sim.uniforms.tDerivatives, patchSize: sim.uniforms.patchSize, environment, environmentFlipX: { value: 1 }, sunDirection: { value: sunDirection } },
+    { displacement: sim.uniforms.tDisplacement, derivatives: sim.uniforms.tDerivatives, patchSize: sim.uniforms.patchSize, environment, sunDirection: { value: sunDirection } },
     () => sim.parameters.patchSize / sim.parameters.resolution,
     shading,
   );
@@ -181,7 +188,7 @@ function geometryCheck(t: number, withRestPoints = false) {
   const captureWidth = 1024;
   const captureHeight = Math.ceil(count / captureWidth);
   const material = new OceanMaterial(
-    { displacement: sim.uniforms.tDisplacement, derivatives: sim.uniforms.tDerivatives, patchSize: sim.uniforms.patchSize, environment, environmentFlipX: { value: 1 }, sunDirection: { value: sunDirection } },
+    { displacement: sim.uniforms.tDisplacement, derivatives: sim.uniforms.tDerivatives, patchSize: sim.uniforms.patchSize, environment, sunDirection: { value: sunDirection } },
     {},
     { CAPTURE_POSITIONS: 1 },
   );

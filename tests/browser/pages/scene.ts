@@ -32,7 +32,6 @@ const ocean = new Ocean(renderer, {
 });
 ocean.surface.material.wireframe = query.get('wireframe') === '1';
 const scene = new Scene().add(ocean);
-scene.background = ocean.background;
 const [position, target] = VIEWS[query.get('view') ?? 'default'];
 const camera = new PerspectiveCamera(55, width / height, 0.5, 1e5);
 camera.position.fromArray(position);

@@ -1,7 +1,8 @@
 /**
- * Test page for SkyEnvironment: renders small views of its cube (as scene.background, the way the
- * app shows it, or through shaders/sky/environmentLookup.glsl, the way materials sample it) into
- * a float target and hands the Playwright tests pixel summaries in linear RGB.
+ * Test page for SkyEnvironment: renders small views of its cube (through SkyBackground, the way
+ * the app shows it, or through shaders/sky/environmentLookup.glsl, the way materials sample it),
+ * or of the analytic sky shader itself, into a float target and hands the Playwright tests pixel
+ * summaries in linear RGB.
  */
 import {
   BackSide,
@@ -15,10 +16,9 @@ import {
   Vector3,
   WebGLRenderer,
   WebGLRenderTarget,
-  type CubeTexture,
-  type Texture,
 } from 'three';
 import { shaderSource } from '../../../src/shaderSource';
+import { SkyBackground } from '../../../src/render/skyBackground';
 import {
   SHIPPED_SKYBOX,
   SkyEnvironment,
@@ -33,23 +33,31 @@ const camera = new PerspectiveCamera(20, 1, 0.1, 10);
 const viewScene = new Scene();
 let view = new WebGLRenderTarget(1, 1, { type: FloatType });
 let sky: SkyEnvironment | null = null;
-/** The generated cube of the current SkyEnvironment, as it was right after construction. */
-let generatedTexture: Texture | null = null;
+/** The current SkyEnvironment's background, made on the first view through it. */
+let background: SkyBackground | null = null;
 
-const lookupMaterial = new ShaderMaterial({
-  glslVersion: GLSL3,
-  vertexShader: shaderSource('sky/skyBox.vert'),
-  fragmentShader: `${shaderSource('sky/environmentLookup.glsl')}
+/** A box around the eye showing `radiance(direction)` from the given GLSL. */
+function directionBox(glsl: string, uniforms: ShaderMaterial['uniforms']): Mesh<BoxGeometry, ShaderMaterial> {
+  const material = new ShaderMaterial({
+    glslVersion: GLSL3,
+    vertexShader: shaderSource('sky/skyBox.vert'),
+    fragmentShader: `${glsl}
 in vec3 vDirection;
 out vec4 fragColor;
-void main() { fragColor = vec4(environmentRadiance(normalize(vDirection), 0.0), 1.0); }`,
-  uniforms: { skyEnvironment: { value: null }, skyEnvironmentFlipX: { value: 1 } },
-  side: BackSide,
-  depthTest: false,
-  depthWrite: false,
-});
-const lookupBox = new Mesh(new BoxGeometry(1, 1, 1), lookupMaterial);
-lookupBox.frustumCulled = false;
+void main() { fragColor = vec4(radiance(normalize(vDirection)), 1.0); }`,
+    uniforms,
+    side: BackSide,
+    depthTest: false,
+    depthWrite: false,
+  });
+  const box = new Mesh(new BoxGeometry(1, 1, 1), material);
+  box.frustumCulled = false;
+  return box;
+}
+const lookupBox = directionBox(`${shaderSource('sky/environmentLookup.glsl')}
+vec3 radiance(vec3 d) { return environmentRadiance(d); }`, { skyEnvironment: { value: null } });
+const analyticBox = directionBox(`${shaderSource('sky/analyticSky.glsl')}
+vec3 radiance(vec3 d) { return skyRadiance(d); }`, {});
 
 export type Vec3 = [number, number, number];
 
@@ -69,7 +77,8 @@ export interface ViewSummary {
 }
 
 export interface ViewOptions {
-  via?: 'background' | 'lookup';
+  /** SkyBackground, environmentLookup.glsl, or the analytic sky shader (not the cube). */
+  via?: 'background' | 'lookup' | 'analytic';
   fov?: number;
   size?: number;
   blocks?: number;
@@ -95,14 +104,17 @@ function render(direction: Vec3, { via = 'background', fov = 20, size = 17, bloc
   camera.position.set(0, 0, 0);
   camera.lookAt(d);
 
+  viewScene.clear();
   if (via === 'background') {
-    viewScene.background = s.environment.value;
-    viewScene.remove(lookupBox);
-  } else {
-    viewScene.background = null;
-    lookupMaterial.uniforms.skyEnvironment.value = s.environment.value;
-    lookupMaterial.uniforms.skyEnvironmentFlipX.value = s.environmentFlipX.value;
+    background ??= new SkyBackground(s);
+    viewScene.add(background);
+  } else if (via === 'lookup') {
+    lookupBox.material.uniforms.skyEnvironment = s.environment;
     viewScene.add(lookupBox);
+  } else {
+    analyticBox.material.uniforms = { ...s.skyUniforms };
+    analyticBox.material.needsUpdate = true;
+    viewScene.add(analyticBox);
   }
   renderer.setRenderTarget(view);
   renderer.render(viewScene, camera);
@@ -152,9 +164,8 @@ const skyHarness = {
   shippedUrls: skyboxFaceUrls(`/skybox/${SHIPPED_SKYBOX.name}/`),
 
   create(options?: SkyEnvironmentOptions): void {
-    sky?.dispose();
+    disposeSky();
     sky = new SkyEnvironment(renderer, options);
-    generatedTexture = sky.environment.value;
   },
 
   /** A view of the environment in use along `direction`. */
@@ -181,7 +192,7 @@ const skyHarness = {
     const s = current();
     const pending = s.loadFaces(urls);
     if (then === 'useGeneratedSky') s.useGeneratedSky();
-    if (then === 'dispose') s.dispose();
+    if (then === 'dispose') disposeSky();
     let error: string | null = null;
     try {
       await pending;
@@ -195,28 +206,36 @@ const skyHarness = {
   describe: () => describe(),
   memory: () => ({ ...renderer.info.memory }),
   dispose(): void {
-    current().dispose();
-    sky = null;
+    current();
+    disposeSky();
   },
 };
 
-/** The environment texture in use, as plain data. */
+function disposeSky(): void {
+  background?.dispose();
+  background = null;
+  sky?.dispose();
+  sky = null;
+}
+
+/** The environment and the loaded faces in use (if any), as plain data. */
 function describe() {
-  const s = current();
-  const texture = s.environment.value as CubeTexture;
-  const images = Array.isArray(texture.images) ? (texture.images as HTMLImageElement[]) : [];
+  const s = sky;
+  const faces = s?.faces ?? null;
+  const images = faces && Array.isArray(faces.images) ? (faces.images as HTMLImageElement[]) : [];
   return {
-    isCubeTexture: texture.isCubeTexture === true,
-    isRenderTargetTexture: texture.isRenderTargetTexture,
-    isGenerated: texture === generatedTexture,
-    flipX: s.environmentFlipX.value,
-    usingFaces: s.usingFaces,
-    colorSpace: texture.colorSpace,
-    images: images.map((image) => ({
-      complete: image instanceof HTMLImageElement && image.complete,
-      width: image instanceof HTMLImageElement ? image.naturalWidth : 0,
-      src: image instanceof HTMLImageElement ? image.src : '',
-    })),
+    disposed: s === null,
+    environmentIsRenderTarget: s?.environment.value.isRenderTargetTexture ?? false,
+    usingFaces: s?.usingFaces ?? false,
+    faces: faces && {
+      isCubeTexture: faces.isCubeTexture === true,
+      colorSpace: faces.colorSpace,
+      images: images.map((image) => ({
+        complete: image instanceof HTMLImageElement && image.complete,
+        width: image instanceof HTMLImageElement ? image.naturalWidth : 0,
+        src: image instanceof HTMLImageElement ? image.src : '',
+      })),
+    },
   };
 }
 
