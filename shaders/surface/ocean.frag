@@ -23,7 +23,6 @@ uniform vec3 scatterColour;
 uniform float viewDepth;
 uniform float causticPower;
 uniform vec3 causticColour;
-uniform int shadingMode;       // SHADING_* below
 uniform float heightScale;     // metres shown as full white in the height mode
 
 varying vec2 vUv;
@@ -35,6 +34,7 @@ varying float vLod;
 uniform bool captureRestPoint;
 #endif
 
+// SHADING_MODE (defined by OceanMaterial, the index in its SHADING_MODES) is one of:
 #define SHADING_FULL 0
 #define SHADING_FRESNEL_CONSTANT 1  // report Figure 7
 #define SHADING_REFLECTION 2        // report Figure 10, left
@@ -74,28 +74,25 @@ void main() {
 
   // The report's false-colour figures are shown exactly, without tone mapping or colour space
   // conversion (its OpenGL output had none); radiance is tone-mapped as in the full picture.
-  vec3 displayColour = vec3(-1.0);
-  if (shadingMode == SHADING_FRESNEL_CONSTANT) {
-    displayColour = mix(vec3(0.0, 0.3, 0.4), vec3(0.64, 0.84, 1.0), reflectance);
-  } else if (shadingMode == SHADING_CAUSTICS) {
-    displayColour = vec3(caustic);
-  } else if (shadingMode == SHADING_HEIGHT) {
-    displayColour = vec3(clamp(0.5 + 0.5 * vWorldPosition.y / heightScale, 0.0, 1.0));
-  }
-
-  vec3 colour;
-  if (shadingMode == SHADING_REFLECTION) {
-    colour = environmentRadiance(reflected);
-  } else if (shadingMode == SHADING_REFRACTION) {
-    colour = throughWater(environmentRadiance(refracted), refracted, absorption, scatterColour, viewDepth);
-  } else {
-    vec3 sky = environmentRadiance(reflected);
-    vec3 water = throughWater(environmentRadiance(refracted), refracted, absorption, scatterColour, viewDepth);
-    vec3 glint = sunColour * reflectance * pow(max(dot(reflected, sunDirection), 0.0), sunShininess);
-    colour = reflectance * sky + (1.0 - reflectance) * water + caustic * causticColour + glint;
-  }
+#if SHADING_MODE == SHADING_FRESNEL_CONSTANT
+  gl_FragColor = vec4(mix(vec3(0.0, 0.3, 0.4), vec3(0.64, 0.84, 1.0), reflectance), 1.0);
+#elif SHADING_MODE == SHADING_CAUSTICS
+  gl_FragColor = vec4(vec3(caustic), 1.0);
+#elif SHADING_MODE == SHADING_HEIGHT
+  gl_FragColor = vec4(vec3(clamp(0.5 + 0.5 * vWorldPosition.y / heightScale, 0.0, 1.0)), 1.0);
+#else
+  #if SHADING_MODE == SHADING_REFLECTION
+  vec3 colour = environmentRadiance(reflected);
+  #elif SHADING_MODE == SHADING_REFRACTION
+  vec3 colour = throughWater(environmentRadiance(refracted), refracted, absorption, scatterColour, viewDepth);
+  #else
+  vec3 sky = environmentRadiance(reflected);
+  vec3 water = throughWater(environmentRadiance(refracted), refracted, absorption, scatterColour, viewDepth);
+  vec3 glint = sunColour * reflectance * pow(max(dot(reflected, sunDirection), 0.0), sunShininess);
+  vec3 colour = reflectance * sky + (1.0 - reflectance) * water + caustic * causticColour + glint;
+  #endif
   gl_FragColor = vec4(colour, 1.0);
   #include <tonemapping_fragment>
   #include <colorspace_fragment>
-  if (displayColour.r >= 0.0) gl_FragColor = vec4(displayColour, 1.0);
+#endif
 }

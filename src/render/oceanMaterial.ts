@@ -41,7 +41,9 @@ export interface OceanMaterialInputs {
 export class OceanMaterial extends ShaderMaterial {
   constructor(inputs: OceanMaterialInputs, options: OceanShadingOptions = {}, defines: Record<string, unknown> = {}) {
     super({
-      defines: { RING_COUNT, ...defines },
+      // SHADING_MODE is a define, not a uniform: a mode change recompiles (rare), and the full
+      // shading runs without the debug modes' branches (a few per cent of a SwiftShader frame).
+      defines: { RING_COUNT, SHADING_MODE: 0, ...defines },
       vertexShader: shaderSource('surface/ocean.vert'),
       fragmentShader: shaderSource('surface/ocean.frag'),
       side: DoubleSide,
@@ -61,7 +63,6 @@ export class OceanMaterial extends ShaderMaterial {
           viewDepth: { value: 4 },
           causticPower: { value: 32 },
           causticColour: { value: new Vector3(0.12, 0.12, 0.12) },
-          shadingMode: { value: 0 },
           heightScale: { value: 3 },
           captureRestPoint: { value: false },
           captureWidth: { value: 1 },
@@ -103,7 +104,10 @@ export class OceanMaterial extends ShaderMaterial {
     if (options.scatterColour) u.scatterColour.value.fromArray(options.scatterColour);
     if (options.causticPower !== undefined) u.causticPower.value = options.causticPower;
     if (options.causticColour) u.causticColour.value.fromArray(options.causticColour);
-    if (options.shadingMode) u.shadingMode.value = SHADING_MODES.indexOf(options.shadingMode);
+    if (options.shadingMode && SHADING_MODES.indexOf(options.shadingMode) !== this.defines.SHADING_MODE) {
+      this.defines.SHADING_MODE = SHADING_MODES.indexOf(options.shadingMode);
+      this.needsUpdate = true;
+    }
   }
 
   get shading(): Required<OceanShadingOptions> {
@@ -114,7 +118,7 @@ export class OceanMaterial extends ShaderMaterial {
       scatterColour: u.scatterColour.value.toArray(),
       causticPower: u.causticPower.value,
       causticColour: u.causticColour.value.toArray(),
-      shadingMode: SHADING_MODES[u.shadingMode.value],
+      shadingMode: SHADING_MODES[this.defines.SHADING_MODE as number],
     };
   }
 }

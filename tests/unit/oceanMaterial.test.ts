@@ -45,6 +45,6 @@ describe('OceanMaterial shading options', () => {
     expect(m.uniforms.iorWater.value).toBe(1.5);
     expect(m.uniforms.absorption.value.toArray()).toEqual([1, 2, 3]);
     expect(m.uniforms.causticPower.value).toBe(8);
-    expect(m.uniforms.shadingMode.value).toBe(SHADING_MODES.indexOf('caustics'));
+    expect(m.defines.SHADING_MODE).toBe(SHADING_MODES.indexOf('caustics'));
   });
 });
