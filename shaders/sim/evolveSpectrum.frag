@@ -3,8 +3,12 @@
 // their packing are listed in src/sim/waveFieldLayout.ts.
 //   h̃(k, t) = h̃0(k)·e^{iωt} + h̃0*(−k)·e^{−iωt}   (Tessendorf 2001, eq. 26)
 // Each fragment evolves four wave vectors, columns b + s·N/4 of row `line`, and writes them in
-// the FFT's LAYOUT_QUARTERS (quarterLayout.glsl): column b + s·N/4 to texel (b, line) of layer s.
+// the FFT's QUARTERS layout (quarterLayout.glsl): column b + s·N/4 to texel (b, line) of layer s.
+// With FIRST_RADIX2 (log2 N odd) it also does the first FFT pass along x, radix 2 (fftPass.frag),
+// whose two butterflies take exactly these four columns, and writes the AFTER_RADIX2 layout:
+// one pass fewer.
 #include "common/complex.glsl"
+#include "sim/butterfly.glsl"
 
 uniform highp sampler2D tAmplitudes;   // (h̃0(k), h̃0*(−k))
 uniform highp sampler2D tWaveVectors;  // (kx, kz, 1/k, m), see src/sim/spectrum.ts
@@ -44,8 +48,26 @@ void main() {
   ivec2 fragment = ivec2(gl_FragCoord.xy);
   int quarter = 1 << (sizeLog2 - 2);
   // Fragment outputs take constant indexes only, so the four columns are written out.
-  evolve(fragment, displacementSpectra[0], derivativeSpectra[0]);
-  evolve(fragment + ivec2(quarter, 0), displacementSpectra[1], derivativeSpectra[1]);
-  evolve(fragment + ivec2(2 * quarter, 0), displacementSpectra[2], derivativeSpectra[2]);
-  evolve(fragment + ivec2(3 * quarter, 0), displacementSpectra[3], derivativeSpectra[3]);
+  vec4 displacement0, displacement1, displacement2, displacement3;
+  vec4 derivatives0, derivatives1, derivatives2, derivatives3;
+  evolve(fragment, displacement0, derivatives0);
+  evolve(fragment + ivec2(quarter, 0), displacement1, derivatives1);
+  evolve(fragment + ivec2(2 * quarter, 0), displacement2, derivatives2);
+  evolve(fragment + ivec2(3 * quarter, 0), displacement3, derivatives3);
+#if FIRST_RADIX2
+  // Butterflies i = b (columns b, b + N/2) and i = b + N/4 (columns b + N/4, b + 3N/4).
+  butterfly2(displacement0, displacement2, displacementSpectra[0], displacementSpectra[1]);
+  butterfly2(displacement1, displacement3, displacementSpectra[2], displacementSpectra[3]);
+  butterfly2(derivatives0, derivatives2, derivativeSpectra[0], derivativeSpectra[1]);
+  butterfly2(derivatives1, derivatives3, derivativeSpectra[2], derivativeSpectra[3]);
+#else
+  displacementSpectra[0] = displacement0;
+  displacementSpectra[1] = displacement1;
+  displacementSpectra[2] = displacement2;
+  displacementSpectra[3] = displacement3;
+  derivativeSpectra[0] = derivatives0;
+  derivativeSpectra[1] = derivatives1;
+  derivativeSpectra[2] = derivatives2;
+  derivativeSpectra[3] = derivatives3;
+#endif
 }

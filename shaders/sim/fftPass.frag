@@ -9,12 +9,13 @@
 // i = g·p + r (r < p) of a line:
 //   a_s = in[i + s·N/4] · e^{2πi·s·r/P},   s = 0 … 3
 //   out[g·P + r + t·p] = Σ_s a_s · e^{2πi·s·t/4} = Σ_s a_s · i^{s·t},   t = 0 … 3   → layer t
-// Radix 2 runs only as the first pass of an axis (p = 1), when log2 N is odd; the fragment does
-// the two butterflies i = b and i = b + N/4:
+// Radix 2 runs only as the first pass of the z axis (p = 1), when log2 N is odd (along x,
+// evolveSpectrum.frag does it); the fragment does the two butterflies i = b and i = b + N/4:
 //   out[2i] = in[i] + in[i + N/2],  out[2i + 1] = in[i] − in[i + N/2]   → layers 2h, 2h + 1
 // The twiddle comes from a table of e^{2πi·j/N} that JS computed in double precision: GLSL sin/cos
 // are approximate (about 2e-4 off under SwiftShader, see ../shared/BROWSER.md).
 #include "common/complex.glsl"
+#include "sim/butterfly.glsl"
 #include "sim/quarterLayout.glsl"
 
 uniform highp sampler2DArray tSpectra0;
@@ -35,31 +36,6 @@ struct Element {
 Element load(QuarterAddresses addresses, int s) {
   ivec3 at = quarterAddress(addresses, s);
   return Element(texelFetch(tSpectra0, at, 0), texelFetch(tSpectra1, at, 0));
-}
-
-// Both complex numbers of a texel times the same complex factor.
-vec4 times(vec4 pair, vec2 factor) {
-  return vec4(complexMultiply(pair.xy, factor), complexMultiply(pair.zw, factor));
-}
-
-// The radix-4 butterfly for both complex numbers of a texel: y_t = Σ_s a_s·w^s·i^{s·t}, as two
-// 2-point stages (i^{s·t} is ±1 or ±i, so no multiplications).
-void butterfly4(vec4 a0, vec4 a1, vec4 a2, vec4 a3, vec2 w1, vec2 w2, vec2 w3,
-                out vec4 y0, out vec4 y1, out vec4 y2, out vec4 y3) {
-  vec4 x1 = times(a1, w1), x2 = times(a2, w2), x3 = times(a3, w3);
-  vec4 sum02 = a0 + x2, difference02 = a0 - x2;
-  vec4 sum13 = x1 + x3, difference13 = x1 - x3;
-  vec4 iDifference13 = vec4(-difference13.y, difference13.x, -difference13.w, difference13.z);
-  y0 = sum02 + sum13;
-  y1 = difference02 + iDifference13;
-  y2 = sum02 - sum13;
-  y3 = difference02 - iDifference13;
-}
-
-// The radix-2 butterfly (twiddle 1, p = 1) for both complex numbers of a texel.
-void butterfly2(vec4 a0, vec4 a1, out vec4 y0, out vec4 y1) {
-  y0 = a0 + a1;
-  y1 = a0 - a1;
 }
 
 void main() {

@@ -3,10 +3,11 @@
  * over float render targets (WebGL2 through three.js), with no CPU readback.
  *
  * Per update: one pass evolves the spectrum (four packed complex spectra), then log4-many Stockham
- * FFT passes along x and as many along z (a radix-2 pass first on each axis when log2 N is odd)
- * ping-pong between two sets of working textures, and a last pass copies the fields into the
- * output target, whose two textures (`displacement`, `derivatives`) wrap with REPEAT and, where
- * the format is filterable, filter linearly with mipmaps generated after the pass.
+ * FFT passes along x and as many along z (a radix-2 pass first on each axis when log2 N is odd;
+ * along x the evolution pass does it) ping-pong between two sets of working textures per axis, and
+ * a last pass copies the fields into the output target, whose two textures (`displacement`,
+ * `derivatives`) wrap with REPEAT and, where the format is filterable, filter linearly with
+ * mipmaps generated after the pass.
  *
  * Each FFT pass computes a whole radix-4 butterfly per fragment and writes its four outputs to
  * four layers of (N/4)×N array textures (shaders/sim/quarterLayout.glsl says where each element
@@ -153,12 +154,17 @@ export class GpuWaveFields {
         depthTest: false,
         depthWrite: false,
       });
-    this.evolveMaterial = material('sim/evolveSpectrum.frag', {
-      tAmplitudes: { value: this.amplitudes },
-      tWaveVectors: { value: this.waveVectors },
-      tPhases: { value: this.phases },
-      choppiness: { value: choppiness },
-    });
+    const firstRadix2 = sizeLog2 % 2 === 1;
+    this.evolveMaterial = material(
+      'sim/evolveSpectrum.frag',
+      {
+        tAmplitudes: { value: this.amplitudes },
+        tWaveVectors: { value: this.waveVectors },
+        tPhases: { value: this.phases },
+        choppiness: { value: choppiness },
+      },
+      { FIRST_RADIX2: Number(firstRadix2) },
+    );
     const fftMaterial = (radix: 2 | 4, alongZ: boolean, layout: InputLayout): ShaderMaterial => {
       const key = `${radix} ${alongZ} ${layout}`;
       let fft = this.fftMaterials.get(key);
@@ -184,8 +190,8 @@ export class GpuWaveFields {
         source = target;
       };
       let p = 1;
-      if (sizeLog2 % 2 === 1) {
-        pass(2, p);
+      if (firstRadix2) {
+        if (alongZ) pass(2, p); // along x, the evolution pass did it
         [layout, p] = ['AFTER_RADIX2', 2];
       }
       for (; p < n; p *= 4, layout = 'AFTER_RADIX4') pass(4, p);
