@@ -5,12 +5,20 @@
  *
  * Time evolution (Tessendorf 2001, eq. 26; course report §2.1):
  *   h̃(k, t) = h̃0(k)·e^{iωt} + h̃0*(−k)·e^{−iωt},  ω = m·2π/T (dispersion.ts).
+ * ω depends on |k| only (and spectrum.ts stores h̃0*(−k) next to each h̃0(k)), so
+ * h̃(−k, t) = conj(h̃(k, t)): evolve() computes h̃ once for each pair of wave vectors ±k and writes
+ * the packed spectra of both.
  */
 import { fillPhaseTable, PHASE_TABLE_SIZE } from './dispersion';
 import { BatchedInverseFft2D } from './fft';
 import type { InitialSpectrum } from './spectrum';
 
 const PACKED_SPECTRA = 4;
+/**
+ * Numbers per mode in `modes`: with h̃0(k) = a and h̃0*(−k) = b,
+ * (Re a + Re b, Im b − Im a, Im a + Im b, Re a − Re b), then kx, kz, 1/|k|, m as in spectrum.ts.
+ */
+const MODE_LENGTH = 8;
 
 export class CpuWaveFields {
   /** RGBA texels (Dx, h, Dz, ∂Dx/∂z). */
@@ -18,10 +26,22 @@ export class CpuWaveFields {
   /** RGBA texels (∂h/∂x, ∂h/∂z, ∂Dx/∂x, ∂Dz/∂z). */
   readonly derivatives: Float32Array;
   private readonly fft: BatchedInverseFft2D;
+  /** [displacement, derivatives]: the FFT writes its two pairs of packed fields straight into them. */
+  private readonly textures: readonly Float32Array[];
   private readonly phaseTable = new Float32Array(4 * PHASE_TABLE_SIZE);
-  /** The spectrum's texels reordered column by column (index i·N + j), so evolve() reads in order. */
-  private readonly amplitudesByColumn: Float32Array;
-  private readonly waveVectorsByColumn: Float32Array;
+  /**
+   * Pairs (row, partner row) of FFT input rows, the partner holding the frequencies −kz of the
+   * row's kz; each pair once, as both its rows are written together. The rows kz = 0 and
+   * kz = Nyquist are their own partners.
+   */
+  private readonly rowPairs: Uint32Array;
+  /** For each column of an FFT input row, the column holding −kx. */
+  private readonly partnerColumns: Uint32Array;
+  /**
+   * The spectrum's texels of the first row of each pair, in the FFT's input order so that evolve()
+   * reads them in order, MODE_LENGTH numbers each. Float64: the sums of amplitudes are exact.
+   */
+  private readonly modes: Float64Array;
   private readonly size: number;
 
   constructor(
@@ -30,102 +50,107 @@ export class CpuWaveFields {
     private readonly repeatPeriod: number,
   ) {
     const n = (this.size = spectrum.resolution);
-    this.fft = new BatchedInverseFft2D(n, PACKED_SPECTRA);
+    const fft = (this.fft = new BatchedInverseFft2D(n, PACKED_SPECTRA));
     this.displacement = new Float32Array(4 * n * n);
     this.derivatives = new Float32Array(4 * n * n);
-    this.amplitudesByColumn = new Float32Array(4 * n * n);
-    this.waveVectorsByColumn = new Float32Array(4 * n * n);
-    for (let i = 0; i < n; i++) {
-      for (let j = 0; j < n; j++) {
-        const from = 4 * (j * n + i);
-        const to = 4 * (i * n + j);
-        for (let c = 0; c < 4; c++) {
-          this.amplitudesByColumn[to + c] = spectrum.amplitudes[from + c];
-          this.waveVectorsByColumn[to + c] = spectrum.waveVectors[from + c];
-        }
+    this.textures = [this.displacement, this.derivatives];
+    // Where frequency texel (i, j) goes: field 0's input index is row·S + column.
+    const rowOf = (j: number) => Math.floor(fft.inputIndex(0, 0, j) / fft.rowStride);
+    const columnOf = (i: number) => fft.inputIndex(0, i, 0);
+    const negated = (index: number) => (n - index) % n;
+    this.partnerColumns = new Uint32Array(n);
+    for (let i = 0; i < n; i++) this.partnerColumns[columnOf(i)] = columnOf(negated(i));
+    const pairs: number[] = [];
+    const rowFrequencies: number[] = [];
+    for (let j = 0; j < n; j++) {
+      const partner = rowOf(negated(j));
+      if (rowOf(j) <= partner) {
+        pairs.push(rowOf(j), partner);
+        rowFrequencies.push(j);
       }
     }
+    this.rowPairs = Uint32Array.from(pairs);
+    this.modes = new Float64Array(MODE_LENGTH * n * rowFrequencies.length);
+    const amplitudes = spectrum.amplitudes;
+    rowFrequencies.forEach((j, pair) => {
+      for (let i = 0; i < n; i++) {
+        const from = 4 * (j * n + i);
+        const to = MODE_LENGTH * (pair * n + columnOf(i));
+        const [aRe, aIm, bRe, bIm] = amplitudes.subarray(from, from + 4);
+        this.modes.set([aRe + bRe, bIm - aIm, aIm + bIm, aRe - bRe], to);
+        this.modes.set(spectrum.waveVectors.subarray(from, from + 4), to + 4);
+      }
+    });
   }
 
   /** Computes every field at time t (seconds). Allocates nothing. */
   update(t: number): void {
     fillPhaseTable(this.phaseTable, t, this.repeatPeriod);
     this.evolve();
-    this.fft.run();
-    this.pack();
+    this.fft.runToTexels(this.textures);
   }
 
-  /** h̃(k, t) and the four packed spectra, written into the FFT's input. */
+  /** h̃(±k, t) and the four packed spectra at ±k, written into the FFT's input. */
   private evolve(): void {
     const n = this.size;
     const lambda = this.choppiness;
-    const { fft, phaseTable: table, amplitudesByColumn: h0, waveVectorsByColumn: waves } = this;
+    const { fft, phaseTable: table, modes, rowPairs, partnerColumns } = this;
     const re = fft.inputReal;
     const im = fft.inputImag;
-    for (let i = 0; i < n; i++) {
-      // Four destination runs, one per packed spectrum, each contiguous in j.
-      const out0 = fft.inputIndex(0, i, 0);
-      const out1 = fft.inputIndex(1, i, 0);
-      const out2 = fft.inputIndex(2, i, 0);
-      const out3 = fft.inputIndex(3, i, 0);
-      for (let j = 0, t = 4 * i * n; j < n; j++, t += 4) {
-        const kx = waves[t];
-        const kz = waves[t + 1];
-        const kInverse = waves[t + 2];
-        const m = waves[t + 3];
+    const stride = fft.rowStride;
+    // A local copy: an imported binding read in the loop can cost a getter call per read (Vite SSR).
+    const lowMask = PHASE_TABLE_SIZE - 1;
+    for (let pair = 0, t = 0; pair < rowPairs.length / 2; pair++) {
+      // Packed spectrum f of column c lives at row·S + f·N + c. In a row that is its own partner
+      // every texel is written twice, as k and as the partner of −k: the same value up to rounding.
+      const row = rowPairs[2 * pair] * stride;
+      const partnerRow = rowPairs[2 * pair + 1] * stride;
+      for (let column = 0; column < n; column++, t += MODE_LENGTH) {
+        const at = row + column;
+        const partnerAt = partnerRow + partnerColumns[column];
+        const kx = modes[t + 4];
+        const kz = modes[t + 5];
+        const kInverse = modes[t + 6];
+        const m = modes[t + 7];
         // e^{iωt} = e^{i·(m mod 256)·φ} · e^{i·256·(m div 256)·φ}
-        const low = 4 * (m & (PHASE_TABLE_SIZE - 1));
+        const low = 4 * (m & lowMask);
         const high = 4 * (m >> 8) + 2;
         const er = table[low] * table[high] - table[low + 1] * table[high + 1];
         const ei = table[low] * table[high + 1] + table[low + 1] * table[high];
-        // h̃ = h̃0(k)·e + h̃0*(−k)·conj(e)
-        const hr = h0[t] * er - h0[t + 1] * ei + h0[t + 2] * er + h0[t + 3] * ei;
-        const hi = h0[t] * ei + h0[t + 1] * er - h0[t + 2] * ei + h0[t + 3] * er;
-        // Slope spectra i·kx·h̃ and i·kz·h̃; the displacement ones are λ/k times these.
-        const sxr = -kx * hi;
-        const sxi = kx * hr;
-        const szr = -kz * hi;
-        const szi = kz * hr;
-        const d = lambda * kInverse;
-        // Dx + i·h
-        re[out0 + j] = d * sxr - hi;
-        im[out0 + j] = d * sxi + hr;
-        // Dz + i·∂Dx/∂z, with ∂Dx/∂z = −λ·kx·kz/k·h̃
-        const cross = -d * kx * kz;
-        re[out1 + j] = d * szr - cross * hi;
-        im[out1 + j] = d * szi + cross * hr;
-        // ∂h/∂x + i·∂h/∂z
-        re[out2 + j] = sxr - szi;
-        im[out2 + j] = sxi + szr;
-        // ∂Dx/∂x + i·∂Dz/∂z, with −λ·kx²/k·h̃ and −λ·kz²/k·h̃
-        const xx = -d * kx * kx;
-        const zz = -d * kz * kz;
-        re[out3 + j] = xx * hr - zz * hi;
-        im[out3 + j] = xx * hi + zz * hr;
-      }
-    }
-  }
-
-  /** FFT output → the two RGBA layouts of waveFieldLayout.ts. */
-  private pack(): void {
-    const n = this.size;
-    const { fft, displacement, derivatives } = this;
-    const re = fft.outputReal;
-    const im = fft.outputImag;
-    for (let j = 0; j < n; j++) {
-      const in0 = fft.outputIndex(0, 0, j);
-      const in1 = fft.outputIndex(1, 0, j);
-      const in2 = fft.outputIndex(2, 0, j);
-      const in3 = fft.outputIndex(3, 0, j);
-      for (let i = 0, o = 4 * j * n; i < n; i++, o += 4) {
-        displacement[o] = re[in0 + i];
-        displacement[o + 1] = im[in0 + i];
-        displacement[o + 2] = re[in1 + i];
-        displacement[o + 3] = im[in1 + i];
-        derivatives[o] = re[in2 + i];
-        derivatives[o + 1] = im[in2 + i];
-        derivatives[o + 2] = re[in3 + i];
-        derivatives[o + 3] = im[in3 + i];
+        // h̃(k) = a·e + b·conj(e) = hr + i·hi, with a = h̃0(k), b = h̃0*(−k) (see MODE_LENGTH);
+        // h̃(−k) = conj(h̃(k)).
+        const hr = modes[t] * er + modes[t + 1] * ei;
+        const hi = modes[t + 2] * er + modes[t + 3] * ei;
+        // The packed spectra of waveFieldLayout.ts as multiples of h̃, at k and at −k, where kx, kz
+        // and so ax = λ·kx/k, az = λ·kz/k change sign (1/k does not) and h̃ becomes conj(h̃).
+        const ax = lambda * kInverse * kx;
+        const az = lambda * kInverse * kz;
+        // Dx + i·h = i·(1 + ax)·h̃;   at −k: i·(1 − ax)·conj(h̃)
+        const dxh = 1 + ax;
+        const dxhPartner = 1 - ax;
+        re[at] = -dxh * hi;
+        im[at] = dxh * hr;
+        re[partnerAt] = dxhPartner * hi;
+        im[partnerAt] = dxhPartner * hr;
+        // Dz + i·∂Dx/∂z = i·(az − ax·kz)·h̃;   at −k: i·(−az − ax·kz)·conj(h̃)
+        const dzCross = az - ax * kz;
+        const dzCrossPartner = -az - ax * kz;
+        re[at + n] = -dzCross * hi;
+        im[at + n] = dzCross * hr;
+        re[partnerAt + n] = dzCrossPartner * hi;
+        im[partnerAt + n] = dzCrossPartner * hr;
+        // ∂h/∂x + i·∂h/∂z = (−kz + i·kx)·h̃;   at −k: (kz − i·kx)·conj(h̃)
+        re[at + 2 * n] = -kz * hr - kx * hi;
+        im[at + 2 * n] = kx * hr - kz * hi;
+        re[partnerAt + 2 * n] = kz * hr - kx * hi;
+        im[partnerAt + 2 * n] = -kx * hr - kz * hi;
+        // ∂Dx/∂x + i·∂Dz/∂z = (xx + i·zz)·h̃ with xx = −λ·kx²/k, zz = −λ·kz²/k;   at −k: (xx + i·zz)·conj(h̃)
+        const xx = -ax * kx;
+        const zz = -az * kz;
+        re[at + 3 * n] = xx * hr - zz * hi;
+        im[at + 3 * n] = xx * hi + zz * hr;
+        re[partnerAt + 3 * n] = xx * hr + zz * hi;
+        im[partnerAt + 3 * n] = zz * hr - xx * hi;
       }
     }
   }
