@@ -115,7 +115,22 @@ function apply(changes: Partial<AppState>): void {
   if (changes.wireframe !== undefined) ocean.surface.material.wireframe = changes.wireframe;
   if (changes.inspector !== undefined) showInspector(changes.inspector);
   if (changes.paused) changes.t = roundTime(state.t); // a paused t is exactly what the URL holds
+  hintCaustics(changes.mode ?? state.mode, changes.sunElevation ?? state.sunElevation);
 }
+
+/**
+ * The caustics mode (the report's Figure 9) is black under a low sun, which looks broken: say why.
+ * Guardado's term (shaders/surface/caustics.glsl) lights the surface where a vertical ray leaving
+ * the water points at the sun, which a sun lower than about 60° needs slopes steeper than waves have.
+ */
+function hintCaustics(mode: AppState['mode'], sunElevation: number): void {
+  if (mode === 'caustics' && sunElevation < 60) {
+    overlay.warn('caustics', `caustics: a sun ${sunElevation.toFixed(0)}° high lights almost none of the sea in this term; raise the sun above 60° (Sun & shading) to see the pattern`);
+  } else {
+    overlay.clearWarning('caustics');
+  }
+}
+hintCaustics(state.mode, state.sunElevation);
 
 async function copyLink(): Promise<void> {
   writeUrl();

@@ -315,6 +315,23 @@ test.describe('the app', () => {
     expect(await page.evaluate(() => window.oceanApp.ocean.surface.material.wireframe)).toBe(true);
   });
 
+  test('the caustics mode under a low sun says why it is dark, and the hint goes once the sun is high', async ({ page }) => {
+    await openApp(page, 'resolution=64&paused=1&t=2&mode=caustics&sunElevation=30');
+    const hint = page.locator('#status .notice.warning[data-parameter="caustics"]');
+    await expect(hint).toContainText('raise the sun above 60°');
+    await page.locator('.lil-title', { hasText: 'Sun & shading' }).click(); // the folder starts closed
+    await page.locator('[data-key="sunElevation"] input').fill('75');
+    await expect(hint).toHaveCount(0);
+    const bright = await pixels(page);
+    // The pattern now shows: a good part of the sea is lit in this term.
+    let lit = 0;
+    for (let i = 0; i < bright.length; i += 4) if (bright[i] > 60) lit++;
+    expect(lit / (bright.length / 4)).toBeGreaterThan(0.05);
+    await page.locator('[data-key="mode"] select').selectOption('full');
+    await page.locator('[data-key="sunElevation"] input').fill('20');
+    await expect(hint).toHaveCount(0); // only in the caustics mode
+  });
+
   test('time: paused keeps t; a stalled frame advances t by at most 0.1 s × time scale', async ({ page }) => {
     await openApp(page, 'resolution=32&paused=1&t=5', { width: 320, height: 180 });
     await page.waitForTimeout(300);
