@@ -77,7 +77,10 @@ test('bad parameters raise errors naming them, and the simulation keeps its last
 });
 
 test('every GPU resource a simulation makes is freed by dispose (memory back to its baseline)', async ({ page }) => {
-  const { before, after } = await page.evaluate(() => window.harness.memoryAfterCycles(12));
+  const { before, during, after } = await page.evaluate(() => window.harness.memoryAfterCycles(12));
+  // The GPU path's framebuffers (three.js's and the FFT's own layered ones) exist while it runs…
+  expect(during).toBeGreaterThan((before as { framebuffers: number }).framebuffers + 4);
+  // …and textures, geometries and framebuffers all go with dispose.
   expect(after).toEqual(before);
 });
 

@@ -12,6 +12,24 @@ import { createInitialSpectrum, type InitialSpectrum } from '../../../src/sim/sp
 
 const renderer = new WebGLRenderer({ canvas: document.createElement('canvas') });
 
+// Framebuffers alive in this context, counted on the real context's own calls: the GPU FFT makes
+// framebuffers of its own (gpuWaveFields.ts), which renderer.info does not see.
+const liveFramebuffers = new Set<WebGLFramebuffer>();
+{
+  const gl = renderer.getContext();
+  const create = gl.createFramebuffer.bind(gl);
+  const remove = gl.deleteFramebuffer.bind(gl);
+  gl.createFramebuffer = () => {
+    const framebuffer = create();
+    liveFramebuffers.add(framebuffer);
+    return framebuffer;
+  };
+  gl.deleteFramebuffer = (framebuffer) => {
+    if (framebuffer) liveFramebuffers.delete(framebuffer);
+    remove(framebuffer);
+  };
+}
+
 /** Per channel of one RGBA field texture: max |gpu − js| / rms(js), and rms(js). */
 export interface ChannelComparison {
   relativeMaxError: number;
@@ -162,17 +180,23 @@ const harness = {
     return { messages, unchanged, nonFinite };
   },
 
-  /** renderer.info.memory before and after creating, running and disposing simulations on both paths. */
-  memoryAfterCycles(cycles: number): { before: object; after: object } {
-    const before = { ...renderer.info.memory };
+  /**
+   * renderer.info.memory and the live framebuffers before and after creating, running and
+   * disposing simulations on both paths, and the framebuffers while one was alive.
+   */
+  memoryAfterCycles(cycles: number): { before: object; during: number; after: object } {
+    const memory = () => ({ ...renderer.info.memory, framebuffers: liveFramebuffers.size });
+    const before = memory();
+    let during = 0;
     for (let i = 0; i < cycles; i++) {
       const simulation = new OceanSimulation(renderer, { resolution: 32 + 32 * (i % 2), seed: i }, { path: i % 3 === 2 ? 'js' : 'gpu', worker: false });
       simulation.update(i);
       simulation.setParameters({ windSpeed: 5 + i });
       simulation.update(i + 0.5);
+      during = Math.max(during, liveFramebuffers.size);
       simulation.dispose();
     }
-    return { before, after: { ...renderer.info.memory } };
+    return { before, during, after: memory() };
   },
 };
 
