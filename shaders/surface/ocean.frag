@@ -11,8 +11,6 @@
 
 uniform sampler2D tDisplacement;
 uniform sampler2D tDerivatives;
-uniform vec4 ringFrames[RING_COUNT + 1];
-uniform float halfRingCells;
 uniform vec3 sunDirection;     // towards the sun
 uniform vec3 sunColour;        // radiance of the glint
 uniform float sunShininess;
@@ -29,6 +27,7 @@ varying vec2 vUv;
 varying vec3 vWorldPosition;
 centroid varying vec2 vRestPosition;  // see ocean.vert
 flat varying float vRing;
+flat varying vec3 vInnerRing;  // see ocean.vert
 varying float vLod;
 #ifdef CAPTURE_POSITIONS
 uniform bool captureRestPoint;
@@ -50,12 +49,8 @@ void main() {
 #endif
   // Each point of the rest plane is drawn by exactly one ring: a ring overlaps the one inside it
   // by a cell (so that no gap opens whichever way their centres snapped) and drops that overlap.
-  int ring = int(vRing);
-  if (ring > 0) {
-    vec4 inner = ringFrames[ring - 1];
-    vec2 fromInner = abs(vRestPosition - inner.xy);
-    if (max(fromInner.x, fromInner.y) < halfRingCells * inner.z * (1.0 - 1e-4)) discard;
-  }
+  vec2 fromInner = abs(vRestPosition - vInnerRing.xy);
+  if (max(fromInner.x, fromInner.y) < vInnerRing.z) discard;
 
   vec4 derivatives = texture(tDerivatives, vUv);
   float dxDz = texture(tDisplacement, vUv).w;

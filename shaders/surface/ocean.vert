@@ -10,6 +10,10 @@ varying vec3 vWorldPosition;
 // rest point outside it (the ring-overlap test in ocean.frag would then keep a dropped triangle).
 centroid varying vec2 vRestPosition;
 flat varying float vRing;
+// (centre x, centre z, half side less a hair) of the ring inside this vertex's ring, whose area
+// ocean.frag drops; a negative half side for ring 0. Per vertex (flat: one ring per triangle)
+// rather than looked up per fragment.
+flat varying vec3 vInnerRing;
 varying float vLod;
 #ifdef CAPTURE_POSITIONS
 uniform float captureWidth;
@@ -24,6 +28,9 @@ void main() {
   vWorldPosition = world;
   vRestPosition = point.world;
   vRing = point.ring;
+  int ring = int(point.ring);
+  vec4 inner = ringFrames[max(ring - 1, 0)];
+  vInnerRing = ring > 0 ? vec3(inner.xy, halfRingCells * inner.z * (1.0 - 1e-4)) : vec3(0.0, 0.0, -1.0);
   vLod = point.lod;
 #ifdef CAPTURE_POSITIONS
   // Geometry test (tests/browser/horizon.spec.ts): one texel per vertex in a float target.
