@@ -9,6 +9,9 @@
 // one pass fewer.
 #include "common/complex.glsl"
 #include "sim/butterfly.glsl"
+#define ALONG_Z 0              // it writes what the x axis reads
+#define INPUT_LAYOUT QUARTERS  // (it reads no working texture)
+#include "sim/quarterLayout.glsl"
 
 uniform highp sampler2D tAmplitudes;   // (h̃0(k), h̃0*(−k))
 uniform highp sampler2D tWaveVectors;  // (kx, kz, 1/k, m), see src/sim/spectrum.ts
@@ -45,15 +48,15 @@ void evolve(ivec2 texel, out vec4 displacement, out vec4 derivatives) {
 }
 
 void main() {
-  ivec2 fragment = ivec2(gl_FragCoord.xy);
-  int quarter = 1 << (sizeLog2 - 2);
+  ivec2 column = fragmentButterfly(sizeLog2);  // (b, row)
+  ivec2 quarter = ivec2(1 << (sizeLog2 - 2), 0);
   // Fragment outputs take constant indexes only, so the four columns are written out.
   vec4 displacement0, displacement1, displacement2, displacement3;
   vec4 derivatives0, derivatives1, derivatives2, derivatives3;
-  evolve(fragment, displacement0, derivatives0);
-  evolve(fragment + ivec2(quarter, 0), displacement1, derivatives1);
-  evolve(fragment + ivec2(2 * quarter, 0), displacement2, derivatives2);
-  evolve(fragment + ivec2(3 * quarter, 0), displacement3, derivatives3);
+  evolve(column, displacement0, derivatives0);
+  evolve(column + quarter, displacement1, derivatives1);
+  evolve(column + 2 * quarter, displacement2, derivatives2);
+  evolve(column + 3 * quarter, displacement3, derivatives3);
 #if FIRST_RADIX2
   // Butterflies i = b (columns b, b + N/2) and i = b + N/4 (columns b + N/4, b + 3N/4).
   butterfly2(displacement0, displacement2, displacementSpectra[0], displacementSpectra[1]);

@@ -34,17 +34,14 @@ struct Element {
 
 // Element b + s·N/4 of the fragment's line.
 Element load(QuarterAddresses addresses, int s) {
-  ivec3 at = quarterAddress(addresses, s);
+  ivec3 at = quarterAddress(addresses, s, sizeLog2);
   return Element(texelFetch(tSpectra0, at, 0), texelFetch(tSpectra1, at, 0));
 }
 
 void main() {
   // Butterfly b of line `line` (z for the x axis, x for the z axis); see quarterLayout.glsl.
-#if ALONG_Z
-  int b = int(gl_FragCoord.y), line = int(gl_FragCoord.x);
-#else
-  int b = int(gl_FragCoord.x), line = int(gl_FragCoord.y);
-#endif
+  ivec2 butterfly = fragmentButterfly(sizeLog2);
+  int b = butterfly.x, line = butterfly.y;
   QuarterAddresses addresses = quarterAddresses(b, line, sizeLog2, subtransformLog2);
 #if RADIX == 4
   // e^{2πi·r/P} = table[r·N/P], exact from double precision; its powers by complex products

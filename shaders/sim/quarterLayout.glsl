@@ -8,18 +8,20 @@
 //
 // Addresses below are (position, line, layer): one line of N complex numbers being transformed
 // (a row of constant z for the x axis, a column of constant x for the z axis) is spread over
-// N/4 positions of four layers. The x axis works in (N/4)×N arrays, texel (position, line); the
-// z axis in N×(N/4) arrays, texel (line, position) (ALONG_Z). Either way neighbouring fragments
-// read neighbouring texels, which matters on a CPU: reading a texture across its rows made the
-// passes that did it two to three times slower under SwiftShader.
+// N/4 positions of four layers. All working textures are (N/2)×(N/2) arrays of four layers; a
+// pass along x stores position p of line l at texel (p + (l mod 2)·N/4, l div 2) (two lines per
+// texel row), a pass along z (ALONG_Z) at texel (l mod N/2, p + (l div N/2)·N/4) (lines side by
+// side). Either way neighbouring fragments read neighbouring texels, which matters on a CPU:
+// reading a texture across its rows made the passes that did it two to three times slower under
+// SwiftShader; and both axes share the same two sets of textures.
 //
 // INPUT_LAYOUT (defined with the shader) says which pass wrote the data being read:
 //   QUARTERS             element e at position e mod N/4, layer e div N/4: what the evolution
 //                        pass writes, and what the last pass of an axis leaves (natural order)
 //   QUARTERS_TRANSPOSED  the first z pass reads the x axis's result, where element z of line x is
-//                        element x of line z: texel (x mod N/4, z) of the x axis's arrays, layer
-//                        x div N/4; as an address (swapped like every z address), position z,
-//                        "line" x mod N/4
+//                        element x of line z, stored as the x axis stores: position x mod N/4
+//                        of line z, layer x div N/4; as an address here, position z and "line"
+//                        x mod N/4, swapped back when it becomes a texel
 //   AFTER_RADIX2         written by a radix-2 pass: e = 2i + t, i = b + h·N/4 (h = 0, 1), at
 //                        position b, layer 2h + t
 //   AFTER_RADIX4         written by a radix-4 pass of sub-length q = p/4: e = g·4q + t·q + r
@@ -59,12 +61,35 @@ QuarterAddresses quarterAddresses(int b, int line, int sizeLog2, int subtransfor
 #endif
 }
 
+// Texel of position p of line l, as a pass along x stores it.
+ivec2 texelAlongX(int p, int l, int sizeLog2) {
+  return ivec2(p + ((l & 1) << (sizeLog2 - 2)), l >> 1);
+}
+
+// Texel of position p of line l, as a pass along z stores it.
+ivec2 texelAlongZ(int p, int l, int sizeLog2) {
+  return ivec2(l & ((1 << (sizeLog2 - 1)) - 1), p + ((l >> (sizeLog2 - 1)) << (sizeLog2 - 2)));
+}
+
 // (texel x, texel y, layer) of element b + s·N/4 in the arrays being read.
-ivec3 quarterAddress(QuarterAddresses addresses, int s) {
+ivec3 quarterAddress(QuarterAddresses addresses, int s, int sizeLog2) {
   ivec3 address = addresses.base + (s & 1) * addresses.stepQuarter + (s >> 1) * addresses.stepHalf;
-#if ALONG_Z
-  return address.yxz;
+#if ALONG_Z && INPUT_LAYOUT == QUARTERS_TRANSPOSED
+  return ivec3(texelAlongX(address.y, address.x, sizeLog2), address.z);
+#elif ALONG_Z
+  return ivec3(texelAlongZ(address.x, address.y, sizeLog2), address.z);
 #else
-  return address;
+  return ivec3(texelAlongX(address.x, address.y, sizeLog2), address.z);
+#endif
+}
+
+// (butterfly b, line) of this fragment, which writes texel (b, line) of the next layout (above).
+ivec2 fragmentButterfly(int sizeLog2) {
+  ivec2 texel = ivec2(gl_FragCoord.xy);
+  int quarterLog2 = sizeLog2 - 2;
+#if ALONG_Z
+  return ivec2(texel.y & ((1 << quarterLog2) - 1), texel.x + ((texel.y >> quarterLog2) << (sizeLog2 - 1)));
+#else
+  return ivec2(texel.x & ((1 << quarterLog2) - 1), (texel.y << 1) + (texel.x >> quarterLog2));
 #endif
 }

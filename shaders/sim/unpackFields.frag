@@ -17,7 +17,7 @@ void main() {
   int quarterLog2 = sizeLog2 - 2;
   int s = texel.y >> quarterLog2;        // element z = b + s·N/4 of line x
   QuarterAddresses addresses = quarterAddresses(texel.y & ((1 << quarterLog2) - 1), texel.x, sizeLog2, 0);
-  ivec3 at = quarterAddress(addresses, s);
+  ivec3 at = quarterAddress(addresses, s, sizeLog2);
   // The transform of F + i·G is f + i·g (waveFieldLayout.ts), so the packed complex pairs are
   // already the fields in texture order: (Dx + i·h, Dz + i·∂Dx/∂z) = (Dx, h, Dz, ∂Dx/∂z), etc.
   displacement = texelFetch(tSpectra0, at, 0);

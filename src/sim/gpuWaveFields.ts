@@ -4,13 +4,13 @@
  *
  * Per update: one pass evolves the spectrum (four packed complex spectra), then log4-many Stockham
  * FFT passes along x and as many along z (a radix-2 pass first on each axis when log2 N is odd;
- * along x the evolution pass does it) ping-pong between two sets of working textures per axis, and
+ * along x the evolution pass does it) ping-pong between two sets of working textures, and
  * a last pass copies the fields into the output target, whose two textures (`displacement`,
  * `derivatives`) wrap with REPEAT and, where the format is filterable, filter linearly with
  * mipmaps generated after the pass.
  *
  * Each FFT pass computes a whole radix-4 butterfly per fragment and writes its four outputs to
- * four layers of (N/4)×N array textures (shaders/sim/quarterLayout.glsl says where each element
+ * four layers of (N/2)×(N/2) array textures (shaders/sim/quarterLayout.glsl says where each element
  * lives after each pass). That reads every input once per pass instead of four times, and under
  * SwiftShader makes a pass about three times cheaper than one output per fragment. three.js cannot
  * render to several layers at once, so this file attaches the layers to a framebuffer of its own
@@ -22,8 +22,7 @@
  *   waveVectors N×N (kx, kz, 1/k, m)             static, from spectrum.ts
  *   phases      256×1, (e^{ijφ}, e^{i256jφ})     uploaded each update, from dispersion.ts
  *   twiddles    N×1, (cos 2πj/N, sin 2πj/N)      static
- *   working     2 × (N/4)×N×4 layers, twice      working storage along x (two complex fields per texel)
- *               2 × N×(N/4)×4 layers, twice      working storage along z
+ *   working     2 × (N/2)×(N/2)×4 layers, twice  working storage (two complex fields per texel)
  *   output      N×N (displacement, derivatives)  the result
  * This object owns all of them and frees them in dispose().
  */
@@ -90,8 +89,8 @@ export class GpuWaveFields {
   private readonly waveVectors: DataTexture;
   private readonly phases: DataTexture;
   private readonly twiddles: DataTexture;
-  /** Working storage along x ((N/4)×N) and along z (N×(N/4)), two sets each to ping-pong. */
-  private readonly working: LayeredSpectra[];
+  /** Working storage: two sets to ping-pong between (quarterLayout.glsl). */
+  private readonly working: [LayeredSpectra, LayeredSpectra];
   private readonly evolveMaterial: ShaderMaterial;
   /** One program per radix and input layout the passes need. */
   private readonly fftMaterials = new Map<string, ShaderMaterial>();
@@ -121,12 +120,7 @@ export class GpuWaveFields {
     }
     this.twiddles = dataTexture(twiddleTable, n, 1, RGFormat);
 
-    const [x0, x1, z0, z1] = (this.working = [
-      new LayeredSpectra(n / 4, n, type),
-      new LayeredSpectra(n / 4, n, type),
-      new LayeredSpectra(n, n / 4, type),
-      new LayeredSpectra(n, n / 4, type),
-    ]);
+    this.working = [new LayeredSpectra(n / 2, type), new LayeredSpectra(n / 2, type)];
     // Float32 textures filter linearly only with OES_texture_float_linear; half floats always do.
     const filterable = precision === 'float16' || renderer.extensions.has('OES_texture_float_linear');
     this.output = new WebGLRenderTarget(n, n, {
@@ -178,16 +172,14 @@ export class GpuWaveFields {
     };
     // Radix 4 from sub-length p = 1 (or 2 after a radix-2 pass when log2 N is odd) up to N. The
     // first pass of the x axis reads what the evolution pass wrote; the first of the z axis what
-    // the last x pass wrote (the same quarters, with x as the line). Each axis ping-pongs between
-    // its two sets of working textures, starting from where the data is.
-    let source = x0;
+    // the last x pass wrote (the same quarters, with x as the line). The passes ping-pong
+    // between the two sets of working textures.
+    let [source, target] = this.working;
     for (const alongZ of [false, true]) {
       let layout: InputLayout = alongZ ? 'QUARTERS_TRANSPOSED' : 'QUARTERS';
-      const [first, second] = alongZ ? [z0, z1] : [x1, x0];
       const pass = (radix: 2 | 4, p: number): void => {
-        const target = source === first ? second : first;
         this.fftPasses.push({ material: fftMaterial(radix, alongZ, layout), source, target, subtransformLog2: Math.log2(p) });
-        source = target;
+        [source, target] = [target, source];
       };
       let p = 1;
       if (firstRadix2) {
@@ -266,9 +258,9 @@ class LayeredSpectra {
   /** The GL textures attached to `framebuffer`; they change when the context is lost and restored. */
   private attached: WebGLTexture[] = [];
 
-  constructor(width: number, height: number, type: TextureDataType) {
+  constructor(size: number, type: TextureDataType) {
     const array = () =>
-      new WebGLArrayRenderTarget(width, height, 4, {
+      new WebGLArrayRenderTarget(size, size, 4, {
         type,
         format: RGBAFormat,
         depthBuffer: false,
@@ -278,7 +270,7 @@ class LayeredSpectra {
       });
     this.arrays = [array(), array()];
     this.textures = [this.arrays[0].texture, this.arrays[1].texture];
-    this.target = new WebGLRenderTarget(width, height, { depthBuffer: false, generateMipmaps: false });
+    this.target = new WebGLRenderTarget(size, size, { depthBuffer: false, generateMipmaps: false });
   }
 
   /** Makes the eight layers the render target of the next draw. */
