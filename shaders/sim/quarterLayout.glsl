@@ -42,15 +42,15 @@ struct QuarterAddresses {
 
 // sizeLog2 = log2 N; subtransformLog2 = log2 of the reading pass's sub-transform length p.
 QuarterAddresses quarterAddresses(int b, int line, int sizeLog2, int subtransformLog2) {
-  int quarterLog2 = sizeLog2 - 2;
 #if INPUT_LAYOUT == QUARTERS
   return QuarterAddresses(ivec3(b, line, 0), ivec3(0, 0, 1), ivec3(0, 0, 2));
 #elif INPUT_LAYOUT == QUARTERS_TRANSPOSED
+  int quarterLog2 = sizeLog2 - 2;
   int quarter = 1 << quarterLog2;
   return QuarterAddresses(ivec3(b, line & (quarter - 1), line >> quarterLog2), ivec3(quarter, 0, 0),
                           ivec3(2 * quarter, 0, 0));
 #elif INPUT_LAYOUT == AFTER_RADIX2
-  return QuarterAddresses(ivec3(b >> 1, line, b & 1), ivec3(1 << (quarterLog2 - 1), 0, 0), ivec3(0, 0, 2));
+  return QuarterAddresses(ivec3(b >> 1, line, b & 1), ivec3(1 << (sizeLog2 - 3), 0, 0), ivec3(0, 0, 2));
 #else
   // Here P = 4q ≤ N/4 divides N/4: adding N/4 keeps r and t and adds N/(4·4q) to g, that is
   // N/16 to the texel.

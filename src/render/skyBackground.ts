@@ -14,7 +14,7 @@ import { shaderSource } from '../shaderSource';
 import type { SkyEnvironment } from './skyEnvironment';
 
 /** Drawn after opaque objects with a lower renderOrder (three.js sorts opaque objects by it first). */
-export const SKY_RENDER_ORDER = 1000;
+const SKY_RENDER_ORDER = 1000;
 
 export class SkyBackground extends Mesh<BoxGeometry, ShaderMaterial> {
   constructor(private readonly sky: SkyEnvironment) {

@@ -255,7 +255,7 @@ class LayeredSpectra {
   /** Stands for the framebuffer in three.js's setRenderTarget; three.js allocates nothing for it. */
   private readonly target: WebGLRenderTarget;
   private framebuffer: WebGLFramebuffer | null = null;
-  /** The GL textures attached to `framebuffer`; they change when the context is lost and restored. */
+  /** The GL textures attached to `framebuffer`. */
   private attached: WebGLTexture[] = [];
 
   constructor(size: number, type: TextureDataType) {
@@ -273,22 +273,26 @@ class LayeredSpectra {
     this.target = new WebGLRenderTarget(size, size, { depthBuffer: false, generateMipmaps: false });
   }
 
-  /** Makes the eight layers the render target of the next draw. */
+  /** Makes the eight layers the render target of the next draw. Allocates nothing once set up. */
   bind(renderer: WebGLRenderer): void {
-    const textures = this.arrays.map((array) => {
-      renderer.initRenderTarget(array);
-      // three.js keeps each texture's GL object in its property map (an internal it does not type).
-      return (renderer.properties.get(array.texture) as { __webglTexture: WebGLTexture }).__webglTexture;
-    });
-    if (this.framebuffer === null || textures.some((texture, i) => texture !== this.attached[i])) {
-      this.createFramebuffer(renderer, textures);
-    }
+    if (!this.framebufferIsCurrent(renderer)) this.createFramebuffer(renderer);
+    // Every time: after a restored context three.js has a new property map that no longer knows it.
     (renderer as unknown as ExternalFramebufferRenderer).setRenderTargetFramebuffer(this.target, this.framebuffer);
     renderer.setRenderTarget(this.target);
   }
 
-  private createFramebuffer(renderer: WebGLRenderer, textures: WebGLTexture[]): void {
+  /** Whether `framebuffer` holds the arrays' GL textures, which change when the context is lost and restored. */
+  private framebufferIsCurrent(renderer: WebGLRenderer): boolean {
+    if (this.framebuffer === null) return false;
+    for (let i = 0; i < this.arrays.length; i++) {
+      if (glTexture(renderer, this.arrays[i]) !== this.attached[i]) return false;
+    }
+    return true;
+  }
+
+  private createFramebuffer(renderer: WebGLRenderer): void {
     const gl = renderer.getContext() as WebGL2RenderingContext;
+    const textures = this.arrays.map((array) => glTexture(renderer, array));
     this.deleteFramebuffer(renderer);
     const framebuffer = gl.createFramebuffer();
     renderer.state.bindFramebuffer(gl.FRAMEBUFFER, framebuffer);
@@ -322,6 +326,13 @@ class LayeredSpectra {
     this.deleteFramebuffer(renderer);
     for (const array of this.arrays) array.dispose();
   }
+}
+
+/** The GL texture of an array render target, allocated if it is not yet. */
+function glTexture(renderer: WebGLRenderer, array: WebGLArrayRenderTarget): WebGLTexture {
+  renderer.initRenderTarget(array);
+  // three.js keeps each texture's GL object in its property map (an internal it does not type).
+  return (renderer.properties.get(array.texture) as { __webglTexture: WebGLTexture }).__webglTexture;
 }
 
 function dataTexture(data: Float32Array, width: number, height: number, format: PixelFormat): DataTexture {
