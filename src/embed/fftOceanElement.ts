@@ -232,6 +232,13 @@ export class FftOceanElement extends ElementBase {
     const reject = (reason: string, kept: unknown): void => {
       console.warn(`<fft-ocean>: ignoring ${name}="${raw}": ${reason}; keeping ${String(kept)}`);
     };
+    /** A choice attribute's value (`fallback` when removed), or undefined once rejected. */
+    const oneOf = <T extends string>(allowed: readonly T[], fallback: T, kept: T): T | undefined => {
+      const value = (raw === null ? fallback : raw.trim()) as T;
+      if (allowed.includes(value)) return value;
+      reject(`it must be one of ${allowed.join(', ')}`, kept);
+      return undefined;
+    };
     if (name in SIMULATION_ATTRIBUTES) {
       const key = SIMULATION_ATTRIBUTES[name as SimulationAttribute];
       const kept = s.simulation[key] ?? DEFAULT_PARAMETERS[key];
@@ -258,19 +265,13 @@ export class FftOceanElement extends ElementBase {
       else s.sunAzimuth = value;
       ocean?.setSun(s.sunElevation, s.sunAzimuth);
     } else if (name === 'shading-mode') {
-      const value = (raw === null ? DEFAULT_SETTINGS.shadingMode : raw.trim()) as ShadingMode;
-      if (!SHADING_MODES.includes(value)) {
-        reject(`it must be one of ${SHADING_MODES.join(', ')}`, s.shadingMode);
-        return;
-      }
+      const value = oneOf(SHADING_MODES, DEFAULT_SETTINGS.shadingMode, s.shadingMode);
+      if (value === undefined) return;
       s.shadingMode = value;
       ocean?.setShading({ shadingMode: value });
     } else if (name === 'path') {
-      const value = (raw === null ? DEFAULT_SETTINGS.path : raw.trim()) as PathPreference;
-      if (!PATHS.includes(value)) {
-        reject(`it must be one of ${PATHS.join(', ')}`, s.path);
-        return;
-      }
+      const value = oneOf(PATHS, DEFAULT_SETTINGS.path, s.path);
+      if (value === undefined) return;
       s.path = value;
       if (ocean && ocean.simulation.pathPreference !== value) ocean.simulation.pathPreference = value;
     } else if (name === 'time-scale') {
