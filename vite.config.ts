@@ -13,7 +13,7 @@ const root = import.meta.dirname;
  *   src/embed/register.ts that defines <fft-ocean>) into dist/lib, with three left external
  *   (a peer dependency: the user's bundler or import map provides it). The GLSL files are bundled
  *   as strings (import.meta.glob ?raw in src/shaderSource.ts); the JS-path Web Worker
- *   (src/sim/waveFieldWorker.ts) becomes its own self-contained file next to the library, found
+ *   (src/fft/waveFieldWorker.ts) becomes its own self-contained file next to the library, found
  *   at run time through new URL(..., import.meta.url). Type declarations come from
  *   `tsc -p tsconfig.build.json` into dist/lib/types.
  */

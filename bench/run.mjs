@@ -179,10 +179,10 @@ async function nodeBenchmarks(results) {
     optimizeDeps: { noDiscovery: true },
   });
   try {
-    const { BatchedInverseFft2D } = await server.ssrLoadModule('/src/sim/fft.ts');
-    const { CpuWaveFields } = await server.ssrLoadModule('/src/sim/cpuWaveFields.ts');
-    const { validateParameters } = await server.ssrLoadModule('/src/sim/parameters.ts');
-    const { createInitialSpectrum } = await server.ssrLoadModule('/src/sim/spectrum.ts');
+    const { BatchedInverseFft2D } = await server.ssrLoadModule('/src/fft/fft.ts');
+    const { CpuWaveFields } = await server.ssrLoadModule('/src/fft/cpuWaveFields.ts');
+    const { validateParameters } = await server.ssrLoadModule('/src/parameters/parameters.ts');
+    const { createInitialSpectrum } = await server.ssrLoadModule('/src/spectrum/initialSpectrum.ts');
 
     for (const n of SIZES) {
       log(`fft2d N=${n}: js vs fft.js`);

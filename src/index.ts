@@ -1,11 +1,11 @@
 // three-fft-ocean public API: re-exports only.
 export { Ocean, type OceanOptions } from './ocean';
-export { OceanSimulation, type SimulationOptions, type SimulationPath, type PathPreference } from './sim/oceanSimulation';
-export { DEFAULT_PARAMETERS, ParameterError, validateParameters, type SimulationParameters } from './sim/parameters';
-export { createInitialSpectrum, phillips, type InitialSpectrum } from './sim/spectrum';
-export { CpuWaveFields } from './sim/cpuWaveFields';
-export { GpuWaveFields, supportedGpuPrecision, type GpuPrecision } from './sim/gpuWaveFields';
-export { BatchedInverseFft2D } from './sim/fft';
+export { OceanSimulation, type SimulationOptions, type SimulationPath, type PathPreference } from './layers/oceanSimulation';
+export { DEFAULT_PARAMETERS, ParameterError, validateParameters, type SimulationParameters } from './parameters/parameters';
+export { createInitialSpectrum, phillips, type InitialSpectrum } from './spectrum/initialSpectrum';
+export { CpuWaveFields } from './fft/cpuWaveFields';
+export { GpuWaveFields, supportedGpuPrecision, type GpuPrecision } from './fft/gpuWaveFields';
+export { BatchedInverseFft2D } from './fft/fft';
 export { OceanSurface } from './render/oceanSurface';
 export { OceanMaterial, SHADING_MODES, type ShadingMode, type OceanShadingOptions } from './render/oceanMaterial';
 export { SkyEnvironment, skyboxFaceUrls, SHIPPED_SKYBOX, type CubeFaceUrls } from './render/skyEnvironment';

@@ -15,10 +15,10 @@ import { OceanSurface } from './render/oceanSurface';
 import type { OceanShadingOptions } from './render/oceanMaterial';
 import { SkyBackground } from './render/skyBackground';
 import { SkyEnvironment } from './render/skyEnvironment';
-import { CpuWaveFields } from './sim/cpuWaveFields';
-import { OceanSimulation, type SimulationOptions } from './sim/oceanSimulation';
-import { ParameterError, type SimulationParameters } from './sim/parameters';
-import type { InitialSpectrum } from './sim/spectrum';
+import { CpuWaveFields } from './fft/cpuWaveFields';
+import { OceanSimulation, type SimulationOptions } from './layers/oceanSimulation';
+import { ParameterError, type SimulationParameters } from './parameters/parameters';
+import type { InitialSpectrum } from './spectrum/initialSpectrum';
 
 export interface OceanOptions extends Partial<SimulationParameters>, OceanShadingOptions, SimulationOptions {
   /** Sun elevation above the horizon in degrees, [-90, 90]. @defaultValue 30 */

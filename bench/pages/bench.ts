@@ -12,10 +12,10 @@
  *     alone as `syncOnly`.
  */
 import { WebGLRenderer } from 'three';
-import { CpuWaveFields } from '../../src/sim/cpuWaveFields';
-import { GpuWaveFields, supportedGpuPrecision, type GpuPrecision } from '../../src/sim/gpuWaveFields';
-import { validateParameters } from '../../src/sim/parameters';
-import { createInitialSpectrum } from '../../src/sim/spectrum';
+import { CpuWaveFields } from '../../src/fft/cpuWaveFields';
+import { GpuWaveFields, supportedGpuPrecision, type GpuPrecision } from '../../src/fft/gpuWaveFields';
+import { validateParameters } from '../../src/parameters/parameters';
+import { createInitialSpectrum } from '../../src/spectrum/initialSpectrum';
 
 /** EXT_disjoint_timer_query_webgl2; lib.dom has no type for it. */
 interface TimerQueryExtension {

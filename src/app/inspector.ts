@@ -10,7 +10,7 @@
  */
 import { DataTexture, FloatType, NearestFilter, RedFormat, RepeatWrapping, RGBAFormat, Vector4, type Texture, type WebGLRenderer } from 'three';
 import type { Ocean } from '../ocean';
-import { signedFrequency, type InitialSpectrum } from '../sim/spectrum';
+import { signedFrequency, type InitialSpectrum } from '../spectrum/initialSpectrum';
 import { FieldView, type FieldViewOptions } from './fieldView';
 
 interface Scales {

@@ -10,7 +10,7 @@
 import GUI, { type Controller } from 'lil-gui';
 import { Color } from 'three';
 import { SHADING_MODES } from '../render/oceanMaterial';
-import { ParameterError, type SimulationParameters } from '../sim/parameters';
+import { ParameterError, type SimulationParameters } from '../parameters/parameters';
 import { assignState, cloneState, PATH_PREFERENCES, urlRounded, type AppState, type Rgb } from './urlState';
 
 /** Sea states (Phillips amplitudes fitted so the significant wave height 4·σ of the simulated

@@ -4,7 +4,7 @@
  * the time, a help line for the keys, and below them notices — warnings about bad values (each names its
  * parameter and stays until dismissed or fixed) and the "copy link" field.
  */
-import type { SimulationPath } from '../sim/oceanSimulation';
+import type { SimulationPath } from '../layers/oceanSimulation';
 
 export const PATH_LABELS: Record<SimulationPath, string> = {
   'gpu-rgba32f': 'GPU RGBA32F',

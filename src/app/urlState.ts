@@ -5,7 +5,7 @@
  * plus a few for the app:
  *
  *   windSpeed windDirection amplitude patchSize resolution choppiness smallWaveCutoff
- *   depth (metres, or "deep") repeatPeriod seed            — simulation (src/sim/parameters.ts)
+ *   depth (metres, or "deep") repeatPeriod seed            — simulation (src/parameters/parameters.ts)
  *   sunElevation sunAzimuth                                   — degrees
  *   ior causticPower causticColour absorption scatterColour   — shading; colours and absorption
  *                                                               are "r,g,b" (linear, ≥ 0)
@@ -19,7 +19,7 @@
  * default, in a fixed order. parseState reads any subset: a missing value takes its default, an
  * invalid one also takes its default and produces a warning naming the parameter. Pure: no DOM.
  */
-import { DEFAULT_PARAMETERS, ParameterError, validateParameters, type SimulationParameters } from '../sim/parameters';
+import { DEFAULT_PARAMETERS, ParameterError, validateParameters, type SimulationParameters } from '../parameters/parameters';
 import { SHADING_MODES, type ShadingMode } from '../render/oceanMaterial';
 import { clampPitch, MIN_HEIGHT, wrapYaw } from './flyControls';
 

@@ -35,8 +35,8 @@
 import { ACESFilmicToneMapping, PerspectiveCamera, Scene, WebGLRenderer } from 'three';
 import { Ocean } from '../ocean';
 import { SHADING_MODES, type ShadingMode } from '../render/oceanMaterial';
-import type { PathPreference } from '../sim/oceanSimulation';
-import { DEFAULT_PARAMETERS, validateParameters, type SimulationParameters } from '../sim/parameters';
+import type { PathPreference } from '../layers/oceanSimulation';
+import { DEFAULT_PARAMETERS, validateParameters, type SimulationParameters } from '../parameters/parameters';
 
 /** Longest step of simulated time per frame (s, before time-scale): a stalled tab does not jump. */
 const MAX_FRAME_STEP = 0.1;

@@ -6,7 +6,7 @@
  */
 import { Color, DoubleSide, ShaderMaterial, UniformsLib, UniformsUtils, Vector3, type Texture } from 'three';
 import { shaderSource } from '../shaderSource';
-import { ParameterError } from '../sim/parameters';
+import { ParameterError } from '../parameters/parameters';
 import { RING_COUNT } from './horizonGrid';
 
 /** Shading modes; all but 'full' reproduce one of the course report's figures. */

@@ -1,6 +1,6 @@
 import { expect, test } from '@playwright/test';
-import { validateParameters } from '../../src/sim/parameters';
-import { createInitialSpectrum } from '../../src/sim/spectrum';
+import { validateParameters } from '../../src/parameters/parameters';
+import { createInitialSpectrum } from '../../src/spectrum/initialSpectrum';
 
 test.beforeEach(async ({ page }) => {
   const errors: string[] = [];

@@ -9,10 +9,10 @@
  * need no reference at all.
  */
 import { describe, expect, it } from 'vitest';
-import { CpuWaveFields } from '../../src/sim/cpuWaveFields';
-import { validateParameters, type SimulationParameters } from '../../src/sim/parameters';
-import { SeededRandom } from '../../src/sim/random';
-import { createInitialSpectrum, type InitialSpectrum } from '../../src/sim/spectrum';
+import { CpuWaveFields } from '../../src/fft/cpuWaveFields';
+import { validateParameters, type SimulationParameters } from '../../src/parameters/parameters';
+import { SeededRandom } from '../../src/spectrum/random';
+import { createInitialSpectrum, type InitialSpectrum } from '../../src/spectrum/initialSpectrum';
 import { naiveInverseDft2D } from './naiveDft';
 
 const G = 9.81;

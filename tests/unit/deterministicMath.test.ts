@@ -4,11 +4,11 @@
  * Accuracy is measured in units in the last place (ulp): the distance between two doubles counted
  * in representable doubles. One ulp is at most 2^−52 ≈ 2.2e-16 of the value, so "≤ n ulp" means a
  * relative error of at most n·2.2e-16, also for subnormal results, where a relative bound would be
- * meaningless. Inputs come from a small local generator (mulberry32), not from src/sim/random.ts,
+ * meaningless. Inputs come from a small local generator (mulberry32), not from src/spectrum/random.ts,
  * so these tests do not depend on the code they would help to debug.
  */
 import { describe, expect, it } from 'vitest';
-import { detCosSinDegrees, detExp, detLog } from '../../src/sim/deterministicMath';
+import { detCosSinDegrees, detExp, detLog } from '../../src/spectrum/deterministicMath';
 
 const view = new DataView(new ArrayBuffer(8));
 

@@ -11,7 +11,7 @@ import {
   MAX_FREQUENCY_INDEX,
   PHASE_TABLE_SIZE,
   wrapTime,
-} from '../../src/sim/dispersion';
+} from '../../src/spectrum/dispersion';
 
 const G = 9.81; // m/s², standard gravity as documented in parameters.ts
 

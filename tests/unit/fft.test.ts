@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { BatchedInverseFft2D } from '../../src/sim/fft';
-import { SeededRandom } from '../../src/sim/random';
+import { BatchedInverseFft2D } from '../../src/fft/fft';
+import { SeededRandom } from '../../src/spectrum/random';
 import { naiveInverseDft2D } from './naiveDft';
 
 type Complex2D = [Float64Array, Float64Array];

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { cellsPerRingForViewport, createHorizonGridGeometry, RING_COUNT, RingFrames } from '../../src/render/horizonGrid';
-import { SeededRandom } from '../../src/sim/random';
+import { SeededRandom } from '../../src/spectrum/random';
 
 describe('horizon grid geometry', () => {
   it('has a vertex count that follows the viewport, not one fixed mesh', () => {

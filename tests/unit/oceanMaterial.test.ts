@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { Vector3 } from 'three';
 import { OceanMaterial, SHADING_MODES } from '../../src/render/oceanMaterial';
-import { ParameterError } from '../../src/sim/parameters';
+import { ParameterError } from '../../src/parameters/parameters';
 
 function material(): OceanMaterial {
   return new OceanMaterial({

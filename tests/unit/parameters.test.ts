@@ -3,14 +3,14 @@
  * repeats the value and says what is allowed; good changes merge over the base without touching it.
  */
 import { describe, expect, it } from 'vitest';
-import { angularFrequency, MAX_FREQUENCY_INDEX } from '../../src/sim/dispersion';
+import { angularFrequency, MAX_FREQUENCY_INDEX } from '../../src/spectrum/dispersion';
 import {
   DEFAULT_PARAMETERS,
   isPowerOfTwo,
   ParameterError,
   validateParameters,
   type SimulationParameters,
-} from '../../src/sim/parameters';
+} from '../../src/parameters/parameters';
 
 /** Runs validateParameters and returns the ParameterError it must throw. */
 function rejection(changes: Partial<SimulationParameters>, base?: SimulationParameters): ParameterError {

@@ -8,7 +8,7 @@
  * normal) misses them by far more.
  */
 import { describe, expect, it } from 'vitest';
-import { SeededRandom } from '../../src/sim/random';
+import { SeededRandom } from '../../src/spectrum/random';
 
 const SIGMAS = 5;
 

@@ -3,9 +3,9 @@
  * 23–25), checked against the formulas evaluated independently here with Math.exp / Math.cos.
  */
 import { describe, expect, it } from 'vitest';
-import { angularFrequency, frequencyIndex } from '../../src/sim/dispersion';
-import { validateParameters, type SimulationParameters } from '../../src/sim/parameters';
-import { createInitialSpectrum, phillips, signedFrequency, windUnitVector } from '../../src/sim/spectrum';
+import { angularFrequency, frequencyIndex } from '../../src/spectrum/dispersion';
+import { validateParameters, type SimulationParameters } from '../../src/parameters/parameters';
+import { createInitialSpectrum, phillips, signedFrequency, windUnitVector } from '../../src/spectrum/initialSpectrum';
 
 const G = 9.81;
 

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { DEFAULT_PARAMETERS } from '../../src/sim/parameters';
+import { DEFAULT_PARAMETERS } from '../../src/parameters/parameters';
 import {
   assignState,
   DEFAULT_STATE,

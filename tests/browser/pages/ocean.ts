@@ -22,9 +22,9 @@ import { Ocean } from '../../../src/ocean';
 import { shaderSource } from '../../../src/shaderSource';
 import { OceanMaterial, type OceanShadingOptions } from '../../../src/render/oceanMaterial';
 import { OceanSurface } from '../../../src/render/oceanSurface';
-import { CpuWaveFields } from '../../../src/sim/cpuWaveFields';
-import { OceanSimulation } from '../../../src/sim/oceanSimulation';
-import type { SimulationParameters } from '../../../src/sim/parameters';
+import { CpuWaveFields } from '../../../src/fft/cpuWaveFields';
+import { OceanSimulation } from '../../../src/layers/oceanSimulation';
+import type { SimulationParameters } from '../../../src/parameters/parameters';
 
 const query = new URLSearchParams(location.search);
 const width = Number(query.get('width') ?? 640);

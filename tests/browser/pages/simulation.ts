@@ -4,11 +4,11 @@
  * whole fields.
  */
 import { WebGLRenderer, type DataTexture, type WebGLRenderTarget } from 'three';
-import { CpuWaveFields } from '../../../src/sim/cpuWaveFields';
-import { GpuWaveFields, supportedGpuPrecision, type GpuPrecision } from '../../../src/sim/gpuWaveFields';
-import { OceanSimulation } from '../../../src/sim/oceanSimulation';
-import { validateParameters, type SimulationParameters } from '../../../src/sim/parameters';
-import { createInitialSpectrum, type InitialSpectrum } from '../../../src/sim/spectrum';
+import { CpuWaveFields } from '../../../src/fft/cpuWaveFields';
+import { GpuWaveFields, supportedGpuPrecision, type GpuPrecision } from '../../../src/fft/gpuWaveFields';
+import { OceanSimulation } from '../../../src/layers/oceanSimulation';
+import { validateParameters, type SimulationParameters } from '../../../src/parameters/parameters';
+import { createInitialSpectrum, type InitialSpectrum } from '../../../src/spectrum/initialSpectrum';
 
 const renderer = new WebGLRenderer({ canvas: document.createElement('canvas') });
 

@@ -17,7 +17,7 @@
  */
 import { detCosSinDegrees, detExp } from './deterministicMath';
 import { frequencyIndex, GRAVITY } from './dispersion';
-import type { SimulationParameters } from './parameters';
+import type { SimulationParameters } from '../parameters/parameters';
 import { SeededRandom } from './random';
 
 export interface InitialSpectrum {

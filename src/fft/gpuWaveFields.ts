@@ -10,7 +10,7 @@
  * mipmaps generated after the pass.
  *
  * Each FFT pass computes a whole radix-4 butterfly per fragment and writes its four outputs to
- * four layers of (N/2)×(N/2) array textures (shaders/sim/quarterLayout.glsl says where each element
+ * four layers of (N/2)×(N/2) array textures (shaders/fft/quarterLayout.glsl says where each element
  * lives after each pass). That reads every input once per pass instead of four times, and under
  * SwiftShader makes a pass about three times cheaper than one output per fragment. three.js cannot
  * render to several layers at once, so this file attaches the layers to a framebuffer of its own
@@ -50,13 +50,13 @@ import {
   type WebGLRenderer,
 } from 'three';
 import { shaderSource } from '../shaderSource';
-import { fillPhaseTable, PHASE_TABLE_SIZE } from './dispersion';
-import type { InitialSpectrum } from './spectrum';
+import { fillPhaseTable, PHASE_TABLE_SIZE } from '../spectrum/dispersion';
+import type { InitialSpectrum } from '../spectrum/initialSpectrum';
 import { FIELD_TEXTURES } from './waveFieldLayout';
 
 export type GpuPrecision = 'float32' | 'float16';
 
-/** How the previous pass left the data: INPUT_LAYOUT of shaders/sim/quarterLayout.glsl. */
+/** How the previous pass left the data: INPUT_LAYOUT of shaders/fft/quarterLayout.glsl. */
 type InputLayout = 'QUARTERS' | 'QUARTERS_TRANSPOSED' | 'AFTER_RADIX2' | 'AFTER_RADIX4';
 
 interface FftPass {
@@ -137,7 +137,7 @@ export class GpuWaveFields {
     [this.displacement, this.derivatives] = this.output.textures;
     this.output.textures.forEach((texture, i) => (texture.name = FIELD_TEXTURES[i]));
 
-    const vertexShader = shaderSource('sim/fullscreen.vert');
+    const vertexShader = shaderSource('fft/fullscreen.vert');
     const material = (fragmentShader: string, uniforms: Record<string, { value: unknown }>, defines = {}) =>
       new ShaderMaterial({
         glslVersion: GLSL3,
@@ -150,7 +150,7 @@ export class GpuWaveFields {
       });
     const firstRadix2 = sizeLog2 % 2 === 1;
     this.evolveMaterial = material(
-      'sim/evolveSpectrum.frag',
+      'fft/evolveSpectrum.frag',
       {
         tAmplitudes: { value: this.amplitudes },
         tWaveVectors: { value: this.waveVectors },
@@ -165,7 +165,7 @@ export class GpuWaveFields {
       if (!fft) {
         const uniforms = { tSpectra0: { value: null }, tSpectra1: { value: null }, tTwiddles: { value: this.twiddles } };
         const defines = { RADIX: radix, RADIX_LOG2: Math.log2(radix), ALONG_Z: Number(alongZ), INPUT_LAYOUT: layout };
-        fft = material('sim/fftPass.frag', { ...uniforms, subtransformLog2: { value: 0 } }, defines);
+        fft = material('fft/fftPass.frag', { ...uniforms, subtransformLog2: { value: 0 } }, defines);
         this.fftMaterials.set(key, fft);
       }
       return fft;
@@ -189,7 +189,7 @@ export class GpuWaveFields {
       for (; p < n; p *= 4, layout = 'AFTER_RADIX4') pass(4, p);
     }
     const [result0, result1] = source.textures;
-    this.unpackMaterial = material('sim/unpackFields.frag', { tSpectra0: { value: result0 }, tSpectra1: { value: result1 } });
+    this.unpackMaterial = material('fft/unpackFields.frag', { tSpectra0: { value: result0 }, tSpectra1: { value: result1 } });
     this.passCount = 2 + this.fftPasses.length;
 
     const geometry = new BufferGeometry();

@@ -3,7 +3,7 @@
  * The result arrays are transferred both ways, so a frame allocates nothing.
  */
 import { CpuWaveFields } from './cpuWaveFields';
-import type { InitialSpectrum } from './spectrum';
+import type { InitialSpectrum } from '../spectrum/initialSpectrum';
 
 export type WorkerRequest =
   | { type: 'spectrum'; spectrum: InitialSpectrum; choppiness: number; repeatPeriod: number }

@@ -5,7 +5,7 @@
  * y up, as in three.js and the course report.
  */
 
-import { angularFrequency, frequencyIndex, MAX_FREQUENCY_INDEX } from './dispersion';
+import { angularFrequency, frequencyIndex, MAX_FREQUENCY_INDEX } from '../spectrum/dispersion';
 
 export interface SimulationParameters {
   /** Samples per side of the simulated patch, a power of two in [16, 1024]. @defaultValue 256 */

@@ -9,9 +9,9 @@
  * h̃(−k, t) = conj(h̃(k, t)): evolve() computes h̃ once for each pair of wave vectors ±k and writes
  * the packed spectra of both.
  */
-import { fillPhaseTable, PHASE_TABLE_SIZE } from './dispersion';
+import { fillPhaseTable, PHASE_TABLE_SIZE } from '../spectrum/dispersion';
 import { BatchedInverseFft2D } from './fft';
-import type { InitialSpectrum } from './spectrum';
+import type { InitialSpectrum } from '../spectrum/initialSpectrum';
 
 const PACKED_SPECTRA = 4;
 /**

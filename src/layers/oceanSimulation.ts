@@ -11,10 +11,10 @@
  * on with the last good values. Owns the path object and frees it in dispose().
  */
 import type { Texture, WebGLRenderer } from 'three';
-import { CpuFieldTextures } from './cpuFieldTextures';
-import { GpuWaveFields, supportedGpuPrecision, type GpuPrecision } from './gpuWaveFields';
-import { DEFAULT_PARAMETERS, ParameterError, validateParameters, type SimulationParameters } from './parameters';
-import { createInitialSpectrum, type InitialSpectrum } from './spectrum';
+import { CpuFieldTextures } from '../fft/cpuFieldTextures';
+import { GpuWaveFields, supportedGpuPrecision, type GpuPrecision } from '../fft/gpuWaveFields';
+import { DEFAULT_PARAMETERS, ParameterError, validateParameters, type SimulationParameters } from '../parameters/parameters';
+import { createInitialSpectrum, type InitialSpectrum } from '../spectrum/initialSpectrum';
 
 /** Which implementation computes the fields. */
 export type SimulationPath = 'gpu-rgba32f' | 'gpu-rgba16f' | 'js' | 'js-worker';

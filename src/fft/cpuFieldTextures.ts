@@ -16,7 +16,7 @@ import {
   type WebGLRenderer,
 } from 'three';
 import { CpuWaveFields } from './cpuWaveFields';
-import type { InitialSpectrum } from './spectrum';
+import type { InitialSpectrum } from '../spectrum/initialSpectrum';
 import { FIELD_TEXTURES } from './waveFieldLayout';
 import type { WorkerReply, WorkerRequest } from './waveFieldWorker';
 
