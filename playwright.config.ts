@@ -2,7 +2,10 @@ import { defineConfig } from '@playwright/test';
 import { BROWSER_ARGS, findBrowser } from './scripts/browser.mjs';
 
 // Real headless Chromium with WebGL2 (SwiftShader on machines without a GPU), against the Vite
-// dev server, so the tests run the same modules the app serves.
+// dev server, so the tests run the same modules the app serves. TEST_PORT lets two runs on one
+// machine use their own servers.
+const port = Number(process.env.TEST_PORT ?? 5173);
+
 export default defineConfig({
   testDir: 'tests/browser',
   timeout: 120_000,
@@ -10,14 +13,15 @@ export default defineConfig({
   fullyParallel: false,
   workers: 1, // two cores, and SwiftShader uses both for one page
   reporter: 'list',
+  outputDir: port === 5173 ? 'test-results' : `test-results-${port}`,
   retries: 0,
   use: {
-    baseURL: 'http://127.0.0.1:5173',
+    baseURL: `http://127.0.0.1:${port}`,
     launchOptions: { executablePath: findBrowser() ?? undefined, args: BROWSER_ARGS },
   },
   webServer: {
-    command: 'npx vite --port 5173 --strictPort --host 127.0.0.1',
-    url: 'http://127.0.0.1:5173/',
+    command: `npx vite --port ${port} --strictPort --host 127.0.0.1`,
+    url: `http://127.0.0.1:${port}/`,
     reuseExistingServer: !process.env.CI,
     timeout: 60_000,
   },

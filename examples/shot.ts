@@ -1,104 +1,320 @@
 /**
- * Still frames for `npm run shot` (scripts/shot.mjs): the ocean at exactly the times asked for,
- * one frame at a time (not in real time), so the same arguments give the same picture.
+ * Still frames for `npm run shot` (scripts/shot.mjs): the ocean at exactly the times asked for, one
+ * frame at a time (not in real time), so the same arguments give the same picture. It draws the
+ * way the app does (src/app/appView.ts: renderer, camera, ocean and per-frame steps are the app's),
+ * and reads every option from the same tables the app's URL does, so neither the CLI nor this page
+ * keeps its own copy of a rule.
  *
  * Query parameters (all optional):
- *   seed, wind (m/s), wind-direction (deg), choppiness, resolution, sun-elevation, sun-azimuth (deg)
- *   width, height        drawing-buffer size in pixels (default 1280×720), pixel ratio 1
- *   camera=x,y,z,tx,ty,tz  position and look-at point (default: <fft-ocean>'s view at 8 m)
- *   fov                  vertical field of view in degrees (default 50)
- *   t                    the time drawn on load (default 0)
+ *   width, height  drawing-buffer size in pixels (default 1280×720), pixel ratio 1
+ *   --<option>     a scene option as the CLI got it: each key of SIMULATION_OPTIONS, SUN_OPTIONS
+ *                  and SHADING_OPTIONS (src/parameters/) in kebab-case (--wind-speed, --patch-sizes,
+ *                  --shading-mode …), read with parseOptionText; --wind is --wind-speed; and the
+ *                  app's --path, --skybox, --wireframe, --inspector, --cam (read as the app's URL
+ *                  reads path, skybox, wireframe, inspector and cam, urlState.parseValue)
+ *   time           the time drawn on load, s (default 0)
+ *   camera         x,y,z,tx,ty,tz: position and look-at point (default: the app's cam)
+ *   fov            vertical field of view in degrees (default the app's, 55)
+ *   query          an app link's query (what follows "?"): exactly that scene, read by the app's
+ *                  parseState; not together with the parameters above but width and height
+ *   cli            the CLI's own option names, comma-separated: suggested for unknown options too
+ *   help=1         no picture: window.shotHelp becomes the option list for `--help`
  *
  * Exposes window.renderFrame(t): draws time t and resolves once the GPU has finished the frame;
- * then canvas.toDataURL('image/png') is that frame. document.title becomes 'ready' after the first
- * frame, or 'error: …' (with window.shotError) when the parameters are bad or WebGL 2 is missing.
+ * then canvas.toDataURL('image/png') is that frame. window.shotStart is { t, timeScale }, the first
+ * frame's time and how fast a link's time runs. document.title becomes 'ready' after the first
+ * frame, or 'error: …' (with window.shotError, and window.shotErrorKind 'usage' when an option,
+ * the query or the skybox was bad, 'failure' otherwise, e.g. without WebGL 2).
  */
-import { ACESFilmicToneMapping, PerspectiveCamera, Scene, WebGLRenderer } from 'three';
-import { placeCamera } from '../src/embed/fftOceanElement';
-import { Ocean, type OceanOptions } from '../src/index';
+import { Scene } from 'three';
+import { createAppCamera, createAppOcean, createAppRenderer, fitFarPlane, loadAppSkybox, prepareAppFrame } from '../src/app/appView';
+import { FlyControls } from '../src/app/flyControls';
+import { Inspector } from '../src/app/inspector';
+import {
+  defaultState,
+  DEFAULT_STATE,
+  parseState,
+  parseValue,
+  PATH_PREFERENCES,
+  roundTime,
+  simulationParameters,
+  type AppState,
+} from '../src/app/urlState';
+import { formatOptionText, parseDecimal, ParameterError, parseOptionText, type OptionRule } from '../src/parameters/options';
+import { SIMULATION_OPTIONS, validateParameters } from '../src/parameters/parameters';
+import { SHADING_OPTIONS, SUN_OPTIONS } from '../src/parameters/sceneOptions';
 
 declare global {
   interface Window {
     renderFrame: (t: number) => Promise<void>;
+    shotStart?: { t: number; timeScale: number };
     shotError?: string;
+    shotErrorKind?: 'usage' | 'failure';
+    shotHelp?: string;
   }
+}
+
+/** A bad option, query or skybox: the CLI exits with 2 (usage error). */
+class UsageError extends Error {}
+
+type Table = Readonly<Record<string, OptionRule>>;
+
+/** Where a --option goes: a key of one of the option tables, or an app-only AppState key. */
+interface ShotOption {
+  stateKey: keyof AppState;
+  /** The table and key parseOptionText reads it with; none for the app-only options. */
+  table?: Table;
+  key?: string;
+  /** For the app-only options' --help line. */
+  placeholder?: string;
+  help?: string;
+  /** Given without a value it means 1 (--wireframe). */
+  flag?: boolean;
+}
+
+const kebab = (name: string) => name.replace(/[A-Z]/g, (c) => `-${c.toLowerCase()}`);
+
+/** Every scene option by its CLI name, in the order --help lists them. */
+const OPTIONS = new Map<string, ShotOption>();
+function addTable(table: Table, stateKeyOf: (key: string) => keyof AppState = (key) => key as keyof AppState): void {
+  for (const key of Object.keys(table)) OPTIONS.set(kebab(key), { table, key, stateKey: stateKeyOf(key) });
+}
+addTable(SIMULATION_OPTIONS);
+addTable(SUN_OPTIONS);
+addTable(SHADING_OPTIONS, (key) => (key === 'shadingMode' ? 'mode' : (key as keyof AppState)));
+OPTIONS.set('path', { stateKey: 'path', placeholder: PATH_PREFERENCES.join('|'), help: 'where the FFT runs: on the GPU, in JS, or auto (GPU if it can)' });
+OPTIONS.set('skybox', {
+  stateKey: 'skybox',
+  placeholder: 'generated|<url>',
+  help: 'the analytic sky, or the folder URL of six faces px.png … nz.png (relative to the app, e.g. /skybox/clear-afternoon/)',
+});
+OPTIONS.set('wireframe', { stateKey: 'wireframe', placeholder: '[1|0]', help: 'draw the surface as wireframe', flag: true });
+OPTIONS.set('inspector', { stateKey: 'inspector', placeholder: '[1|0]', help: "the inspector's tiles along the bottom", flag: true });
+OPTIONS.set('cam', { stateKey: 'cam', placeholder: 'x,y,z,yaw,pitch', help: "the app's camera: metres and degrees (instead of --camera)" });
+/** Older names the CLI keeps. */
+const ALIASES: Record<string, string> = { wind: 'wind-speed' };
+
+function optionNamed(name: string): ShotOption | undefined {
+  return OPTIONS.get(Object.hasOwn(ALIASES, name) ? ALIASES[name] : name);
+}
+
+/** Levenshtein distance, for "did you mean". */
+function distance(a: string, b: string): number {
+  let previous = Array.from({ length: b.length + 1 }, (_, j) => j);
+  for (let i = 1; i <= a.length; i++) {
+    const current = [i];
+    for (let j = 1; j <= b.length; j++) {
+      current[j] = Math.min(previous[j] + 1, current[j - 1] + 1, previous[j - 1] + (a[i - 1] === b[j - 1] ? 0 : 1));
+    }
+    previous = current;
+  }
+  return previous[b.length];
+}
+
+/** The known name nearest to `name` (a name that contains it, or it contains, counts as near). */
+function nearest(name: string, known: readonly string[]): string {
+  let best = known[0];
+  let bestScore = Infinity;
+  for (const candidate of known) {
+    const score = candidate.includes(name) || name.includes(candidate) ? Math.abs(candidate.length - name.length) / 4 : distance(name, candidate);
+    if (score < bestScore) [best, bestScore] = [candidate, score];
+  }
+  return best;
+}
+
+/** The value of --name (written `text`), or a UsageError that names it. */
+function readOption(name: string, option: ShotOption, text: string): unknown {
+  const rename = (message: string, key: string) => (message.startsWith(key) ? `--${name}${message.slice(key.length)}` : `--${name}: ${message}`);
+  if (option.table && option.key) {
+    if (text === '') throw new UsageError(`--${name} needs a value: ${option.table[option.key].allowed}`);
+    try {
+      return parseOptionText(option.table, option.key, text);
+    } catch (error) {
+      if (error instanceof ParameterError) throw new UsageError(rename(error.message, option.key));
+      throw error;
+    }
+  }
+  const result = parseValue(option.stateKey, option.flag && text === '' ? '1' : text);
+  if ('error' in result) throw new UsageError(rename(result.error, option.stateKey));
+  return result.value;
+}
+
+/** The state the CLI's --options describe, over the app's defaults. */
+function stateFromOptions(query: URLSearchParams): AppState {
+  const state = defaultState();
+  const given = new Map<keyof AppState, string>();
+  const known = [...OPTIONS.keys(), ...Object.keys(ALIASES), ...(query.get('cli') ?? '').split(',').filter(Boolean)];
+  for (const [parameter, text] of query) {
+    if (!parameter.startsWith('--')) continue;
+    const name = parameter.slice(2);
+    const option = optionNamed(name);
+    if (!option) {
+      throw new UsageError(`unknown option --${name}; did you mean --${nearest(name, known)}? (--help lists them all)`);
+    }
+    const earlier = given.get(option.stateKey);
+    if (earlier !== undefined) throw new UsageError(`--${name} is given twice${earlier === name ? '' : ` (also as --${earlier})`}`);
+    given.set(option.stateKey, name);
+    (state as unknown as Record<string, unknown>)[option.stateKey] = readOption(name, option, text);
+  }
+  if (given.has('cam') && query.has('camera')) throw new UsageError('give the camera once: --cam x,y,z,yaw,pitch or --camera x,y,z,tx,ty,tz');
+  // Values fine alone can clash (patch sizes too far apart for the resolution …): name the option.
+  try {
+    validateParameters(simulationParameters(state));
+  } catch (error) {
+    if (!(error instanceof ParameterError)) throw error;
+    const name = kebab(error.parameter);
+    const message = error.message.startsWith(error.parameter) ? `--${name}${error.message.slice(error.parameter.length)}` : error.message;
+    throw new UsageError(`${message} (with the options given)`);
+  }
+  return state;
+}
+
+/** The scene of an app link's query, exactly as the app reads it; any warning is an error here. */
+function stateFromLink(text: string): AppState {
+  const { state, warnings } = parseState(text);
+  if (warnings.length > 0) {
+    // The app would go on with defaults ("— using the default …"); a shot stops instead.
+    const messages = warnings.map(({ message }) => message.replace(/ — using the default [\s\S]*$/, ''));
+    throw new UsageError(`the query is not one the app reads cleanly: ${messages.join('; ')}`);
+  }
+  if (state.paused) state.t = roundTime(state.t); // as the app does: a paused t is what the URL holds
+  return state;
 }
 
 function numberParameter(query: URLSearchParams, name: string): number | undefined {
   const raw = query.get(name);
   if (raw === null) return undefined;
-  const value = raw.trim() === '' ? NaN : Number(raw);
-  if (!Number.isFinite(value)) throw new Error(`${name}=${raw} is not a number`);
+  const value = parseDecimal(raw);
+  if (!Number.isFinite(value)) throw new UsageError(`${name}=${raw} is not a number`);
   return value;
 }
 
-function start(): void {
+/** The --help lines for the scene options, from the tables (rules, units, defaults). */
+function helpText(): string {
+  const COLUMN = 34;
+  const WIDTH = 100;
+  const lines: string[] = [];
+  /** `text` after `head`, wrapped at WIDTH and indented to COLUMN. */
+  const entry = (head: string, text: string) => {
+    const rows = [head.length < COLUMN ? head.padEnd(COLUMN) : head];
+    if (head.length >= COLUMN) rows.push(''.padEnd(COLUMN));
+    for (const word of text.split(' ')) {
+      const row = rows[rows.length - 1];
+      if (row.length > COLUMN && row.length + word.length > WIDTH) rows.push(`${''.padEnd(COLUMN)}${word}`);
+      else rows[rows.length - 1] = row.length > COLUMN ? `${row} ${word}` : `${row}${word}`;
+    }
+    lines.push(...rows);
+  };
+  const unit = (rule: OptionRule) => (rule.unit === '°' ? 'deg' : rule.unit);
+  const placeholder = (rule: OptionRule) =>
+    rule.type === 'choice' ? '<name>' : rule.type === 'numbers' ? `<${unit(rule) || 'n'},…>` : `<${unit(rule) || 'n'}>`;
+  const section = (title: string, names: string[]) => {
+    lines.push('', title);
+    for (const name of names) {
+      const option = OPTIONS.get(name)!;
+      const rule = option.table && option.key ? option.table[option.key] : undefined;
+      const fallback = DEFAULT_STATE[option.stateKey];
+      const value = typeof fallback === 'boolean' ? (fallback ? '1' : '0') : formatOptionText(fallback);
+      const aliases = Object.keys(ALIASES).filter((alias) => ALIASES[alias] === name);
+      entry(
+        `  --${name} ${rule ? placeholder(rule) : option.placeholder}`,
+        `${rule ? rule.allowed : option.help} (default ${value})` +
+          aliases.map((alias) => `; --${alias} is --${name}`).join(''),
+      );
+    }
+  };
+  const names = [...OPTIONS.keys()];
+  const from = (table: Table) => names.filter((name) => OPTIONS.get(name)!.table === table);
+  section("Sea (src/parameters/parameters.ts; the app's URL names in kebab-case)", from(SIMULATION_OPTIONS));
+  section('Sun and shading (src/parameters/sceneOptions.ts)', [...from(SUN_OPTIONS), ...from(SHADING_OPTIONS)]);
+  section("The app's other settings (src/app/urlState.ts)", names.filter((name) => !OPTIONS.get(name)!.table));
+  return lines.join('\n').slice(1);
+}
+
+async function start(): Promise<void> {
   const query = new URLSearchParams(location.search);
+  if (query.get('help') === '1') {
+    window.shotHelp = helpText();
+    document.title = 'help';
+    return;
+  }
   const width = numberParameter(query, 'width') ?? 1280;
   const height = numberParameter(query, 'height') ?? 720;
   for (const [name, value] of [['width', width], ['height', height]] as const) {
-    if (!Number.isInteger(value) || value < 1 || value > 8192) throw new Error(`${name} must be an integer from 1 to 8192, got ${value}`);
+    if (!Number.isInteger(value) || value < 1 || value > 8192) throw new UsageError(`${name} must be an integer from 1 to 8192, got ${value}`);
   }
-  const options: OceanOptions = { path: 'auto', worker: false }; // the JS fallback runs synchronously
-  const set = <K extends keyof OceanOptions>(key: K, value: OceanOptions[K] | undefined) => {
-    if (value !== undefined) options[key] = value;
-  };
-  set('seed', numberParameter(query, 'seed'));
-  set('windSpeed', numberParameter(query, 'wind'));
-  set('windDirection', numberParameter(query, 'wind-direction'));
-  set('choppiness', numberParameter(query, 'choppiness'));
-  set('resolution', numberParameter(query, 'resolution'));
-  const sunElevation = numberParameter(query, 'sun-elevation') ?? 22;
-  const sunAzimuth = numberParameter(query, 'sun-azimuth') ?? 40;
-  options.sunElevation = sunElevation;
-  options.sunAzimuth = sunAzimuth;
+  const link = query.get('query');
+  let state: AppState;
+  if (link !== null) {
+    const extra = [...query.keys()].filter((name) => !['width', 'height', 'query', 'cli'].includes(name));
+    if (extra.length > 0) throw new UsageError(`the query is the whole scene: put ${extra.join(', ')} into it instead`);
+    state = stateFromLink(link);
+  } else {
+    state = stateFromOptions(query);
+    state.t = numberParameter(query, 'time') ?? state.t;
+  }
+  const fov = numberParameter(query, 'fov');
+  const cameraText = query.get('camera');
+  let lookAt: number[] | null = null;
+  if (cameraText !== null) {
+    lookAt = cameraText.split(',').map(parseDecimal);
+    if (lookAt.length !== 6 || !lookAt.every(Number.isFinite)) throw new UsageError(`camera must be x,y,z,targetX,targetY,targetZ; got ${cameraText}`);
+  }
 
-  const renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+  // The app's renderer; preserveDrawingBuffer keeps the frame for toDataURL (it changes no pixel).
+  const renderer = createAppRenderer({ preserveDrawingBuffer: true });
   renderer.setPixelRatio(1);
   renderer.setSize(width, height);
-  renderer.toneMapping = ACESFilmicToneMapping;
   document.body.appendChild(renderer.domElement);
+  const gl = renderer.getContext();
+  if (!(gl instanceof WebGL2RenderingContext)) throw new Error('WebGL 2 is not available');
 
-  const ocean = new Ocean(renderer, options);
+  // worker: false, so the JS path's fields are ready when update returns.
+  const ocean = createAppOcean(renderer, state, { worker: false });
   const scene = new Scene();
   scene.add(ocean);
-  const camera = new PerspectiveCamera(numberParameter(query, 'fov') ?? 50, width / height, 0.5, 1e4);
-  const cameraText = query.get('camera');
-  if (cameraText === null) {
-    placeCamera(camera, 0, 8, sunAzimuth);
+  const camera = createAppCamera(width / height);
+  if (fov !== undefined) camera.fov = fov;
+  camera.updateProjectionMatrix();
+  if (lookAt) {
+    camera.position.set(lookAt[0], lookAt[1], lookAt[2]);
+    camera.lookAt(lookAt[3], lookAt[4], lookAt[5]);
+    camera.updateMatrixWorld();
   } else {
-    const c = cameraText.split(',').map(Number);
-    if (c.length !== 6 || !c.every(Number.isFinite)) throw new Error(`camera must be x,y,z,targetX,targetY,targetZ; got ${cameraText}`);
-    camera.position.set(c[0], c[1], c[2]);
-    camera.lookAt(c[3], c[4], c[5]);
+    // The app places its camera from cam through FlyControls; do the same, without the input.
+    const [x, y, z, yaw, pitch] = state.cam;
+    new FlyControls(camera, renderer.domElement, { position: [x, y, z], yaw, pitch }).dispose();
   }
-  camera.updateMatrixWorld();
+  try {
+    await loadAppSkybox(ocean, state.skybox);
+  } catch (error) {
+    throw new UsageError(`skybox: ${error instanceof Error ? error.message : String(error)}`);
+  }
+  // The inspector's tiles are part of the app's canvas when it is shown.
+  const inspector = state.inspector ? new Inspector(ocean, document.body) : null;
 
-  const gl = renderer.getContext();
   const pixel = new Uint8Array(4);
   window.renderFrame = async (t: number) => {
     if (typeof t !== 'number' || !Number.isFinite(t)) throw new Error(`renderFrame: t must be a finite number, got ${t}`);
-    ocean.update(t);
-    // The far plane must reach the horizon, known after a render: render until it does (twice
-    // at most, and only on the first frame).
-    for (let attempt = 0; attempt < 2; attempt++) {
+    // As the app's frame loop: the far plane comes from the previous render's horizon, so draw
+    // again until it stands still (the camera does not move, so twice at most, on the first frame).
+    const draw = () => {
       renderer.render(scene, camera);
-      const far = Math.max(1e4, 1.5 * ocean.horizonDistance);
-      if (far <= camera.far) break;
-      camera.far = far;
-      camera.updateProjectionMatrix();
-    }
+      inspector?.render(renderer);
+    };
+    prepareAppFrame(ocean, camera, t);
+    draw();
+    for (let attempt = 0; attempt < 2 && fitFarPlane(ocean, camera); attempt++) draw();
     // A one-pixel readback waits for the GPU to finish the frame (gl.finish does not, in Chromium).
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
   };
-  void window.renderFrame(numberParameter(query, 't') ?? 0).then(() => {
-    document.title = 'ready';
-  });
+  window.shotStart = { t: state.t, timeScale: link !== null ? state.timeScale : 1 };
+  await window.renderFrame(state.t);
+  document.title = 'ready';
 }
 
-try {
-  start();
-} catch (error) {
+start().catch((error: unknown) => {
+  window.shotErrorKind = error instanceof UsageError ? 'usage' : 'failure';
   window.shotError = error instanceof Error ? error.message : String(error);
   document.title = `error: ${window.shotError}`;
-}
+});

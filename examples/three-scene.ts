@@ -43,7 +43,6 @@ const ocean = new Ocean(renderer, {
   windSpeed: 9,
   windDirection: 20,
   resolution: 128,
-  patchSize: 160,
   sunElevation,
   sunAzimuth,
 });

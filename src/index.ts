@@ -1,12 +1,30 @@
 // three-fft-ocean public API: re-exports only.
 export { Ocean, type OceanOptions } from './ocean';
 export { OceanSimulation, type SimulationOptions, type SimulationPath, type PathPreference } from './layers/oceanSimulation';
-export { DEFAULT_PARAMETERS, ParameterError, validateParameters, type SimulationParameters } from './parameters/parameters';
-export { createInitialSpectrum, phillips, type InitialSpectrum } from './spectrum/initialSpectrum';
+export {
+  DEFAULT_PARAMETERS,
+  ParameterError,
+  SIMULATION_OPTIONS,
+  SPECTRUM_MODELS,
+  SPREADING_MODELS,
+  validateParameters,
+  parseParameterText,
+  type SimulationParameters,
+  type SpectrumModel,
+  type SpreadingModel,
+} from './parameters/parameters';
+export { createCascadeSpectra, type InitialSpectrum } from './spectrum/initialSpectrum';
+export { phillips } from './spectrum/phillips';
+export { seaState, waveNumberSpectrum, frequencySpectrum } from './spectrum/seaState';
+export { SEA_PRESETS, beaufortPreset } from './spectrum/presets';
+export { cascadeBands, type CascadeBand } from './spectrum/cascadeBands';
+export type { WaveLayer, LayerFrame, LayerFieldsOnCpu } from './layers/waveLayer';
+export { FftCascade, type FftBackend } from './layers/fftCascade';
 export { CpuWaveFields } from './fft/cpuWaveFields';
 export { GpuWaveFields, supportedGpuPrecision, type GpuPrecision } from './fft/gpuWaveFields';
 export { BatchedInverseFft2D } from './fft/fft';
 export { OceanSurface } from './render/oceanSurface';
-export { OceanMaterial, SHADING_MODES, type ShadingMode, type OceanShadingOptions } from './render/oceanMaterial';
+export { OceanMaterial, type OceanShadingOptions } from './render/oceanMaterial';
+export { SHADING_MODES, SHADING_OPTIONS, SUN_OPTIONS, DEFAULT_SHADING, DEFAULT_SUN, type ShadingMode, type ShadingOptions, type SunOptions } from './parameters/sceneOptions';
 export { SkyEnvironment, skyboxFaceUrls, SHIPPED_SKYBOX, type CubeFaceUrls } from './render/skyEnvironment';
 export { FftOceanElement, defineFftOceanElement, FFT_OCEAN_ATTRIBUTES, type FftOceanAttribute } from './embed/fftOceanElement';

@@ -15,10 +15,11 @@ import { OceanSurface } from './render/oceanSurface';
 import type { OceanShadingOptions } from './render/oceanMaterial';
 import { SkyBackground } from './render/skyBackground';
 import { SkyEnvironment } from './render/skyEnvironment';
-import { CpuWaveFields } from './fft/cpuWaveFields';
 import { OceanSimulation, type SimulationOptions } from './layers/oceanSimulation';
-import { ParameterError, type SimulationParameters } from './parameters/parameters';
+import { heightAt } from './layers/surfaceQuery';
+import { ParameterError, SIMULATION_OPTIONS, type SimulationParameters } from './parameters/parameters';
 import type { InitialSpectrum } from './spectrum/initialSpectrum';
+import { spectralMoments } from './spectrum/seaState';
 
 export interface OceanOptions extends Partial<SimulationParameters>, OceanShadingOptions, SimulationOptions {
   /** Sun elevation above the horizon in degrees, [-90, 90]. @defaultValue 30 */
@@ -28,18 +29,13 @@ export interface OceanOptions extends Partial<SimulationParameters>, OceanShadin
 }
 
 const SHADING_KEYS = ['ior', 'absorption', 'scatterColour', 'causticPower', 'causticColour', 'shadingMode'] as const;
-const SIMULATION_KEYS = [
-  'resolution',
-  'patchSize',
-  'windSpeed',
-  'windDirection',
-  'amplitude',
-  'smallWaveCutoff',
-  'depth',
-  'repeatPeriod',
-  'choppiness',
-  'seed',
-] as const;
+const SIMULATION_KEYS = Object.keys(SIMULATION_OPTIONS) as (keyof SimulationParameters)[];
+
+/** Significant wave height (m) and peak period (s) of a sea state. */
+export interface SeaStateSummary {
+  significantWaveHeight: number;
+  peakPeriod: number;
+}
 
 export class Ocean extends Object3D {
   readonly simulation: OceanSimulation;
@@ -48,9 +44,8 @@ export class Ocean extends Object3D {
   /** The sky behind everything (a child; set skyBackground.visible = false to show your own). */
   readonly skyBackground: SkyBackground;
   private currentTime = 0;
-  /** CPU copy of the fields for heightAt(), computed lazily for the current time. */
-  private probe: { spectrum: InitialSpectrum; fields: CpuWaveFields; time: number } | null = null;
-  private rms: { spectrum: InitialSpectrum; value: number } | null = null;
+  private rms: { spectra: readonly InitialSpectrum[]; value: number } | null = null;
+  private summary: { parameters: Readonly<SimulationParameters>; value: SeaStateSummary } | null = null;
 
   constructor(renderer: WebGLRenderer, options: OceanOptions = {}) {
     super();
@@ -61,14 +56,8 @@ export class Ocean extends Object3D {
     this.sky = new SkyEnvironment(renderer, { sunElevation: options.sunElevation, sunAzimuth: options.sunAzimuth });
     const sim = this.simulation;
     this.surface = new OceanSurface(
-      {
-        displacement: sim.uniforms.tDisplacement,
-        derivatives: sim.uniforms.tDerivatives,
-        patchSize: sim.uniforms.patchSize,
-        environment: this.sky.environment,
-        sunDirection: this.sky.skyUniforms.skySunDirection,
-      },
-      () => sim.parameters.patchSize / sim.parameters.resolution,
+      { environment: this.sky.environment, sunDirection: this.sky.skyUniforms.skySunDirection },
+      () => ({ layers: sim.layers, choppiness: sim.parameters.choppiness }),
       shading,
     );
     this.skyBackground = new SkyBackground(this.sky);
@@ -88,18 +77,34 @@ export class Ocean extends Object3D {
   }
 
   /**
-   * Root mean square of the sea's height in metres over time, from the spectrum: by Parseval the
-   * mean of h² over the patch is Σ|h̃(k, t)|², whose average over the repeat period is
-   * Σ(|h̃0(k)|² + |h̃0(−k)|²) (the cross terms oscillate). At one instant it differs by up to ~25%.
+   * Root mean square of the sea's height in metres over time, from the spectra: by Parseval the
+   * mean of h² over a patch is Σ|h̃(k, t)|², whose average over the repeat period is
+   * Σ(|h̃0(k)|² + |h̃0(−k)|²) (the cross terms oscillate); the cascades hold disjoint bands, so their
+   * variances add. At one instant it differs by up to ~25%.
    */
   get heightRms(): number {
-    const spectrum = this.simulation.spectrum as InitialSpectrum;
-    if (this.rms?.spectrum !== spectrum) {
+    const layers = this.simulation.layers;
+    if (this.rms?.spectra.length !== layers.length || this.rms.spectra.some((spectrum, i) => spectrum !== layers[i].spectrum)) {
       let sum = 0;
-      for (const a of spectrum.amplitudes) sum += a * a;
-      this.rms = { spectrum, value: Math.sqrt(sum) };
+      for (const { spectrum } of layers) for (const a of spectrum.amplitudes) sum += a * a;
+      this.rms = { spectra: layers.map((layer) => layer.spectrum), value: Math.sqrt(sum) };
     }
     return this.rms.value;
+  }
+
+  /**
+   * The sea state the parameters describe, from the spectrum's moments (seaState.ts): significant
+   * wave height Hs = 4√m0 (m) and peak period Tp (s; 0 without waves). The simulated sea holds the
+   * part of the spectrum its cascades cover: 4·heightRms is its Hs.
+   */
+  get seaState(): SeaStateSummary {
+    const parameters = this.simulation.parameters;
+    if (this.summary?.parameters !== parameters) {
+      const { m0, peakFrequency } = spectralMoments(parameters, parameters.patchSizes[parameters.patchSizes.length - 1]);
+      const value = { significantWaveHeight: 4 * Math.sqrt(m0), peakPeriod: peakFrequency > 0 ? (2 * Math.PI) / peakFrequency : 0 };
+      this.summary = { parameters, value };
+    }
+    return this.summary.value;
   }
 
   /** Computes the sea at `timeSeconds` (any finite number; it repeats every repeatPeriod). */
@@ -132,52 +137,14 @@ export class Ocean extends Object3D {
   }
 
   /**
-   * Height of the water surface at the world point (x, z) at the current time: the height of the
-   * surface point x0 that the choppy displacement moves onto (x, z), x0 + D(x0) = (x, z), found by
-   * Newton's method with the Jacobian of the fields (waveFieldLayout.ts). Where the surface folds
-   * over itself (Jacobian ≤ 0, breaking crests) several points land on (x, z) and the one nearest
-   * the start is returned. Computes the fields on the CPU once per time asked (a few ms at N = 256).
+   * Height of the water surface at the world point (x, z) at the current time, over every layer
+   * (surfaceQuery.ts: the rest point that the choppy displacement moves onto (x, z), found by
+   * Newton's method). Computes the layers' fields on the CPU once per time asked (a few ms per
+   * cascade at N = 256).
    */
   heightAt(x: number, z: number): number {
     if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError('heightAt(x, z)', `${x}, ${z}`, 'finite coordinates');
-    const { fields, spectrum } = this.fieldsNow();
-    const n = spectrum.resolution;
-    const scale = n / spectrum.patchSize; // texels per metre
-    const sample = (data: Float32Array, restX: number, restZ: number, channel: number) =>
-      sampleField(data, n, restX * scale, restZ * scale, channel);
-    let restX = x;
-    let restZ = z;
-    for (let iteration = 0; iteration < 20; iteration++) {
-      const residualX = restX + sample(fields.displacement, restX, restZ, 0) - x;
-      const residualZ = restZ + sample(fields.displacement, restX, restZ, 2) - z;
-      if (Math.abs(residualX) + Math.abs(residualZ) < 1e-7) break;
-      const jxx = 1 + sample(fields.derivatives, restX, restZ, 2);
-      const jzz = 1 + sample(fields.derivatives, restX, restZ, 3);
-      const jxz = sample(fields.displacement, restX, restZ, 3);
-      const determinant = jxx * jzz - jxz * jxz;
-      if (determinant > 0.05) {
-        restX -= (jzz * residualX - jxz * residualZ) / determinant;
-        restZ -= (jxx * residualZ - jxz * residualX) / determinant;
-      } else {
-        // Near a fold Newton steps explode: fall back to a damped fixed-point step.
-        restX -= 0.5 * residualX;
-        restZ -= 0.5 * residualZ;
-      }
-    }
-    return sample(fields.displacement, restX, restZ, 1);
-  }
-
-  private fieldsNow(): { fields: CpuWaveFields; spectrum: InitialSpectrum } {
-    const spectrum = this.simulation.spectrum as InitialSpectrum;
-    const { choppiness, repeatPeriod } = this.simulation.parameters;
-    if (!this.probe || this.probe.spectrum !== spectrum) {
-      this.probe = { spectrum, fields: new CpuWaveFields(spectrum, choppiness, repeatPeriod), time: NaN };
-    }
-    if (this.probe.time !== this.currentTime) {
-      this.probe.fields.update(this.currentTime);
-      this.probe.time = this.currentTime;
-    }
-    return this.probe;
+    return heightAt(this.simulation.layers, this.simulation.parameters.choppiness, this.currentTime, x, z);
   }
 
   dispose(): void {
@@ -186,22 +153,7 @@ export class Ocean extends Object3D {
     this.skyBackground.dispose();
     this.sky.dispose();
     this.simulation.dispose();
-    this.probe = null;
   }
-}
-
-/**
- * Bilinear sample with wrap-around of channel c of an RGBA N×N field at continuous texel
- * coordinates (u, v), where texel (i, j) holds the field at (u, v) = (i, j) — the same
- * interpolation the GPU does for the surface (see horizonGrid.ts).
- */
-function sampleField(data: Float32Array, n: number, u: number, v: number, c: number): number {
-  const i0 = Math.floor(u);
-  const j0 = Math.floor(v);
-  const fu = u - i0;
-  const fv = v - j0;
-  const at = (i: number, j: number) => data[4 * ((((j % n) + n) % n) * n + (((i % n) + n) % n)) + c];
-  return (1 - fv) * ((1 - fu) * at(i0, j0) + fu * at(i0 + 1, j0)) + fv * ((1 - fu) * at(i0, j0 + 1) + fu * at(i0 + 1, j0 + 1));
 }
 
 function pick<T extends object, K extends keyof T>(source: T, keys: readonly K[]): Partial<Pick<T, K>> {

@@ -3,50 +3,91 @@
  * at a fixed camera into a canvas of the requested size, timed per frame from an idle GPU through
  * ocean.update(t) and renderer.render() to a 1-pixel readPixels of the canvas (which cannot
  * return before the frame is drawn; gl.finish() does not block in Chromium).
+ *
+ * One Ocean per set of patch sizes (one FFT cascade per size), all drawn by the same renderer into
+ * the same canvas; each round renders a frame of every one of them in turn, so machine noise hits
+ * the cascade counts alike.
  */
 import { ACESFilmicToneMapping, PerspectiveCamera, Scene, WebGLRenderer } from 'three';
 import { Ocean } from '../../src/ocean';
 
-async function frames(options: { resolution: number; width: number; height: number; warmup: number; rounds: number }) {
+export interface FrameOptions {
+  resolution: number;
+  width: number;
+  height: number;
+  warmup: number;
+  rounds: number;
+  /** One Ocean per entry; undefined keeps the default patch sizes. */
+  patchSizeSets: (number[] | undefined)[];
+}
+
+export interface FrameSamples {
+  patchSizes: number[];
+  cascades: number;
+  samples: number[];
+  calls: number;
+  triangles: number;
+  vertices: number;
+  simulationPasses: number;
+  path: string;
+}
+
+async function frames(options: FrameOptions): Promise<FrameSamples[]> {
   const renderer = new WebGLRenderer({ antialias: false });
   renderer.setPixelRatio(1);
   renderer.setSize(options.width, options.height);
   renderer.toneMapping = ACESFilmicToneMapping;
   document.body.appendChild(renderer.domElement);
   const gl = renderer.getContext();
-  const scene = new Scene();
   const camera = new PerspectiveCamera(55, options.width / options.height, 0.5, 1e5);
   camera.position.set(0, 12, 0);
   camera.lookAt(60, 0, -80);
-  const ocean = new Ocean(renderer, { resolution: options.resolution, seed: 7, path: 'gpu' });
-  scene.add(ocean);
+  const subjects = options.patchSizeSets.map((patchSizes) => {
+    const scene = new Scene();
+    const ocean = new Ocean(renderer, {
+      resolution: options.resolution,
+      seed: 7,
+      path: 'gpu',
+      ...(patchSizes ? { patchSizes } : {}),
+    });
+    scene.add(ocean);
+    return { scene, ocean, samples: [] as number[], calls: 0, triangles: 0 };
+  });
   const pixel = new Uint8Array(4);
   const sync = () => gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
-  const samples: number[] = [];
-  let t = 3;
-  for (let round = 0; round < options.warmup + options.rounds; round++) {
-    sync();
-    const start = performance.now();
-    ocean.update((t += 1 / 30));
-    camera.far = Math.max(1e4, 1.5 * ocean.horizonDistance);
-    camera.updateProjectionMatrix();
-    renderer.render(scene, camera);
-    sync();
-    if (round >= options.warmup) samples.push(performance.now() - start);
-    await new Promise((resolve) => setTimeout(resolve, 0));
+  try {
+    let t = 3;
+    for (let round = 0; round < options.warmup + options.rounds; round++) {
+      t += 1 / 30;
+      for (const subject of subjects) {
+        sync();
+        const start = performance.now();
+        subject.ocean.update(t);
+        camera.far = Math.max(1e4, 1.5 * subject.ocean.horizonDistance);
+        camera.updateProjectionMatrix();
+        renderer.render(subject.scene, camera);
+        sync();
+        if (round >= options.warmup) subject.samples.push(performance.now() - start);
+        subject.calls = renderer.info.render.calls;
+        subject.triangles = renderer.info.render.triangles;
+        await new Promise((resolve) => setTimeout(resolve, 0));
+      }
+    }
+    return subjects.map(({ ocean, samples, calls, triangles }) => ({
+      patchSizes: [...ocean.simulation.parameters.patchSizes],
+      cascades: ocean.simulation.layers.length,
+      samples,
+      calls,
+      triangles,
+      vertices: ocean.surface.geometry.getAttribute('position').count,
+      simulationPasses: ocean.simulation.passCount,
+      path: ocean.simulation.path,
+    }));
+  } finally {
+    subjects.forEach(({ ocean }) => ocean.dispose());
+    renderer.dispose();
+    renderer.domElement.remove();
   }
-  const info = {
-    samples,
-    calls: renderer.info.render.calls,
-    triangles: renderer.info.render.triangles,
-    vertices: ocean.surface.geometry.getAttribute('position').count,
-    simulationPasses: ocean.simulation.passCount,
-    path: ocean.simulation.path,
-  };
-  ocean.dispose();
-  renderer.dispose();
-  renderer.domElement.remove();
-  return info;
 }
 
 declare global {

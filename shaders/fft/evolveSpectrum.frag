@@ -1,6 +1,6 @@
 // Time evolution of the spectrum and the four packed field spectra, one texel per wave vector.
-// The same computation as CpuWaveFields.evolve (src/sim/cpuWaveFields.ts); the field spectra and
-// their packing are listed in src/sim/waveFieldLayout.ts.
+// The same computation as CpuWaveFields.evolve (src/fft/cpuWaveFields.ts); the field spectra and
+// their packing are listed in src/fft/waveFieldLayout.ts.
 //   h̃(k, t) = h̃0(k)·e^{iωt} + h̃0*(−k)·e^{−iωt}   (Tessendorf 2001, eq. 26)
 // Each fragment evolves four wave vectors, columns b + s·N/4 of row `line`, and writes them in
 // the FFT's QUARTERS layout (quarterLayout.glsl): column b + s·N/4 to texel (b, line) of layer s.
@@ -8,15 +8,14 @@
 // whose two butterflies take exactly these four columns, and writes the AFTER_RADIX2 layout:
 // one pass fewer.
 #include "common/complex.glsl"
-#include "sim/butterfly.glsl"
+#include "fft/butterfly.glsl"
 #define ALONG_Z 0              // it writes what the x axis reads
 #define INPUT_LAYOUT QUARTERS  // (it reads no working texture)
-#include "sim/quarterLayout.glsl"
+#include "fft/quarterLayout.glsl"
 
 uniform highp sampler2D tAmplitudes;   // (h̃0(k), h̃0*(−k))
-uniform highp sampler2D tWaveVectors;  // (kx, kz, 1/k, m), see src/sim/spectrum.ts
-uniform highp sampler2D tPhases;       // 256×1: (e^{i·j·φ}, e^{i·256·j·φ}), see src/sim/dispersion.ts
-uniform float choppiness;
+uniform highp sampler2D tWaveVectors;  // (kx, kz, 1/k, m), see src/spectrum/initialSpectrum.ts
+uniform highp sampler2D tPhases;       // 256×1: (e^{i·j·φ}, e^{i·256·j·φ}), see src/spectrum/dispersion.ts
 uniform int sizeLog2;
 
 layout(location = 0) out vec4 displacementSpectra[4];  // (Dx + i·h, Dz + i·∂Dx/∂z)
@@ -33,7 +32,7 @@ void evolve(ivec2 texel, out vec4 displacement, out vec4 derivatives) {
 
   float kx = wave.x;
   float kz = wave.y;
-  float d = choppiness * wave.z;  // λ/k
+  float d = wave.z;  // λ/k with λ = 1: the surface scales by the choppiness (waveFieldLayout.ts)
   vec2 slopeX = timesI(kx * h);   // i·kx·h̃
   vec2 slopeZ = timesI(kz * h);   // i·kz·h̃
   vec2 dispX = d * slopeX;        // i·λ·kx/k·h̃

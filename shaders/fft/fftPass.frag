@@ -2,7 +2,7 @@
 // "High performance discrete Fourier transforms on graphics processors"), in the butterfly form:
 // each fragment computes one whole butterfly and writes its outputs to four layers of the working
 // textures (quarterLayout.glsl). Each working texture holds two complex fields per texel; the two
-// together hold the four packed spectra of src/sim/waveFieldLayout.ts.
+// together hold the four packed spectra of src/fft/waveFieldLayout.ts.
 //
 // RADIX (4 or 2), RADIX_LOG2, ALONG_Z (0 or 1) and INPUT_LAYOUT (quarterLayout.glsl) are defined
 // with it. A pass takes sub-transforms of length p to length P = p·RADIX. Radix 4, butterfly
@@ -15,8 +15,8 @@
 // The twiddle comes from a table of e^{2πi·j/N} that JS computed in double precision: GLSL sin/cos
 // are approximate (about 2e-4 off under SwiftShader, see ../shared/BROWSER.md).
 #include "common/complex.glsl"
-#include "sim/butterfly.glsl"
-#include "sim/quarterLayout.glsl"
+#include "fft/butterfly.glsl"
+#include "fft/quarterLayout.glsl"
 
 uniform highp sampler2DArray tSpectra0;
 uniform highp sampler2DArray tSpectra1;

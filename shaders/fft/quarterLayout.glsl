@@ -1,4 +1,4 @@
-// Where the GPU FFT keeps its data (see src/sim/gpuWaveFields.ts for the whole pipeline).
+// Where the GPU FFT keeps its data (see src/fft/gpuWaveFields.ts for the whole pipeline).
 //
 // Every pass of the FFT computes one radix-4 butterfly per fragment: four inputs in, four outputs
 // out. A fragment can only write to its own texel, so the four outputs go to the same texel of

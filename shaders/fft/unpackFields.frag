@@ -3,7 +3,7 @@
 // textures, which the surface samples with REPEAT wrapping, linear filtering and mipmaps.
 #define ALONG_Z 1
 #define INPUT_LAYOUT QUARTERS
-#include "sim/quarterLayout.glsl"
+#include "fft/quarterLayout.glsl"
 
 uniform highp sampler2DArray tSpectra0;
 uniform highp sampler2DArray tSpectra1;

@@ -1,4 +1,4 @@
-// Surface normal of the displaced sea from the FFT derivatives (src/sim/waveFieldLayout.ts).
+// Surface normal of the displaced sea from the FFT derivatives (src/fft/waveFieldLayout.ts).
 // A point x0 of the rest plane moves to P(x0) = (x0 + Dx, h, z0 + Dz), so its tangents are
 //   ∂P/∂x0 = (1 + ∂Dx/∂x, ∂h/∂x, ∂Dx/∂z),   ∂P/∂z0 = (∂Dx/∂z, ∂h/∂z, 1 + ∂Dz/∂z)
 // and the upward normal is ∂P/∂z0 × ∂P/∂x0. Without displacement this is (−∂h/∂x, 1, −∂h/∂z),

@@ -8,9 +8,8 @@
 #include "surface/caustics.glsl"
 #include "surface/absorption.glsl"
 #include "sky/environmentLookup.glsl"
+#include "surface/waveLayers.glsl"
 
-uniform sampler2D tDisplacement;
-uniform sampler2D tDerivatives;
 uniform vec3 sunDirection;     // towards the sun
 uniform vec3 sunColour;        // radiance of the glint
 uniform float sunShininess;
@@ -23,7 +22,7 @@ uniform float causticPower;
 uniform vec3 causticColour;
 uniform float heightScale;     // metres shown as full white in the height mode
 
-varying vec2 vUv;
+varying vec2 vLayerUv[LAYER_COUNT];
 varying vec3 vWorldPosition;
 centroid varying vec2 vRestPosition;  // see ocean.vert
 flat varying float vRing;
@@ -52,8 +51,16 @@ void main() {
   vec2 fromInner = abs(vRestPosition - vInnerRing.xy);
   if (max(fromInner.x, fromInner.y) < vInnerRing.z) discard;
 
-  vec4 derivatives = texture(tDerivatives, vUv);
-  float dxDz = texture(tDisplacement, vUv).w;
+  vec4 derivatives = vec4(0.0);  // Σ (∂h/∂x, ∂h/∂z, ∂Dx/∂x, ∂Dz/∂z)
+  float dxDz = 0.0;               // Σ ∂Dx/∂z
+  #pragma unroll_loop_start
+  for (int i = 0; i < LAYER_COUNT; i++) {
+    derivatives += texture(tLayerDerivatives[ i ], vLayerUv[ i ]);
+    dxDz += texture(tLayerDisplacement[ i ], vLayerUv[ i ]).w;
+  }
+  #pragma unroll_loop_end
+  derivatives.zw *= choppiness;
+  dxDz *= choppiness;
   vec3 normal = choppyNormal(derivatives, dxDz);
   vec3 view = normalize(vWorldPosition - cameraPosition);  // d, from the eye to the surface
   // A normal that faces away from the eye (behind a steep crest) is bent back into view.

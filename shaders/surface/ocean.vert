@@ -1,10 +1,13 @@
-// Ocean surface, vertex stage: a horizon-grid vertex displaced by the simulated fields,
-// P = x0 + (Dx, h, Dz) sampled at the rest point x0 (src/sim/waveFieldLayout.ts).
+// Ocean surface, vertex stage: a horizon-grid vertex displaced by the sum of the wave layers,
+// P = x0 + Σ (λ·Dx, h, λ·Dz) sampled at the rest point x0 (src/fft/waveFieldLayout.ts).
 #include "surface/horizonGrid.glsl"
+#include "surface/waveLayers.glsl"
 
-uniform sampler2D tDisplacement;
+// Texture coordinate of each ring centre in each layer, (centre / size + ½ texel) mod 1, computed in
+// double precision in JS (RingFrames): [ring · LAYER_COUNT + layer].
+uniform vec2 ringLayerUvOrigins[(RING_COUNT + 1) * LAYER_COUNT];
 
-varying vec2 vUv;           // field coordinates of the rest point, for the fragment stage
+varying vec2 vLayerUv[LAYER_COUNT];  // each layer's coordinates of the rest point, for the fragment stage
 varying vec3 vWorldPosition;
 // centroid: with multisampling, a pixel only partly covered by a triangle must not evaluate the
 // rest point outside it (the ring-overlap test in ocean.frag would then keep a dropped triangle).
@@ -22,9 +25,15 @@ uniform float captureHeight;
 
 void main() {
   GridPoint point = horizonGridPoint();
-  vec3 displacement = textureLod(tDisplacement, point.uv, point.lod).xyz;
+  vec3 displacement = vec3(0.0);
+  #pragma unroll_loop_start
+  for (int i = 0; i < LAYER_COUNT; i++) {
+    vLayerUv[ i ] = ringLayerUvOrigins[point.frameRing * LAYER_COUNT + UNROLLED_LOOP_INDEX] + point.fromCentre / layerSizes[ i ];
+    displacement += textureLod(tLayerDisplacement[ i ], vLayerUv[ i ], point.lod + layerLodBias[ i ]).xyz;
+  }
+  #pragma unroll_loop_end
+  displacement.xz *= choppiness;
   vec3 world = vec3(point.world.x, 0.0, point.world.y) + displacement;
-  vUv = point.uv;
   vWorldPosition = world;
   vRestPosition = point.world;
   vRing = point.ring;

@@ -8,18 +8,16 @@
  * Time: the simulation advances by min(real frame time, 0.1 s) × time scale per frame, so a
  * hidden tab or a stalled frame never makes the sea jump; paused keeps t fixed.
  */
-import { ACESFilmicToneMapping, PerspectiveCamera, Scene, WebGLRenderer } from 'three';
-import { Ocean } from '../ocean';
-import { skyboxFaceUrls } from '../render/skyEnvironment';
-import { CONTROLS_HELP, FlyControls, MIN_HEIGHT } from './flyControls';
+import { Scene } from 'three';
+import { createAppCamera, createAppOcean, createAppRenderer, loadAppSkybox, prepareAppFrame } from './appView';
+import { CONTROLS_HELP, FlyControls } from './flyControls';
 import { Inspector } from './inspector';
 import { Panel } from './panel';
-import { PATH_LABELS, StatusOverlay, TimingAverager } from './statusOverlay';
-import { parseState, roundTime, serializeState, simulationParameters, type AppState } from './urlState';
+import { describeSeaState, PATH_LABELS, StatusOverlay, TimingAverager } from './statusOverlay';
+import { parseState, roundTime, serializeState, type AppState } from './urlState';
 
 /** Longest step of simulation time per frame, seconds (before the time scale). */
 const MAX_SIMULATION_STEP = 0.1;
-const INSPECTOR_TILES = 9;
 
 const container = document.querySelector<HTMLElement>('#app')!;
 const overlay = new StatusOverlay(document.querySelector<HTMLElement>('#status')!, CONTROLS_HELP);
@@ -27,38 +25,27 @@ const overlay = new StatusOverlay(document.querySelector<HTMLElement>('#status')
 const { state, warnings } = parseState(location.search);
 for (const { parameter, message } of warnings) overlay.warn(parameter, message);
 
-const renderer = new WebGLRenderer({ antialias: true });
+// The renderer, camera, ocean and per-frame steps are appView.ts's, which `npm run shot` shares.
+const renderer = createAppRenderer();
 renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
-renderer.toneMapping = ACESFilmicToneMapping;
 container.appendChild(renderer.domElement);
 
 const scene = new Scene();
-const camera = new PerspectiveCamera(55, 1, 0.5, 1e5);
-const ocean = new Ocean(renderer, {
-  ...simulationParameters(state),
-  path: state.path,
-  sunElevation: state.sunElevation,
-  sunAzimuth: state.sunAzimuth,
-  ior: state.ior,
-  absorption: state.absorption,
-  scatterColour: state.scatterColour,
-  causticPower: state.causticPower,
-  causticColour: state.causticColour,
-  shadingMode: state.mode,
-});
-ocean.surface.material.wireframe = state.wireframe;
+const camera = createAppCamera();
+const ocean = createAppOcean(renderer, state);
 scene.add(ocean);
-if (state.skybox !== 'generated') {
-  const base = state.skybox.endsWith('/') ? state.skybox : `${state.skybox}/`;
-  // A face set that fails to load (404, CORS, not an image) leaves the generated sky in use.
-  ocean.sky.loadFaces(skyboxFaceUrls(base)).catch((error: Error) => overlay.warn('skybox', `skybox: ${error.message}`));
-}
+// A face set that fails to load (404, CORS, not an image) leaves the generated sky in use.
+loadAppSkybox(ocean, state.skybox)?.catch((error: Error) => overlay.warn('skybox', `skybox: ${error.message}`));
 
 const [x, y, z, yaw, pitch] = state.cam;
 const controls = new FlyControls(camera, renderer.domElement, { position: [x, y, z], yaw, pitch });
 if (state.paused) state.t = roundTime(state.t);
 
 let inspector: Inspector | null = null;
+// C shows the inspector's next cascade.
+window.addEventListener('keydown', (event) => {
+  if (event.code === 'KeyC' && !(event.target instanceof HTMLInputElement)) inspector?.nextCascade();
+});
 function showInspector(show: boolean): void {
   if (show && !inspector) inspector = new Inspector(ocean, container);
   if (!show && inspector) {
@@ -158,11 +145,12 @@ const panel = new Panel(state, window.innerWidth <= 700, {
   clearWarning: (parameter) => overlay.clearWarning(parameter),
   copyLink: () => void copyLink(),
   runningPath: () => PATH_LABELS[ocean.simulation.path] ?? ocean.simulation.path,
+  seaState: () => describeSeaState(ocean),
 });
 
 /** Keeps the panel above the inspector's tiles. */
 function fitPanel(): void {
-  const tiles = inspector ? Inspector.tileSize(window.innerWidth, INSPECTOR_TILES) : 0;
+  const tiles = inspector ? Inspector.tileSize(window.innerWidth) : 0;
   panel.gui.domElement.style.maxHeight = `calc(100% - ${tiles}px)`;
   document.documentElement.style.setProperty('--inspector-height', `${tiles}px`);
 }
@@ -209,17 +197,8 @@ renderer.setAnimationLoop((now: number) => {
   controls.update(dt);
 
   const start = performance.now();
-  ocean.update(state.t);
-  // The controls keep the eye above the mean sea level; near the water it must also stay above the
-  // crest under it. heightAt updates the fields on the CPU, so it is asked only when a crest
-  // (4 standard deviations of the height) could reach the camera.
-  if (camera.position.y < MIN_HEIGHT + 4 * ocean.heightRms) {
-    const water = ocean.heightAt(camera.position.x, camera.position.z);
-    camera.position.y = Math.max(camera.position.y, water + MIN_HEIGHT);
-  }
+  prepareAppFrame(ocean, camera, state.t); // the sea at t, the eye above the crest, the far plane
   const simulated = performance.now();
-  camera.far = Math.max(1e4, 1.5 * ocean.horizonDistance);
-  camera.updateProjectionMatrix();
   renderer.render(scene, camera);
   inspector?.render(renderer);
   const rendered = performance.now();
@@ -231,7 +210,7 @@ renderer.setAnimationLoop((now: number) => {
 
   averager.add(rendered, simulated - start, rendered - simulated);
   if (rendered - lastStatus > 250) {
-    overlay.show(ocean.simulation.path, averager.latest, state.t, state.paused, controls.speed);
+    overlay.show(describeSeaState(ocean), ocean.simulation.path, averager.latest, state.t, state.paused, controls.speed);
     lastStatus = rendered;
   }
   panel.update();

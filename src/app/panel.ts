@@ -9,20 +9,16 @@
  */
 import GUI, { type Controller } from 'lil-gui';
 import { Color } from 'three';
-import { SHADING_MODES } from '../render/oceanMaterial';
-import { ParameterError, type SimulationParameters } from '../parameters/parameters';
+import { SHADING_MODES } from '../parameters/sceneOptions';
+import { ParameterError, SPECTRUM_MODELS, SPREADING_MODELS, type SimulationParameters } from '../parameters/parameters';
+import { beaufortPreset, SEA_PRESETS } from '../spectrum/presets';
 import { assignState, cloneState, PATH_PREFERENCES, urlRounded, type AppState, type Rgb } from './urlState';
 
-/** Sea states (Phillips amplitudes fitted so the significant wave height 4·σ of the simulated
- * field matches the Pierson–Moskowitz fully developed sea, Hs ≈ 0.21·U²/g, at each wind speed). */
-export const PRESETS: Record<'calm' | 'breeze' | 'storm', Partial<SimulationParameters>> = {
-  // Beaufort 2, light breeze: Hs ≈ 0.2 m, peak wavelength ≈ 8 m.
-  calm: { windSpeed: 3, amplitude: 4e-6, patchSize: 100, choppiness: 0.5, smallWaveCutoff: 0.05 },
-  // Beaufort 4, moderate breeze: Hs ≈ 1 m, peak wavelength ≈ 45 m.
-  breeze: { windSpeed: 7, amplitude: 9e-7, patchSize: 200, choppiness: 1, smallWaveCutoff: 0.1 },
-  // Beaufort 8, gale: Hs ≈ 8.5 m, peak wavelength ≈ 360 m (so a 600 m patch).
-  storm: { windSpeed: 20, amplitude: 9e-8, patchSize: 600, choppiness: 1.5, smallWaveCutoff: 0.3 },
-};
+/** The presets the panel offers: the named sea states, then Beaufort forces 0–12. */
+export const PANEL_PRESETS: Readonly<Record<string, Partial<SimulationParameters>>> = Object.freeze({
+  ...SEA_PRESETS,
+  ...Object.fromEntries(Array.from({ length: 13 }, (_, force) => [`Beaufort ${force}`, beaufortPreset(force)])),
+});
 
 export const RESOLUTIONS = [16, 32, 64, 128, 256, 512, 1024];
 
@@ -36,6 +32,8 @@ export interface PanelActions {
   copyLink(): void;
   /** Text for the read-only "running" line (the FFT path in use). */
   runningPath(): string;
+  /** Text for the read-only sea-state line (significant wave height and peak period). */
+  seaState(): string;
 }
 
 type Key = keyof AppState;
@@ -48,7 +46,10 @@ export class Panel {
   private good: AppState;
   private readonly colours: { causticColour: string; scatterColour: string };
   private readonly depthProxy: { deep: boolean; metres: number };
-  private readonly running = { path: '' };
+  private readonly running = { path: '', seaState: '' };
+  /** The preset menu's selection, and the patch sizes as text ("13.7,79.3,457"). */
+  private readonly presetProxy = { preset: '' };
+  private readonly patchSizesProxy = { text: '' };
   /** The Phillips amplitude in units of 10⁻⁶, which reads better on a slider. */
   private readonly amplitudeProxy = { micro: 0 };
 
@@ -62,26 +63,38 @@ export class Panel {
     this.depthProxy = { deep: state.depth === Infinity, metres: state.depth === Infinity ? 50 : state.depth };
     this.running.path = actions.runningPath();
     this.amplitudeProxy.micro = state.amplitude * 1e6;
+    this.patchSizesProxy.text = state.patchSizes.join(',');
 
     const gui = (this.gui = new GUI({ title: 'Ocean', width: 280 }));
     gui.domElement.classList.add('ocean-panel');
 
     const sea = gui.addFolder('Sea state');
-    const presets = { calm: () => this.preset('calm'), breeze: () => this.preset('breeze'), storm: () => this.preset('storm') };
-    this.register('preset.calm', sea.add(presets, 'calm').name('preset: calm (3 m/s)'));
-    this.register('preset.breeze', sea.add(presets, 'breeze').name('preset: breeze (7 m/s)'));
-    this.register('preset.storm', sea.add(presets, 'storm').name('preset: storm (20 m/s)'));
-    this.number(sea, 'windSpeed', 'wind speed (m/s)', 0, 40, 0.1);
+    const preset = sea.add(this.presetProxy, 'preset', ['', ...Object.keys(PANEL_PRESETS)]).name('preset');
+    preset.onChange((name: string) => name && this.preset(name));
+    this.register('preset', preset);
+    this.register('seaState', sea.add(this.running, 'seaState').name('Hs, Tp').disable());
+    this.bind(sea.add(state, 'spectrum', SPECTRUM_MODELS as unknown as string[]).name('spectrum'), 'spectrum');
+    this.number(sea, 'windSpeed', 'wind speed U10 (m/s)', 0, 60, 0.1);
     this.number(sea, 'windDirection', 'wind direction (°)', -180, 180, 1);
-    const amplitude = sea.add(this.amplitudeProxy, 'micro', 0, 20, 0.01).name('amplitude A (×10⁻⁶)');
+    this.number(sea, 'fetch', 'fetch (km)', 0.1, 2000, 0.1);
+    this.number(sea, 'peakEnhancement', 'peak enhancement γ', 1, 10, 0.1);
+    this.bind(sea.add(state, 'spreading', SPREADING_MODELS as unknown as string[]).name('spreading'), 'spreading');
+    this.number(sea, 'spreadingExponent', 'cos-2s exponent s', 0, 100, 0.5);
+    this.number(sea, 'swellHeight', 'swell height Hs (m)', 0, 30, 0.1);
+    this.number(sea, 'swellPeriod', 'swell period Tp (s)', 1, 40, 0.1);
+    this.number(sea, 'swellDirection', 'swell direction (°)', -180, 180, 1);
+    this.number(sea, 'swellElongation', 'swell elongation ξ', 0, 1, 0.01);
+    const amplitude = sea.add(this.amplitudeProxy, 'micro', 0, 20, 0.01).name('Phillips A (×10⁻⁶)');
     amplitude.onChange(() => this.change('amplitude', this.amplitudeProxy.micro * 1e-6));
     this.register('amplitude', amplitude);
-    this.number(sea, 'choppiness', 'choppiness λ', 0, 3, 0.01);
+    this.number(sea, 'choppiness', 'choppiness λ', 0, 4, 0.01);
 
     const sim = gui.addFolder('Simulation');
     this.bind(sim.add(state, 'resolution', RESOLUTIONS).name('resolution N'), 'resolution');
-    this.number(sim, 'patchSize', 'patch size (m)', 10, 2000, 1);
-    this.number(sim, 'smallWaveCutoff', 'small-wave cutoff ℓ (m)', 0, 2, 0.01);
+    const patchSizes = sim.add(this.patchSizesProxy, 'text').name('cascade sizes (m)');
+    patchSizes.onFinishChange((text: string) => this.change('patchSizes', text.split(',').map(Number)));
+    this.register('patchSizes', patchSizes);
+    this.number(sim, 'smallWaveCutoff', 'small-wave cutoff ℓ (m)', 0, 2, 0.001);
     const deep = sim.add(this.depthProxy, 'deep').name('deep water');
     const depth = sim.add(this.depthProxy, 'metres', 0.5, 200, 0.5).name('depth (m)');
     deep.onChange(() => this.change('depth', this.depthProxy.deep ? Infinity : this.depthProxy.metres));
@@ -123,12 +136,17 @@ export class Panel {
     if (closed) gui.close();
   }
 
-  /** Call once per frame: refreshes the read-only "running" line. */
+  /** Call once per frame: refreshes the read-only lines (the path running, the sea state's Hs and Tp). */
   update(): void {
     const path = this.actions.runningPath();
     if (path !== this.running.path) {
       this.running.path = path;
       this.controllers.get('running')?.updateDisplay();
+    }
+    const seaState = this.actions.seaState();
+    if (seaState !== this.running.seaState) {
+      this.running.seaState = seaState;
+      this.controllers.get('seaState')?.updateDisplay();
     }
   }
 
@@ -138,6 +156,7 @@ export class Panel {
     this.colours.causticColour = toHex(this.state.causticColour);
     this.colours.scatterColour = toHex(this.state.scatterColour);
     this.amplitudeProxy.micro = Number((this.state.amplitude * 1e6).toPrecision(10));
+    this.patchSizesProxy.text = this.state.patchSizes.join(',');
     this.depthProxy.deep = this.state.depth === Infinity;
     if (!this.depthProxy.deep) this.depthProxy.metres = this.state.depth;
     this.syncDepthControls();
@@ -145,8 +164,10 @@ export class Panel {
   }
 
   /** Applies a preset's simulation parameters (all or nothing). */
-  preset(name: keyof typeof PRESETS): void {
-    this.changeMany(PRESETS[name], `preset ${name}`);
+  preset(name: string): void {
+    this.changeMany(PANEL_PRESETS[name], `preset ${name}`);
+    this.presetProxy.preset = '';
+    this.controllers.get('preset')?.updateDisplay();
   }
 
   /** Sets one value as if it had been entered in the panel. */

@@ -1,10 +1,11 @@
 /**
- * What the app shows on top of the canvas, top left: the FFT path, frame rate and CPU timings
+ * What the app shows on top of the canvas, top left: the sea state (Hs, Tp), the FFT path, frame rate and CPU timings
  * (ocean.update and renderer.render as measured on the main thread — GPU work is not included),
  * the time, a help line for the keys, and below them notices — warnings about bad values (each names its
  * parameter and stays until dismissed or fixed) and the "copy link" field.
  */
 import type { SimulationPath } from '../layers/oceanSimulation';
+import type { Ocean } from '../ocean';
 
 export const PATH_LABELS: Record<SimulationPath, string> = {
   'gpu-rgba32f': 'GPU RGBA32F',
@@ -12,6 +13,16 @@ export const PATH_LABELS: Record<SimulationPath, string> = {
   'js-worker': 'JS in a worker',
   js: 'JS',
 };
+
+/**
+ * The sea state as the status line and the panel say it: the spectrum's significant wave height
+ * and peak period, and the Hs of what the cascades simulate (4·RMS of the summed height).
+ */
+export function describeSeaState(ocean: Ocean): string {
+  const { significantWaveHeight, peakPeriod } = ocean.seaState;
+  const simulated = 4 * ocean.heightRms;
+  return `Hs ${significantWaveHeight.toFixed(2)} m, Tp ${peakPeriod.toFixed(1)} s (simulated Hs ${simulated.toFixed(2)} m)`;
+}
 
 export interface FrameTimings {
   /** Frames per second over the last interval. */
@@ -82,8 +93,8 @@ export class StatusOverlay {
   }
 
   /** The status: FFT path, frame rate and CPU timings on one line; time and camera speed on the next. */
-  show(path: SimulationPath, timings: FrameTimings | null, t: number, paused: boolean, speed: number): void {
-    const parts = [`FFT: ${PATH_LABELS[path] ?? path}`];
+  show(seaState: string, path: SimulationPath, timings: FrameTimings | null, t: number, paused: boolean, speed: number): void {
+    const parts = [seaState, `FFT: ${PATH_LABELS[path] ?? path}`];
     if (timings) {
       parts.push(
         `${timings.fps.toFixed(0)} fps`,

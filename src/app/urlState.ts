@@ -4,8 +4,9 @@
  * Names are the library's own option names (SimulationParameters, OceanShadingOptions, the sun)
  * plus a few for the app:
  *
- *   windSpeed windDirection amplitude patchSize resolution choppiness smallWaveCutoff
- *   depth (metres, or "deep") repeatPeriod seed            — simulation (src/parameters/parameters.ts)
+ *   spectrum windSpeed windDirection fetch … seed        — simulation, every key of
+ *                                                           SIMULATION_OPTIONS (src/parameters/parameters.ts),
+ *                                                           written as parseParameterText reads them
  *   sunElevation sunAzimuth                                   — degrees
  *   ior causticPower causticColour absorption scatterColour   — shading; colours and absorption
  *                                                               are "r,g,b" (linear, ≥ 0)
@@ -19,13 +20,28 @@
  * default, in a fixed order. parseState reads any subset: a missing value takes its default, an
  * invalid one also takes its default and produces a warning naming the parameter. Pure: no DOM.
  */
-import { DEFAULT_PARAMETERS, ParameterError, validateParameters, type SimulationParameters } from '../parameters/parameters';
-import { SHADING_MODES, type ShadingMode } from '../render/oceanMaterial';
+import {
+  DEFAULT_PARAMETERS,
+  ParameterError,
+  parseDecimal as parseNumber,
+  SIMULATION_OPTIONS,
+  validateParameters,
+  type SimulationParameters,
+} from '../parameters/parameters';
+import { formatOptionText, parseOptionText, type OptionTable } from '../parameters/options';
+import {
+  DEFAULT_SHADING,
+  DEFAULT_SUN,
+  SHADING_OPTIONS,
+  SUN_OPTIONS,
+  type Rgb,
+  type ShadingMode,
+} from '../parameters/sceneOptions';
 import { clampPitch, MIN_HEIGHT, wrapYaw } from './flyControls';
 
 export type PathPreference = 'auto' | 'gpu' | 'js';
 export const PATH_PREFERENCES: readonly PathPreference[] = ['auto', 'gpu', 'js'];
-export type Rgb = [number, number, number];
+export type { Rgb };
 
 export interface AppState extends SimulationParameters {
   sunElevation: number;
@@ -52,14 +68,13 @@ export interface AppState extends SimulationParameters {
 /** Shading and sun defaults are the library's (OceanMaterial, SkyEnvironment). */
 export const DEFAULT_STATE: Readonly<AppState> = Object.freeze({
   ...DEFAULT_PARAMETERS,
-  sunElevation: 30,
-  sunAzimuth: 40,
-  ior: 1.333,
-  causticPower: 32,
-  causticColour: [0.12, 0.12, 0.12] as Rgb,
-  absorption: [0.45, 0.07, 0.04] as Rgb,
-  scatterColour: [0.0, 0.035, 0.06] as Rgb,
-  mode: 'full' as ShadingMode,
+  ...DEFAULT_SUN,
+  ior: DEFAULT_SHADING.ior,
+  causticPower: DEFAULT_SHADING.causticPower,
+  causticColour: DEFAULT_SHADING.causticColour,
+  absorption: DEFAULT_SHADING.absorption,
+  scatterColour: DEFAULT_SHADING.scatterColour,
+  mode: DEFAULT_SHADING.shadingMode,
   wireframe: false,
   inspector: false,
   path: 'auto' as PathPreference,
@@ -83,6 +98,7 @@ export function cloneState(state: Readonly<AppState>): AppState {
     causticColour: [...state.causticColour],
     absorption: [...state.absorption],
     scatterColour: [...state.scatterColour],
+    patchSizes: [...state.patchSizes],
     cam: [...state.cam],
   };
 }
@@ -100,20 +116,11 @@ export function assignState(target: AppState, changes: Partial<AppState>): void 
   }
 }
 
-const SIMULATION_KEYS = Object.keys(DEFAULT_PARAMETERS) as (keyof SimulationParameters)[];
+const SIMULATION_KEYS = Object.keys(SIMULATION_OPTIONS) as (keyof SimulationParameters)[];
 
 /** URL names in the order serializeState writes them. */
 export const URL_KEYS: readonly (keyof AppState)[] = [
-  'windSpeed',
-  'windDirection',
-  'amplitude',
-  'patchSize',
-  'resolution',
-  'choppiness',
-  'smallWaveCutoff',
-  'depth',
-  'repeatPeriod',
-  'seed',
+  ...SIMULATION_KEYS,
   'sunElevation',
   'sunAzimuth',
   'ior',
@@ -158,9 +165,9 @@ export function roundCam(cam: AppState['cam']): AppState['cam'] {
 }
 
 function formatValue(key: keyof AppState, value: AppState[keyof AppState]): string {
+  if (isSimulationKey(key)) return formatOptionText(value);
   if (typeof value === 'boolean') return value ? '1' : '0';
   if (typeof value === 'string') return value;
-  if (key === 'depth' && value === Infinity) return 'deep';
   if (key === 't') return formatFixed(value as number, 3);
   if (key === 'cam') return roundCam(value as AppState['cam']).map((c) => formatFixed(c, 3)).join(',');
   if (Array.isArray(value)) return value.map((c) => formatNumber(c, 4)).join(',');
@@ -200,12 +207,6 @@ export interface ParsedState {
   warnings: { parameter: string; message: string }[];
 }
 
-/** A plain decimal or exponent number; Number('') is 0 and Number('0x10') is 16, neither wanted here. */
-function parseNumber(text: string): number {
-  const trimmed = text.trim();
-  return /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i.test(trimmed) ? Number(trimmed) : NaN;
-}
-
 function parseList(text: string, count: number): number[] | null {
   const values = text.split(',').map(parseNumber);
   return values.length === count && values.every(Number.isFinite) ? values : null;
@@ -218,16 +219,8 @@ function parseFlag(text: string): boolean | null {
   return null;
 }
 
-/** Checks one simulation parameter alone (the rule in parameters.ts); null if fine, else why not. */
-function simulationProblem(key: keyof SimulationParameters, value: number): string | null {
-  try {
-    validateParameters({ [key]: value }, DEFAULT_PARAMETERS);
-    return null;
-  } catch (error) {
-    // A failure of the combination check names another parameter: judged after all are read.
-    if (error instanceof ParameterError && error.parameter === key) return error.message;
-    return null;
-  }
+function isSimulationKey(key: string): key is keyof SimulationParameters {
+  return Object.hasOwn(SIMULATION_OPTIONS, key);
 }
 
 /**
@@ -238,38 +231,21 @@ function simulationProblem(key: keyof SimulationParameters, value: number): stri
 export function parseValue<K extends keyof AppState>(key: K, text: string): { value: AppState[K] } | { error: string } {
   const ok = (value: unknown) => ({ value: value as AppState[K] });
   const bad = (allowed: string) => ({ error: `${key} must be ${allowed}; got "${text}"` });
-  if ((SIMULATION_KEYS as string[]).includes(key)) {
-    const simKey = key as keyof SimulationParameters;
-    const value = simKey === 'depth' && /^\s*(deep|inf|infinity)\s*$/i.test(text) ? Infinity : parseNumber(text);
-    if (Number.isNaN(value)) return bad(simKey === 'depth' ? 'a depth in metres > 0 or "deep"' : 'a number');
-    const problem = simulationProblem(simKey, value);
-    return problem ? { error: problem } : ok(value);
+  /** The value as the option's table reads it, reported under the URL's name `key`. */
+  function fromTable<T>(table: OptionTable<T>, option: string): { value: AppState[K] } | { error: string } {
+    try {
+      return ok(parseOptionText(table, option, text));
+    } catch (error) {
+      if (error instanceof ParameterError) return { error: error.message.replace(option, key) };
+      throw error;
+    }
   }
+  if (isSimulationKey(key)) return fromTable(SIMULATION_OPTIONS, key);
+  if (Object.hasOwn(SUN_OPTIONS, key)) return fromTable(SUN_OPTIONS, key);
+  if (Object.hasOwn(SHADING_OPTIONS, key)) return fromTable(SHADING_OPTIONS, key);
   switch (key) {
-    case 'sunElevation': {
-      const v = parseNumber(text);
-      return Number.isFinite(v) && v >= -90 && v <= 90 ? ok(v) : bad('a number of degrees from -90 to 90');
-    }
-    case 'sunAzimuth': {
-      const v = parseNumber(text);
-      return Number.isFinite(v) ? ok(v) : bad('a finite number of degrees');
-    }
-    case 'ior': {
-      const v = parseNumber(text);
-      return Number.isFinite(v) && v > 1 ? ok(v) : bad('a finite number > 1');
-    }
-    case 'causticPower': {
-      const v = parseNumber(text);
-      return Number.isFinite(v) && v > 0 ? ok(v) : bad('a finite number > 0');
-    }
-    case 'causticColour':
-    case 'absorption':
-    case 'scatterColour': {
-      const v = parseList(text, 3);
-      return v && v.every((c) => c >= 0) ? ok(v) : bad('three numbers ≥ 0 separated by commas (r,g,b)');
-    }
     case 'mode':
-      return (SHADING_MODES as readonly string[]).includes(text) ? ok(text) : bad(`one of ${SHADING_MODES.join(', ')}`);
+      return fromTable(SHADING_OPTIONS, 'shadingMode');
     case 'path':
       return (PATH_PREFERENCES as readonly string[]).includes(text) ? ok(text) : bad(PATH_PREFERENCES.join(', '));
     case 'wireframe':
@@ -329,9 +305,9 @@ export function parseState(search: string): ParsedState {
       const fallback = (SIMULATION_KEYS as string[]).includes(key) && state[key] !== DEFAULT_PARAMETERS[key];
       warnings.push({ parameter: key, message: `${error.message} — using the default ${formatValue(key, DEFAULT_STATE[key])}` });
       if (fallback) {
-        state[key] = DEFAULT_PARAMETERS[key];
+        assignState(state, { [key]: DEFAULT_PARAMETERS[key] });
       } else {
-        for (const k of SIMULATION_KEYS) state[k] = DEFAULT_PARAMETERS[k];
+        assignState(state, DEFAULT_PARAMETERS);
         break;
       }
     }
@@ -340,7 +316,7 @@ export function parseState(search: string): ParsedState {
 }
 
 export function simulationParameters(state: Readonly<AppState>): SimulationParameters {
-  const result = {} as SimulationParameters;
+  const result: Record<string, unknown> = {};
   for (const key of SIMULATION_KEYS) result[key] = state[key];
-  return result;
+  return result as unknown as SimulationParameters;
 }

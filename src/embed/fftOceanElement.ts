@@ -7,7 +7,9 @@
  * The element makes its own canvas (in its shadow root), WebGLRenderer, scene, camera and Ocean,
  * and renders a slowly drifting view out to the horizon. Attributes (all optional, all live):
  *
- *   wind-speed, wind-direction, seed, resolution, choppiness, patch-size  → ocean.setParameters
+ *   every simulation parameter in kebab case (wind-speed, spectrum, fetch,
+ *   patch-sizes="13.7,79.3,457", depth="deep", … SIMULATION_OPTIONS in
+ *   src/parameters/parameters.ts, written as parseParameterText reads them) → ocean.setParameters
  *   sun-elevation, sun-azimuth (degrees)                                  → ocean.setSun
  *   shading-mode (full, fresnel, reflection, refraction, caustics, height) → ocean.setShading
  *   path (auto, gpu, js)                      which simulation path runs
@@ -34,28 +36,30 @@
  */
 import { ACESFilmicToneMapping, PerspectiveCamera, Scene, WebGLRenderer } from 'three';
 import { Ocean } from '../ocean';
-import { SHADING_MODES, type ShadingMode } from '../render/oceanMaterial';
+import { parseOptionText } from '../parameters/options';
+import { DEFAULT_SHADING, DEFAULT_SUN, SHADING_MODES, SUN_OPTIONS, type ShadingMode } from '../parameters/sceneOptions';
 import type { PathPreference } from '../layers/oceanSimulation';
-import { DEFAULT_PARAMETERS, validateParameters, type SimulationParameters } from '../parameters/parameters';
+import {
+  DEFAULT_PARAMETERS,
+  parseDecimal,
+  parseParameterText,
+  SIMULATION_OPTIONS,
+  validateParameters,
+  type SimulationParameters,
+} from '../parameters/parameters';
 
 /** Longest step of simulated time per frame (s, before time-scale): a stalled tab does not jump. */
 const MAX_FRAME_STEP = 0.1;
 const PATHS: readonly PathPreference[] = ['auto', 'gpu', 'js'];
 
-/** Attributes that map onto simulation parameters. */
-const SIMULATION_ATTRIBUTES = {
-  'wind-speed': 'windSpeed',
-  'wind-direction': 'windDirection',
-  seed: 'seed',
-  resolution: 'resolution',
-  choppiness: 'choppiness',
-  'patch-size': 'patchSize',
-} as const satisfies Record<string, keyof SimulationParameters>;
-type SimulationAttribute = keyof typeof SIMULATION_ATTRIBUTES;
+/** Attributes that map onto simulation parameters: each parameter's name in kebab case. */
+const SIMULATION_ATTRIBUTES: Readonly<Record<string, keyof SimulationParameters>> = Object.fromEntries(
+  (Object.keys(SIMULATION_OPTIONS) as (keyof SimulationParameters)[]).map((key) => [key.replace(/[A-Z]/g, (c) => `-${c.toLowerCase()}`), key]),
+);
 
 /** Every attribute the element reads. */
 export const FFT_OCEAN_ATTRIBUTES = [
-  ...(Object.keys(SIMULATION_ATTRIBUTES) as SimulationAttribute[]),
+  ...Object.keys(SIMULATION_ATTRIBUTES),
   'sun-elevation',
   'sun-azimuth',
   'shading-mode',
@@ -79,9 +83,8 @@ interface Settings {
 }
 
 const DEFAULT_SETTINGS: Readonly<Omit<Settings, 'simulation'>> = {
-  sunElevation: 22,
-  sunAzimuth: 40,
-  shadingMode: 'full',
+  ...DEFAULT_SUN,
+  shadingMode: DEFAULT_SHADING.shadingMode,
   path: 'auto',
   timeScale: 1,
   paused: false,
@@ -240,12 +243,12 @@ export class FftOceanElement extends ElementBase {
       return undefined;
     };
     if (name in SIMULATION_ATTRIBUTES) {
-      const key = SIMULATION_ATTRIBUTES[name as SimulationAttribute];
+      const key = SIMULATION_ATTRIBUTES[name];
       const kept = s.simulation[key] ?? DEFAULT_PARAMETERS[key];
-      const next = { ...s.simulation };
-      if (raw === null) delete next[key];
-      else next[key] = parseNumber(raw);
+      const next: Partial<SimulationParameters> = { ...s.simulation };
       try {
+        if (raw === null) delete next[key];
+        else Object.assign(next, { [key]: parseParameterText(key, raw) });
         validateParameters(next); // throws a ParameterError naming the rule
         ocean?.setParameters({ [key]: next[key] ?? DEFAULT_PARAMETERS[key] });
       } catch (error) {
@@ -254,15 +257,13 @@ export class FftOceanElement extends ElementBase {
       }
       s.simulation = next;
     } else if (name === 'sun-elevation' || name === 'sun-azimuth') {
-      const isElevation = name === 'sun-elevation';
-      const kept = isElevation ? s.sunElevation : s.sunAzimuth;
-      const value = raw === null ? DEFAULT_SETTINGS[isElevation ? 'sunElevation' : 'sunAzimuth'] : parseNumber(raw);
-      if (!Number.isFinite(value) || (isElevation && Math.abs(value) > 90)) {
-        reject(isElevation ? 'it must be a number of degrees from -90 to 90' : 'it must be a finite number of degrees', kept);
+      const key = name === 'sun-elevation' ? 'sunElevation' : 'sunAzimuth';
+      try {
+        s[key] = raw === null ? DEFAULT_SUN[key] : (parseOptionText(SUN_OPTIONS, key, raw) as number);
+      } catch (error) {
+        reject(errorMessage(error), s[key]);
         return;
       }
-      if (isElevation) s.sunElevation = value;
-      else s.sunAzimuth = value;
       ocean?.setSun(s.sunElevation, s.sunAzimuth);
     } else if (name === 'shading-mode') {
       const value = oneOf(SHADING_MODES, DEFAULT_SETTINGS.shadingMode, s.shadingMode);
@@ -275,14 +276,14 @@ export class FftOceanElement extends ElementBase {
       s.path = value;
       if (ocean && ocean.simulation.pathPreference !== value) ocean.simulation.pathPreference = value;
     } else if (name === 'time-scale') {
-      const value = raw === null ? DEFAULT_SETTINGS.timeScale : parseNumber(raw);
+      const value = raw === null ? DEFAULT_SETTINGS.timeScale : parseDecimal(raw);
       if (!Number.isFinite(value)) {
         reject('it must be a finite number (simulated seconds per second)', s.timeScale);
         return;
       }
       s.timeScale = value;
     } else if (name === 'camera-height') {
-      const value = raw === null ? DEFAULT_SETTINGS.cameraHeight : parseNumber(raw);
+      const value = raw === null ? DEFAULT_SETTINGS.cameraHeight : parseDecimal(raw);
       if (!Number.isFinite(value) || value <= 0 || value > 10000) {
         reject('it must be a number of metres above 0 and at most 10000', s.cameraHeight);
         return;
@@ -520,10 +521,6 @@ export function placeCamera(camera: PerspectiveCamera, t: number, height: number
     z + distance * Math.cos(pitch) * forwardZ,
   );
   camera.updateMatrixWorld();
-}
-
-function parseNumber(raw: string): number {
-  return raw.trim() === '' ? NaN : Number(raw);
 }
 
 function errorMessage(error: unknown): string {

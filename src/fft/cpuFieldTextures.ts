@@ -29,11 +29,11 @@ export class CpuFieldTextures {
   /** Arrays to send to the worker for its next result (they travel back and forth, never reallocated). */
   private spare: { displacement: Float32Array; derivatives: Float32Array } | null;
 
-  constructor(renderer: WebGLRenderer, spectrum: InitialSpectrum, choppiness: number, repeatPeriod: number, useWorker: boolean) {
+  constructor(renderer: WebGLRenderer, spectrum: InitialSpectrum, useWorker: boolean) {
     const n = spectrum.resolution;
     const filterable = renderer.extensions.has('OES_texture_float_linear');
     // Without a worker the textures show CpuWaveFields' own arrays: nothing is copied.
-    this.fields = useWorker ? null : new CpuWaveFields(spectrum, choppiness, repeatPeriod);
+    this.fields = useWorker ? null : new CpuWaveFields(spectrum);
     const [displacement, derivatives] = FIELD_TEXTURES.map((name) =>
       fieldTexture(this.fields?.[name] ?? new Float32Array(4 * n * n), n, filterable, name),
     );
@@ -44,7 +44,7 @@ export class CpuFieldTextures {
       this.worker = new Worker(new URL('./waveFieldWorker.ts', import.meta.url), { type: 'module' });
       this.worker.onmessage = (event: MessageEvent<WorkerReply>) => this.receive(event.data);
       this.worker.onerror = (event) => console.error(`three-fft-ocean: the JS field worker failed: ${event.message}`);
-      const request: WorkerRequest = { type: 'spectrum', spectrum, choppiness, repeatPeriod };
+      const request: WorkerRequest = { type: 'spectrum', spectrum };
       this.worker.postMessage(request);
     }
   }

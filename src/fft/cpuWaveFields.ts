@@ -44,11 +44,10 @@ export class CpuWaveFields {
   private readonly modes: Float64Array;
   private readonly size: number;
 
-  constructor(
-    spectrum: InitialSpectrum,
-    private readonly choppiness: number,
-    private readonly repeatPeriod: number,
-  ) {
+  private readonly repeatPeriod: number;
+
+  constructor(spectrum: InitialSpectrum) {
+    this.repeatPeriod = spectrum.repeatPeriod;
     const n = (this.size = spectrum.resolution);
     const fft = (this.fft = new BatchedInverseFft2D(n, PACKED_SPECTRA));
     this.displacement = new Float32Array(4 * n * n);
@@ -93,7 +92,6 @@ export class CpuWaveFields {
   /** h̃(±k, t) and the four packed spectra at ±k, written into the FFT's input. */
   private evolve(): void {
     const n = this.size;
-    const lambda = this.choppiness;
     const { fft, phaseTable: table, modes, rowPairs, partnerColumns } = this;
     const re = fft.inputReal;
     const im = fft.inputImag;
@@ -122,9 +120,10 @@ export class CpuWaveFields {
         const hr = modes[t] * er + modes[t + 1] * ei;
         const hi = modes[t + 2] * er + modes[t + 3] * ei;
         // The packed spectra of waveFieldLayout.ts as multiples of h̃, at k and at −k, where kx, kz
-        // and so ax = λ·kx/k, az = λ·kz/k change sign (1/k does not) and h̃ becomes conj(h̃).
-        const ax = lambda * kInverse * kx;
-        const az = lambda * kInverse * kz;
+        // and so ax = kx/k, az = kz/k change sign (1/k does not) and h̃ becomes conj(h̃). λ = 1 here:
+        // the surface and the queries scale D and its derivatives by the choppiness.
+        const ax = kInverse * kx;
+        const az = kInverse * kz;
         // Dx + i·h = i·(1 + ax)·h̃;   at −k: i·(1 − ax)·conj(h̃)
         const dxh = 1 + ax;
         const dxhPartner = 1 - ax;

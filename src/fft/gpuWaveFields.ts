@@ -14,8 +14,8 @@
  * lives after each pass). That reads every input once per pass instead of four times, and under
  * SwiftShader makes a pass about three times cheaper than one output per fragment. three.js cannot
  * render to several layers at once, so this file attaches the layers to a framebuffer of its own
- * and hands it to three.js through setRenderTargetFramebuffer; three.js still allocates, binds
- * and frees the textures.
+ * and hands it to three.js (threeInternals.ts, the one adapter for what three.js does not make
+ * public); three.js still allocates, binds and frees the textures.
  *
  * Textures (RGBA unless said):
  *   amplitudes  N×N (h̃0(k), h̃0*(−k))            static, from spectrum.ts
@@ -52,6 +52,7 @@ import {
 import { shaderSource } from '../shaderSource';
 import { fillPhaseTable, PHASE_TABLE_SIZE } from '../spectrum/dispersion';
 import type { InitialSpectrum } from '../spectrum/initialSpectrum';
+import { checkThreeInternals, glTextureOf, useExternalFramebuffer } from './threeInternals';
 import { FIELD_TEXTURES } from './waveFieldLayout';
 
 export type GpuPrecision = 'float32' | 'float16';
@@ -99,14 +100,15 @@ export class GpuWaveFields {
   private readonly unpackMaterial: ShaderMaterial;
   private readonly quad: Mesh;
   private readonly camera = new Camera();
+  private readonly repeatPeriod: number;
 
   constructor(
     private readonly renderer: WebGLRenderer,
     spectrum: InitialSpectrum,
-    choppiness: number,
-    private readonly repeatPeriod: number,
     readonly precision: GpuPrecision,
   ) {
+    checkThreeInternals(renderer);
+    this.repeatPeriod = spectrum.repeatPeriod;
     const n = spectrum.resolution;
     const sizeLog2 = Math.log2(n);
     const type: TextureDataType = precision === 'float32' ? FloatType : HalfFloatType;
@@ -155,7 +157,6 @@ export class GpuWaveFields {
         tAmplitudes: { value: this.amplitudes },
         tWaveVectors: { value: this.waveVectors },
         tPhases: { value: this.phases },
-        choppiness: { value: choppiness },
       },
       { FIRST_RADIX2: Number(firstRadix2) },
     );
@@ -239,11 +240,6 @@ export class GpuWaveFields {
   }
 }
 
-/** WebGLRenderer.setRenderTargetFramebuffer exists (for WebXR) but @types/three does not list it. */
-interface ExternalFramebufferRenderer {
-  setRenderTargetFramebuffer(target: WebGLRenderTarget, framebuffer: WebGLFramebuffer | null): void;
-}
-
 /**
  * One set of FFT working storage: two array textures of four layers (the two working textures of
  * fftPass.frag) and a framebuffer with all eight layers as colour attachments, so one pass writes
@@ -277,7 +273,7 @@ class LayeredSpectra {
   bind(renderer: WebGLRenderer): void {
     if (!this.framebufferIsCurrent(renderer)) this.createFramebuffer(renderer);
     // Every time: after a restored context three.js has a new property map that no longer knows it.
-    (renderer as unknown as ExternalFramebufferRenderer).setRenderTargetFramebuffer(this.target, this.framebuffer);
+    useExternalFramebuffer(renderer, this.target, this.framebuffer!);
     renderer.setRenderTarget(this.target);
   }
 
@@ -285,14 +281,14 @@ class LayeredSpectra {
   private framebufferIsCurrent(renderer: WebGLRenderer): boolean {
     if (this.framebuffer === null) return false;
     for (let i = 0; i < this.arrays.length; i++) {
-      if (glTexture(renderer, this.arrays[i]) !== this.attached[i]) return false;
+      if (glTextureOf(renderer, this.arrays[i]) !== this.attached[i]) return false;
     }
     return true;
   }
 
   private createFramebuffer(renderer: WebGLRenderer): void {
     const gl = renderer.getContext() as WebGL2RenderingContext;
-    const textures = this.arrays.map((array) => glTexture(renderer, array));
+    const textures = this.arrays.map((array) => glTextureOf(renderer, array));
     this.deleteFramebuffer(renderer);
     const framebuffer = gl.createFramebuffer();
     renderer.state.bindFramebuffer(gl.FRAMEBUFFER, framebuffer);
@@ -326,13 +322,6 @@ class LayeredSpectra {
     this.deleteFramebuffer(renderer);
     for (const array of this.arrays) array.dispose();
   }
-}
-
-/** The GL texture of an array render target, allocated if it is not yet. */
-function glTexture(renderer: WebGLRenderer, array: WebGLArrayRenderTarget): WebGLTexture {
-  renderer.initRenderTarget(array);
-  // three.js keeps each texture's GL object in its property map (an internal it does not type).
-  return (renderer.properties.get(array.texture) as { __webglTexture: WebGLTexture }).__webglTexture;
 }
 
 function dataTexture(data: Float32Array, width: number, height: number, format: PixelFormat): DataTexture {

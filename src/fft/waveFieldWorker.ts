@@ -6,7 +6,7 @@ import { CpuWaveFields } from './cpuWaveFields';
 import type { InitialSpectrum } from '../spectrum/initialSpectrum';
 
 export type WorkerRequest =
-  | { type: 'spectrum'; spectrum: InitialSpectrum; choppiness: number; repeatPeriod: number }
+  | { type: 'spectrum'; spectrum: InitialSpectrum }
   | { type: 'update'; t: number; displacement: Float32Array; derivatives: Float32Array };
 
 export interface WorkerReply {
@@ -20,7 +20,7 @@ let fields: CpuWaveFields | null = null;
 self.onmessage = (event: MessageEvent<WorkerRequest>) => {
   const request = event.data;
   if (request.type === 'spectrum') {
-    fields = new CpuWaveFields(request.spectrum, request.choppiness, request.repeatPeriod);
+    fields = new CpuWaveFields(request.spectrum);
     return;
   }
   if (!fields) throw new Error('waveFieldWorker: update before spectrum');

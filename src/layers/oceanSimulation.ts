@@ -1,20 +1,27 @@
 /**
- * The simulation as one object: parameters in, field textures out, on the GPU path when the
- * renderer can render to float targets and on the JS path otherwise (or when asked).
+ * The simulation as one object: parameters in, wave layers out. It builds one FFT cascade per
+ * patch size (params.patchSizes), each from its band of the sea-state spectrum, on the GPU path
+ * when the renderer can render to float targets and on the JS path otherwise (or when asked).
  *
- *   parameters ──► spectrum.ts (h̃0, only when parameters change)
- *   time t ──────► GpuWaveFields or CpuFieldTextures (evolve + FFT, every field)
- *              ──► uniforms.tDisplacement, uniforms.tDerivatives (waveFieldLayout.ts)
+ *   parameters ──► src/spectrum (Ψ(k) of the sea state, split into cascade bands, h̃0 per cascade)
+ *   time t ──────► layers: FftCascade × patchSizes.length (evolve + FFT on the GPU or in JS)
+ *              ──► the surface, the queries and the inspector sum `layers` (waveLayer.ts)
  *
- * Materials bind `uniforms` once; the `{ value }` objects stay the same when the path or the
- * resolution changes. Bad parameters throw a ParameterError and change nothing, so the scene goes
- * on with the last good values. Owns the path object and frees it in dispose().
+ * Bad parameters throw a ParameterError and change nothing, so the scene goes on with the last
+ * good values. A change of a shader-only parameter (choppiness) rebuilds nothing. Owns the layers
+ * and frees them in dispose().
  */
-import type { Texture, WebGLRenderer } from 'three';
-import { CpuFieldTextures } from '../fft/cpuFieldTextures';
-import { GpuWaveFields, supportedGpuPrecision, type GpuPrecision } from '../fft/gpuWaveFields';
-import { DEFAULT_PARAMETERS, ParameterError, validateParameters, type SimulationParameters } from '../parameters/parameters';
-import { createInitialSpectrum, type InitialSpectrum } from '../spectrum/initialSpectrum';
+import type { WebGLRenderer } from 'three';
+import { supportedGpuPrecision } from '../fft/gpuWaveFields';
+import {
+  ParameterError,
+  SHADER_ONLY_PARAMETERS,
+  validateParameters,
+  type SimulationParameters,
+} from '../parameters/parameters';
+import { createCascadeSpectra, type InitialSpectrum } from '../spectrum/initialSpectrum';
+import { FftCascade, type FftBackend } from './fftCascade';
+import type { WaveLayer } from './waveLayer';
 
 /** Which implementation computes the fields. */
 export type SimulationPath = 'gpu-rgba32f' | 'gpu-rgba16f' | 'js' | 'js-worker';
@@ -27,26 +34,13 @@ export interface SimulationOptions {
   worker?: boolean;
 }
 
-interface FieldPath {
-  readonly displacement: Texture;
-  readonly derivatives: Texture;
-  update(t: number): void;
-  dispose(): void;
-}
-
 export class OceanSimulation {
-  /** Stable uniform objects for materials that sample the fields. */
-  readonly uniforms = {
-    tDisplacement: { value: null as Texture | null },
-    tDerivatives: { value: null as Texture | null },
-    patchSize: { value: DEFAULT_PARAMETERS.patchSize },
-  };
   private currentParameters: SimulationParameters;
-  private currentSpectrum!: InitialSpectrum;
-  private fieldPath!: FieldPath;
+  private currentLayers: FftCascade[] = [];
   private currentPath!: SimulationPath;
   private preference: PathPreference;
   private readonly useWorker: boolean;
+  private lastTime = NaN;
 
   constructor(
     private readonly renderer: WebGLRenderer,
@@ -63,8 +57,14 @@ export class OceanSimulation {
     return this.currentParameters;
   }
 
-  get spectrum(): Readonly<InitialSpectrum> {
-    return this.currentSpectrum;
+  /** The FFT cascades, finest first: what the surface and the queries sum. */
+  get layers(): readonly FftCascade[] {
+    return this.currentLayers;
+  }
+
+  /** The initial spectrum of each cascade, finest first. */
+  get spectra(): readonly InitialSpectrum[] {
+    return this.currentLayers.map((layer) => layer.spectrum);
   }
 
   /** The implementation now running. */
@@ -82,61 +82,51 @@ export class OceanSimulation {
     return this.preference;
   }
 
-  /** Fragment passes per GPU update, or 0 on the JS path. */
+  /** Fragment passes per GPU update over all cascades, or 0 on the JS path. */
   get passCount(): number {
-    return this.fieldPath instanceof GpuWaveFields ? this.fieldPath.passCount : 0;
+    return this.currentLayers.reduce((sum, layer) => sum + layer.passCount, 0);
   }
 
   /**
    * Changes some parameters. Throws a ParameterError naming the first bad one and then changes
-   * nothing. The spectrum is rebuilt only when something it depends on changed.
+   * nothing. The spectra are rebuilt only when something they depend on changed.
    */
   setParameters(changes: Partial<SimulationParameters>): void {
     const next = validateParameters(changes, this.currentParameters);
-    const changed = (Object.keys(next) as (keyof SimulationParameters)[]).some((key) => next[key] !== this.currentParameters[key]);
-    if (!changed) return;
+    const changed = (Object.keys(next) as (keyof SimulationParameters)[]).filter(
+      (key) => String(next[key]) !== String(this.currentParameters[key]),
+    );
     this.currentParameters = next;
-    this.rebuild(true);
+    if (changed.some((key) => !SHADER_ONLY_PARAMETERS.includes(key))) this.rebuild(true);
   }
 
-  /** Computes every field at time t in seconds (any finite value; the sea repeats every repeatPeriod). */
+  /** Computes every layer at time t in seconds (any finite value). */
   update(t: number): void {
     if (!Number.isFinite(t)) throw new ParameterError('time', t, 'a finite number of seconds');
-    this.fieldPath.update(t);
+    const dt = Number.isNaN(this.lastTime) ? 0 : t - this.lastTime;
+    for (const layer of this.currentLayers as readonly WaveLayer[]) layer.update(t, dt);
+    this.lastTime = t;
   }
 
   dispose(): void {
-    this.fieldPath.dispose();
-    this.uniforms.tDisplacement.value = null;
-    this.uniforms.tDerivatives.value = null;
+    for (const layer of this.currentLayers) layer.dispose();
+    this.currentLayers = [];
   }
 
-  private rebuild(newSpectrum: boolean): void {
+  private rebuild(newSpectra: boolean): void {
     const params = this.currentParameters;
-    if (newSpectrum) this.currentSpectrum = createInitialSpectrum(params);
+    const spectra = newSpectra ? createCascadeSpectra(params) : this.spectra;
     const precision = this.preference === 'js' ? null : supportedGpuPrecision(this.renderer);
     if (this.preference === 'gpu' && precision === null) {
       console.warn('three-fft-ocean: this WebGL context cannot render to float textures; using the JS path.');
     }
-    // Build the new path before freeing the old one, so three.js can reuse compiled programs.
-    const previous = this.fieldPath as FieldPath | undefined;
-    this.fieldPath = precision ? this.createGpuPath(precision) : this.createJsPath();
-    previous?.dispose();
-    this.uniforms.tDisplacement.value = this.fieldPath.displacement;
-    this.uniforms.tDerivatives.value = this.fieldPath.derivatives;
-    this.uniforms.patchSize.value = params.patchSize;
-  }
-
-  private createGpuPath(precision: GpuPrecision): FieldPath {
-    const { choppiness, repeatPeriod } = this.currentParameters;
-    this.currentPath = precision === 'float32' ? 'gpu-rgba32f' : 'gpu-rgba16f';
-    return new GpuWaveFields(this.renderer, this.currentSpectrum, choppiness, repeatPeriod, precision);
-  }
-
-  private createJsPath(): FieldPath {
-    const { choppiness, repeatPeriod } = this.currentParameters;
-    this.currentPath = this.useWorker ? 'js-worker' : 'js';
-    return new CpuFieldTextures(this.renderer, this.currentSpectrum, choppiness, repeatPeriod, this.useWorker);
+    const backend: FftBackend = precision ? { kind: 'gpu', precision } : { kind: 'js', worker: this.useWorker };
+    this.currentPath = precision ? (precision === 'float32' ? 'gpu-rgba32f' : 'gpu-rgba16f') : this.useWorker ? 'js-worker' : 'js';
+    // Build the new layers before freeing the old ones, so three.js can reuse compiled programs.
+    const previous = this.currentLayers;
+    this.currentLayers = spectra.map((spectrum) => new FftCascade(this.renderer, spectrum, backend));
+    for (const layer of previous) layer.dispose();
+    this.lastTime = NaN;
   }
 }
 
@@ -146,3 +136,4 @@ function checkPreference(preference: PathPreference): PathPreference {
   }
   return preference;
 }
+

@@ -1,78 +1,154 @@
 /**
- * The simulation's parameters, their defaults, and the one place that checks them.
+ * The simulation's parameters: the one place that says their defaults, units, ranges and how to
+ * check them. `Ocean`, the app's URL state and panel, `<fft-ocean>` and the shot CLI all read
+ * SIMULATION_OPTIONS and call validateParameters; none keeps its own copy.
  *
- * Units: metres, seconds, degrees for directions; g = 9.81 m/s². The sea lies in the xz plane with
- * y up, as in three.js and the course report.
+ * Units: metres, seconds, degrees for directions (the direction waves travel towards, from +x
+ * towards +z), kilometres for the fetch, g = 9.81 m/s². The sea lies in the xz plane with y up,
+ * as in three.js and the course report.
  */
 
-import { angularFrequency, frequencyIndex, MAX_FREQUENCY_INDEX } from '../spectrum/dispersion';
+import { angularFrequency, MAX_FREQUENCY_INDEX } from '../spectrum/dispersion';
+import {
+  between,
+  finiteAngle,
+  isNumber,
+  mergeOptions,
+  oneOf,
+  ParameterError,
+  parseOptionText,
+  type OptionRule,
+} from './options';
+
+export { ParameterError, parseDecimal } from './options';
+import { cascadeBands, cascadeRepeatPeriod, fastestModeInBand, maxPatchRatio } from '../spectrum/cascadeBands';
+
+/** Spectrum models: the report's Phillips, and the oceanographic ones (src/spectrum/frequencySpectra.ts). */
+export const SPECTRUM_MODELS = ['phillips', 'pierson-moskowitz', 'jonswap', 'tma'] as const;
+export type SpectrumModel = (typeof SPECTRUM_MODELS)[number];
+/** Directional spreading functions (src/spectrum/spreading.ts). */
+export const SPREADING_MODELS = ['cos-2s', 'mitsuyasu', 'hasselmann', 'donelan-banner'] as const;
+export type SpreadingModel = (typeof SPREADING_MODELS)[number];
+
+/** Most FFT cascades a sea can have. */
+export const MAX_CASCADES = 4;
 
 export interface SimulationParameters {
-  /** Samples per side of the simulated patch, a power of two in [16, 1024]. @defaultValue 256 */
-  resolution: number;
-  /** Side of the square simulated patch in metres (> 0). @defaultValue 250 */
-  patchSize: number;
-  /** Wind speed |w| in m/s (≥ 0, at most 100). @defaultValue 12 */
+  /** Spectrum model; 'tma' is JONSWAP attenuated for the finite `depth`. @defaultValue 'jonswap' */
+  spectrum: SpectrumModel;
+  /** Wind speed U10 at 10 m above the sea, m/s, [0, 60]. @defaultValue 10 */
   windSpeed: number;
-  /** Direction the wind blows towards, in degrees from +x towards +z. @defaultValue 30 */
+  /** Direction the wind blows towards, degrees from +x towards +z. @defaultValue 30 */
   windDirection: number;
-  /** Phillips spectrum amplitude A (≥ 0). @defaultValue 2e-6 */
+  /** Fetch, the distance the wind has blown over open water, km, (0, 100000]. @defaultValue 100 */
+  fetch: number;
+  /** JONSWAP peak enhancement γ, [1, 10] (1 is Pierson–Moskowitz's shape). @defaultValue 3.3 */
+  peakEnhancement: number;
+  /**
+   * Directional spreading of the wind sea. @defaultValue 'donelan-banner': measured with a
+   * wave-staff array (Donelan, Hamilton & Hui 1985), with Banner's (1990) extension that keeps short
+   * waves broadly spread, so the surface does not look combed.
+   */
+  spreading: SpreadingModel;
+  /** Exponent s of the 'cos-2s' spreading, [0, 1000]. @defaultValue 10 */
+  spreadingExponent: number;
+  /** Significant height of a swell from far away, m, [0, 30]; 0 is none. @defaultValue 0 */
+  swellHeight: number;
+  /** Peak period of the swell, s, (0, 40]. @defaultValue 12 */
+  swellPeriod: number;
+  /** Direction the swell travels towards, degrees from +x towards +z. @defaultValue 60 */
+  swellDirection: number;
+  /** Horvath's swell elongation ξ, [0, 1]: how much longer the swell's crests are than the wind sea's. @defaultValue 0.5 */
+  swellElongation: number;
+  /** Phillips spectrum amplitude A, [0, 1] (the 'phillips' model only). @defaultValue 2e-6 */
   amplitude: number;
-  /** Length ℓ in metres below which waves are suppressed by exp(−k²ℓ²); 0 turns it off. @defaultValue 0.1 */
+  /** Length ℓ in metres below which waves are suppressed by exp(−k²ℓ²), [0, 10]; 0 turns it off. @defaultValue 0.01 */
   smallWaveCutoff: number;
   /** Water depth in metres (> 0); Infinity is deep water. @defaultValue Infinity */
   depth: number;
-  /** Seconds after which the whole sea repeats exactly (> 0). @defaultValue 200 */
+  /** Samples per side of each cascade's patch, a power of two in [16, 1024]. @defaultValue 256 */
+  resolution: number;
+  /**
+   * Sides of the cascades' square patches in metres, ascending, 1 to MAX_CASCADES of them, each at
+   * least twice the one before (src/spectrum/cascadeBands.ts splits the spectrum between them).
+   * @defaultValue [13.7, 79.3, 457]
+   */
+  patchSizes: number[];
+  /** Seconds after which the sea repeats, at least (> 0, at most 100000). @defaultValue 200 */
   repeatPeriod: number;
-  /** Horizontal displacement scale λ (≥ 0): 0 is a plain height field, larger sharpens crests. @defaultValue 1 */
+  /** Horizontal displacement scale λ, [0, 4]: 0 is a plain height field, larger sharpens crests. @defaultValue 1 */
   choppiness: number;
   /** Seed of the random initial spectrum, an integer in [0, 2³² − 1]. @defaultValue 1 */
   seed: number;
-}
-
-export const DEFAULT_PARAMETERS: Readonly<SimulationParameters> = Object.freeze({
-  resolution: 256,
-  patchSize: 250,
-  windSpeed: 12,
-  windDirection: 30,
-  amplitude: 2e-6,
-  smallWaveCutoff: 0.1,
-  depth: Infinity,
-  repeatPeriod: 200,
-  choppiness: 1,
-  seed: 1,
-});
-
-/** Thrown for a parameter outside what is allowed; `parameter` names it. */
-export class ParameterError extends Error {
-  constructor(
-    readonly parameter: string,
-    readonly value: unknown,
-    allowed: string,
-  ) {
-    super(`${parameter} must be ${allowed}; got ${String(value)}`);
-    this.name = 'ParameterError';
-  }
 }
 
 export function isPowerOfTwo(n: number): boolean {
   return Number.isInteger(n) && n > 0 && (n & (n - 1)) === 0;
 }
 
-type Check = (value: number) => boolean;
-const finite: Check = (v) => Number.isFinite(v);
-const RULES: { [K in keyof SimulationParameters]: [Check, string] } = {
-  resolution: [(v) => isPowerOfTwo(v) && v >= 16 && v <= 1024, 'a power of two from 16 to 1024'],
-  patchSize: [(v) => finite(v) && v > 0, 'a finite number of metres > 0'],
-  windSpeed: [(v) => finite(v) && v >= 0 && v <= 100, 'a finite speed in m/s from 0 to 100'],
-  windDirection: [finite, 'a finite angle in degrees'],
-  amplitude: [(v) => finite(v) && v >= 0, 'a finite number ≥ 0'],
-  smallWaveCutoff: [(v) => finite(v) && v >= 0, 'a finite length in metres ≥ 0 (0 turns it off)'],
-  depth: [(v) => v > 0, 'a depth in metres > 0, or Infinity for deep water'],
-  repeatPeriod: [(v) => finite(v) && v > 0, 'a finite number of seconds > 0'],
-  choppiness: [(v) => finite(v) && v >= 0, 'a finite number ≥ 0'],
-  seed: [(v) => Number.isInteger(v) && v >= 0 && v <= 0xffffffff, 'an integer from 0 to 4294967295'],
+/** The one table of rules, units and allowed values. Keys in the order docs and URLs list them. */
+export const SIMULATION_OPTIONS: { readonly [K in keyof SimulationParameters]: OptionRule } = {
+  spectrum: { type: 'choice', unit: '', allowed: `one of ${SPECTRUM_MODELS.join(', ')}`, check: oneOf(SPECTRUM_MODELS), choices: SPECTRUM_MODELS },
+  windSpeed: { type: 'number', unit: 'm/s', allowed: 'a speed in m/s from 0 to 60', check: between(0, 60) },
+  windDirection: { type: 'number', unit: '°', allowed: 'a finite angle in degrees (at most 1e6 in size)', check: finiteAngle },
+  fetch: { type: 'number', unit: 'km', allowed: 'a distance in km > 0 and at most 100000', check: (v) => isNumber(v) && v > 0 && v <= 1e5 },
+  peakEnhancement: { type: 'number', unit: '', allowed: 'a number from 1 to 10', check: between(1, 10) },
+  spreading: { type: 'choice', unit: '', allowed: `one of ${SPREADING_MODELS.join(', ')}`, check: oneOf(SPREADING_MODELS), choices: SPREADING_MODELS },
+  spreadingExponent: { type: 'number', unit: '', allowed: 'a number from 0 to 1000', check: between(0, 1000) },
+  swellHeight: { type: 'number', unit: 'm', allowed: 'a height in metres from 0 to 30', check: between(0, 30) },
+  swellPeriod: { type: 'number', unit: 's', allowed: 'a period in seconds > 0 and at most 40', check: (v) => isNumber(v) && v > 0 && v <= 40 },
+  swellDirection: { type: 'number', unit: '°', allowed: 'a finite angle in degrees (at most 1e6 in size)', check: finiteAngle },
+  swellElongation: { type: 'number', unit: '', allowed: 'a number from 0 to 1', check: between(0, 1) },
+  amplitude: { type: 'number', unit: '', allowed: 'a number from 0 to 1', check: between(0, 1) },
+  smallWaveCutoff: { type: 'number', unit: 'm', allowed: 'a length in metres from 0 to 10 (0 turns it off)', check: between(0, 10) },
+  depth: { type: 'number', unit: 'm', allowed: 'a depth in metres > 0, or Infinity (written "deep") for deep water', check: (v) => isNumber(v) && v > 0 },
+  resolution: {
+    type: 'number',
+    unit: '',
+    allowed: 'a power of two from 16 to 1024',
+    check: (v) => isNumber(v) && isPowerOfTwo(v) && v >= 16 && v <= 1024,
+  },
+  patchSizes: {
+    type: 'numbers',
+    unit: 'm',
+    allowed: `1 to ${MAX_CASCADES} sizes in metres from 1 to 100000, ascending, each at least twice the one before`,
+    check: (v) =>
+      Array.isArray(v) &&
+      v.length >= 1 &&
+      v.length <= MAX_CASCADES &&
+      v.every((size, i) => isNumber(size) && size >= 1 && size <= 1e5 && (i === 0 || size >= 2 * v[i - 1])),
+  },
+  repeatPeriod: { type: 'number', unit: 's', allowed: 'a number of seconds > 0 and at most 100000', check: (v) => isNumber(v) && v > 0 && v <= 1e5 },
+  choppiness: { type: 'number', unit: '', allowed: 'a number from 0 to 4', check: between(0, 4) },
+  seed: { type: 'number', unit: '', allowed: 'an integer from 0 to 4294967295', check: (v) => isNumber(v) && Number.isInteger(v) && v >= 0 && v <= 0xffffffff },
 };
+
+export const DEFAULT_PARAMETERS: Readonly<SimulationParameters> = Object.freeze({
+  spectrum: 'jonswap',
+  windSpeed: 10,
+  windDirection: 30,
+  fetch: 100,
+  peakEnhancement: 3.3,
+  spreading: 'donelan-banner',
+  spreadingExponent: 10,
+  swellHeight: 0,
+  swellPeriod: 12,
+  swellDirection: 60,
+  swellElongation: 0.5,
+  amplitude: 2e-6,
+  smallWaveCutoff: 0.01,
+  depth: Infinity,
+  resolution: 256,
+  // Ratios of about 5.8 that are not whole numbers: the patches never line up, so the sum does not
+  // tile, and each cascade's band (cascadeBands.ts) sits well inside its grid.
+  patchSizes: Object.freeze([13.7, 79.3, 457]) as unknown as number[],
+  repeatPeriod: 200,
+  choppiness: 1,
+  seed: 1,
+} satisfies SimulationParameters);
+
+/** Parameters that only the surface's shader uses: changing them rebuilds nothing. */
+export const SHADER_ONLY_PARAMETERS: readonly (keyof SimulationParameters)[] = ['choppiness'];
 
 /**
  * Merges `changes` over `base` and checks every value; throws a ParameterError naming the first bad
@@ -82,26 +158,41 @@ export function validateParameters(
   changes: Partial<SimulationParameters>,
   base: Readonly<SimulationParameters> = DEFAULT_PARAMETERS,
 ): SimulationParameters {
-  const merged: SimulationParameters = { ...base };
-  for (const key of Object.keys(changes) as (keyof SimulationParameters)[]) {
-    const rule = Object.hasOwn(RULES, key) ? RULES[key] : undefined;
-    if (!rule) throw new ParameterError(String(key), changes[key], `one of ${Object.keys(RULES).join(', ')}`);
-    const value = changes[key];
-    if (typeof value !== 'number' || !rule[0](value)) throw new ParameterError(key, value, rule[1]);
-    merged[key] = value;
-  }
-  // The fastest mode sits at the corner of the grid, |k| = √2·π·N / patchSize.
-  const fastestK = (Math.SQRT2 * Math.PI * merged.resolution) / merged.patchSize;
-  const fastest = frequencyIndex(fastestK, merged);
-  if (fastest > MAX_FREQUENCY_INDEX) {
-    // T at which the fastest index would reach MAX + 1, less a second so the advice is accepted.
-    const longest = ((MAX_FREQUENCY_INDEX + 1) * 2 * Math.PI) / angularFrequency(fastestK, merged.depth);
+  const merged = mergeOptions(SIMULATION_OPTIONS, changes, base);
+  checkCombination(merged);
+  return merged;
+}
+
+/** Checks what no single value shows: each cascade's band fits its grid, and its frequencies fit the phase table. */
+function checkCombination(params: SimulationParameters): void {
+  const ratio = maxPatchRatio(params.resolution);
+  if (params.patchSizes.some((size, i) => i > 0 && size > ratio * params.patchSizes[i - 1])) {
     throw new ParameterError(
-      'repeatPeriod',
-      merged.repeatPeriod,
-      `at most ${Math.ceil(longest) - 1} s with resolution ${merged.resolution} and patchSize ${merged.patchSize} ` +
-        `(the fastest wave's frequency index would be ${fastest}, above ${MAX_FREQUENCY_INDEX})`,
+      'patchSizes',
+      params.patchSizes,
+      `sizes whose neighbours differ by at most ${ratio}× at resolution ${params.resolution} ` +
+        '(cascadeBands.ts: the band boundary must lie inside both grids)',
     );
   }
-  return merged;
+  for (const band of cascadeBands(params.patchSizes, params.resolution)) {
+    const period = cascadeRepeatPeriod(band, params);
+    const fastestK = fastestModeInBand(band, params.resolution);
+    const fastest = Math.round((angularFrequency(fastestK, params.depth) * period) / (2 * Math.PI));
+    if (fastest > MAX_FREQUENCY_INDEX) {
+      throw new ParameterError(
+        'repeatPeriod',
+        params.repeatPeriod,
+        `shorter with resolution ${params.resolution} and patch ${band.patchSize} m at depth ${params.depth} m ` +
+          `(the fastest wave's frequency index would be ${fastest}, above ${MAX_FREQUENCY_INDEX})`,
+      );
+    }
+  }
+}
+
+/**
+ * Reads one simulation parameter as written in text (a URL, an attribute, a command line): see
+ * parseOptionText. Throws a ParameterError that names it and quotes the text.
+ */
+export function parseParameterText<K extends keyof SimulationParameters>(key: K, text: string): SimulationParameters[K] {
+  return parseOptionText(SIMULATION_OPTIONS, key, text) as SimulationParameters[K];
 }

@@ -10,10 +10,11 @@
  * so the hole is one cell smaller on each side than ring r − 1 and the fragment shader drops the
  * overlap (shaders/surface/ocean.frag). The vertex stage places vertices: shaders/surface/horizonGrid.glsl.
  *
- * baseCell is the field's texel size times a power of two that grows with the camera's height, so
+ * baseCell is the finest layer's texel size times a power of two that grows with the camera's height, so
  * the number of vertices on screen stays about the same from 1 m to 2 km up; cellsPerRing follows
- * the viewport's height. Mip level of ring r: log2(cell_r / texel), so far rings sample filtered
- * fields and detail fades without aliasing.
+ * the viewport's height. Mip level of ring r in a layer: log2(cell_r / the layer's texel), so far
+ * rings sample filtered fields and each layer's detail fades where the cells can no longer show it,
+ * without aliasing and without popping (the fields' own mipmaps do the filtering).
  */
 import { BufferGeometry, Float32BufferAttribute, Uint32BufferAttribute } from 'three';
 
@@ -109,16 +110,21 @@ export function createHorizonGridGeometry(cellsPerRing: number): BufferGeometry 
   return geometry;
 }
 
-/** Per-ring uniforms for shaders/surface/horizonGrid.glsl, recomputed each frame. */
+/** A layer as the rings see it: a square of `size` metres with `resolution` texels a side. */
+export interface LayerGrid {
+  readonly frame: { readonly size: number; readonly resolution: number };
+}
+
+/** Per-ring uniforms for shaders/surface/horizonGrid.glsl and ocean.vert, recomputed each frame. */
 export class RingFrames {
-  /** (centre x, centre z, cell size, mip level) per ring, RING_COUNT + 1 of them. */
+  /** (centre x, centre z, cell size, mip level of the finest layer) per ring, RING_COUNT + 1 of them. */
   readonly frames = new Float32Array(4 * (RING_COUNT + 1));
   /**
-   * Field texture coordinate of each ring centre, (centre / patchSize + ½ texel) mod 1, in double
-   * precision. The half texel: texel i holds the field at x = i·patchSize/N, while GL samples
-   * texel i's value exactly at u = (i + ½)/N.
+   * Texture coordinate of each ring centre in each layer, [ring · layers + layer], (centre / size +
+   * ½ texel) mod 1, in double precision. The half texel: texel i holds the field at
+   * x = i·size/N, while GL samples texel i's value exactly at u = (i + ½)/N.
    */
-  readonly uvOrigins = new Float32Array(2 * (RING_COUNT + 1));
+  uvOrigins = new Float32Array(2 * (RING_COUNT + 1));
   /** (centre_r − centre_{r+1}) / cell_{r+1} per ring: whole numbers, 0 or 1. */
   readonly offsets = new Float32Array(2 * (RING_COUNT + 1));
   /** Distance from the camera to the far corner of the skirt: the camera's far plane must reach it. */
@@ -129,14 +135,15 @@ export class RingFrames {
   /**
    * @param cameraX, cameraZ camera position on the sea plane (m)
    * @param cameraHeight camera height above the sea (m)
-   * @param texelSize patchSize / N (m)
+   * @param layers the wave layers the surface samples; the finest texel sets the finest cells
    */
-  update(cameraX: number, cameraZ: number, cameraHeight: number, patchSize: number, texelSize: number, cellsPerRing: number): void {
+  update(cameraX: number, cameraZ: number, cameraHeight: number, layers: readonly LayerGrid[], cellsPerRing: number): void {
+    const texelSize = finestTexel(layers);
+    if (this.uvOrigins.length !== 2 * (RING_COUNT + 1) * layers.length) this.uvOrigins = new Float32Array(2 * (RING_COUNT + 1) * layers.length);
     // Finest cells: the texel size, or coarser by powers of two once the camera is high enough
     // that ring 0 would cover less than about 8× the camera height.
     const heightPerCell = Math.max(1, cameraHeight) / (cellsPerRing / 8);
     const level = Math.max(0, Math.ceil(Math.log2(heightPerCell / texelSize)));
-    const halfTexel = (0.5 * texelSize) / patchSize;
     for (let ring = 0; ring <= RING_COUNT; ring++) {
       const cell = texelSize * 2 ** (level + ring);
       const x = Math.floor(cameraX / (2 * cell)) * 2 * cell;
@@ -147,8 +154,12 @@ export class RingFrames {
       this.frames[4 * ring + 1] = z;
       this.frames[4 * ring + 2] = cell;
       this.frames[4 * ring + 3] = level + ring;
-      this.uvOrigins[2 * ring] = fractional(x / patchSize + halfTexel);
-      this.uvOrigins[2 * ring + 1] = fractional(z / patchSize + halfTexel);
+      layers.forEach(({ frame: { size, resolution } }, layer) => {
+        const at = 2 * (ring * layers.length + layer);
+        const halfTexel = 0.5 / resolution;
+        this.uvOrigins[at] = fractional(x / size + halfTexel);
+        this.uvOrigins[at + 1] = fractional(z / size + halfTexel);
+      });
     }
     const lastCell = this.frames[4 * (RING_COUNT - 1) + 2];
     this.farEdgeDistance = Math.SQRT2 * (cellsPerRing / 2 + 2) * lastCell * SKIRT_SCALE + Math.max(0, cameraHeight);
@@ -158,6 +169,13 @@ export class RingFrames {
       this.offsets[2 * ring + 1] = Math.round((this.centres[2 * ring + 1] - this.centres[2 * ring + 3]) / nextCell);
     }
   }
+}
+
+/** The smallest texel of the layers, m: the rings' finest cells are this times a power of two. */
+export function finestTexel(layers: readonly LayerGrid[]): number {
+  let finest = Infinity;
+  for (const { frame } of layers) finest = Math.min(finest, frame.size / frame.resolution);
+  return finest;
 }
 
 function fractional(x: number): number {

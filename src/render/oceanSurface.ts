@@ -5,6 +5,7 @@
  * mesh's own transform is not used). Owns its geometry and material.
  */
 import { Mesh, Vector2, Vector3, type Camera, type Scene, type WebGLRenderer } from 'three';
+import type { WaveLayer } from '../layers/waveLayer';
 import { cellsPerRingForViewport, createHorizonGridGeometry, RingFrames } from './horizonGrid';
 import { OceanMaterial, type OceanMaterialInputs, type OceanShadingOptions } from './oceanMaterial';
 
@@ -14,9 +15,13 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
   private readonly viewport = new Vector2();
   private readonly cameraPosition = new Vector3();
 
+  /**
+   * @param waves the layers to draw and the choppiness, asked before every render (they change
+   *   when the simulation's parameters do)
+   */
   constructor(
     inputs: OceanMaterialInputs,
-    private readonly texelSize: () => number,
+    private readonly waves: () => { layers: readonly WaveLayer[]; choppiness: number },
     shading: OceanShadingOptions = {},
   ) {
     super(createHorizonGridGeometry(32), new OceanMaterial(inputs, shading));
@@ -45,9 +50,11 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
   placeRings(camera: Camera): void {
     const position = camera.getWorldPosition(this.cameraPosition);
     const u = this.material.uniforms;
-    this.rings.update(position.x, position.z, position.y, u.patchSize.value, this.texelSize(), this.cellsPerRing);
+    const { layers, choppiness } = this.waves();
+    this.material.bindLayers(layers, choppiness);
+    this.rings.update(position.x, position.z, position.y, layers, this.cellsPerRing);
     u.ringFrames.value = this.rings.frames;
-    u.ringUvOrigins.value = this.rings.uvOrigins;
+    u.ringLayerUvOrigins.value = this.rings.uvOrigins;
     u.ringOffsets.value = this.rings.offsets;
     u.halfRingCells.value = this.cellsPerRing / 2;
   }

@@ -48,6 +48,8 @@ import {
   type WebGLRenderer,
 } from 'three';
 import { shaderSource } from '../shaderSource';
+import { checkOption } from '../parameters/options';
+import { DEFAULT_SUN, SUN_OPTIONS } from '../parameters/sceneOptions';
 
 /** URLs of the six faces, in three.js's naming (p/n = positive/negative axis). */
 export interface CubeFaceUrls {
@@ -136,7 +138,7 @@ export class SkyEnvironment {
     private readonly renderer: WebGLRenderer,
     options: SkyEnvironmentOptions = {},
   ) {
-    const { sunElevation = 30, sunAzimuth = 40, resolution = 256 } = options;
+    const { sunElevation = DEFAULT_SUN.sunElevation, sunAzimuth = DEFAULT_SUN.sunAzimuth, resolution = 256 } = options;
     validateSun(sunElevation, sunAzimuth);
     if (!Number.isInteger(resolution) || resolution < 1 || resolution > renderer.capabilities.maxCubemapSize) {
       throw new Error(
@@ -312,10 +314,6 @@ export class SkyEnvironment {
 }
 
 function validateSun(elevationDeg: number, azimuthDeg: number): void {
-  if (typeof elevationDeg !== 'number' || !Number.isFinite(elevationDeg) || elevationDeg < -90 || elevationDeg > 90) {
-    throw new Error(`SkyEnvironment: sunElevation must be a finite number of degrees in [-90, 90], got ${elevationDeg}`);
-  }
-  if (typeof azimuthDeg !== 'number' || !Number.isFinite(azimuthDeg)) {
-    throw new Error(`SkyEnvironment: sunAzimuth must be a finite number of degrees, got ${azimuthDeg}`);
-  }
+  checkOption(SUN_OPTIONS, 'sunElevation', elevationDeg);
+  checkOption(SUN_OPTIONS, 'sunAzimuth', azimuthDeg);
 }

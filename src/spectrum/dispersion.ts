@@ -4,9 +4,11 @@
  * ω(k) = √(g·k)              deep water            (Tessendorf 2001, eq. 14)
  * ω(k) = √(g·k·tanh(k·d))    water of depth d      (Tessendorf 2001, eq. 15)
  *
- * Repeat period T (Tessendorf 2001, eq. 17): each ω is rounded down to a multiple m·ω0 of
+ * Repeat period T (Tessendorf 2001, eq. 17): each ω is rounded to the nearest multiple m·ω0 of
  * ω0 = 2π/T, so every mode turns a whole number of times in T and the sea at t and t + T is
- * identical. Time can then be wrapped into [0, T) in double precision before any float32 sees it,
+ * identical. Tessendorf rounds down, which slows every wave by up to ω0/ω; rounding to the nearest
+ * halves the error and centres it, and cascadeBands.ts picks each cascade's T long enough that
+ * every mode's phase speed is within 1 %. Time can then be wrapped into [0, T) in double precision before any float32 sees it,
  * so the phases never lose precision however long the scene runs.
  *
  * The phase factor of a mode is e^{i·m·φ} with φ = 2π·(t mod T)/T. Both simulation paths read it
@@ -16,6 +18,8 @@
  * Why a table: GLSL sin/cos are approximate (off by ~2e-4 under SwiftShader, see
  * ../shared/BROWSER.md), far above the 1e-4·RMS agreement we require between the GPU and JS paths.
  */
+
+import { detTanh } from './deterministicMath';
 
 /** Gravitational acceleration, m/s². */
 export const GRAVITY = 9.81;
@@ -33,14 +37,15 @@ export interface DispersionParameters {
 
 /** ω(k) in rad/s, unquantized. */
 export function angularFrequency(k: number, depth: number): number {
-  // tanh(k·d) is 1 to double precision once k·d > 20; skipping it keeps deep water exact.
-  const depthFactor = depth === Infinity || k * depth > 20 ? 1 : Math.tanh(k * depth);
+  // tanh(k·d) is 1 to double precision once k·d > 20; skipping it keeps deep water exact. detTanh:
+  // Math.tanh may differ between engines in the last bit, and the initial spectrum must not.
+  const depthFactor = depth === Infinity || k * depth > 20 ? 1 : detTanh(k * depth);
   return Math.sqrt(GRAVITY * k * depthFactor);
 }
 
-/** The integer m with m·ω0 = ω(k) rounded down to a multiple of ω0 = 2π/T. */
+/** The integer m with m·ω0 = ω(k) rounded to the nearest multiple of ω0 = 2π/T. */
 export function frequencyIndex(k: number, params: DispersionParameters): number {
-  return Math.floor((angularFrequency(k, params.depth) * params.repeatPeriod) / (2 * Math.PI));
+  return Math.round((angularFrequency(k, params.depth) * params.repeatPeriod) / (2 * Math.PI));
 }
 
 /** t wrapped into [0, T), also for negative t. */

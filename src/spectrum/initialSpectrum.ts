@@ -1,11 +1,17 @@
 /**
- * The initial wave spectrum h̃0(k) on the simulation grid.
+ * The initial wave spectra h̃0(k) of the FFT cascades.
  *
- * Phillips spectrum (Tessendorf 2001, eq. 23, as written in the course report §2.1):
- *   P(k) = A · exp(−1/(k·L)²) / k⁴ · |k̂·ŵ|²,   L = |w|²/g,   P(0) = 0,
- * times exp(−k²·ℓ²) when a small-wave cutoff ℓ > 0 is set (Tessendorf 2001, eq. 24).
- * Initial amplitudes (Tessendorf 2001, eq. 25):
- *   h̃0(k) = (ξr + i·ξi) · √(P(k)/2),  ξr, ξi independent standard normal deviates from the seed.
+ * Initial amplitudes (Tessendorf 2001, eq. 25, in physical units):
+ *   h̃0(k) = (ξr + i·ξi) · √(Ψ(−k)·Δk² / 4),   Δk = 2π/L,
+ * ξr, ξi independent standard normal deviates from the seed, Ψ the wave-number spectrum (m⁴, the
+ * variance of waves travelling towards k̂ per unit area of the k plane: seaState.ts). Why −k:
+ * Tessendorf's evolution h̃0(k)·e^{iωt}·e^{ik·x} is a wave travelling towards −k (its phase is
+ * constant where k·x = −ωt), so the waves that travel towards k̂ are h̃0(−k)'s. Why /4: then
+ * E|h̃0(k)|² = Ψ(−k)·Δk²/2, and the field h = Σ h̃(k, t)·e^{ik·x} with h̃(k,t) = h̃0(k)e^{iωt} +
+ * h̃0*(−k)e^{−iωt} has variance Σ E|h̃0(k)|² + E|h̃0(−k)|² = Σ Ψ(k)·Δk², the spectrum's m0. For the
+ * report's Phillips spectrum, seaState.ts makes Ψ = 2·P·(L₀/2π)² with L₀ the largest patch, so that
+ * one cascade of side L₀ gets exactly the report's h̃0 = (ξr + i·ξi)·√(P/2).
+ * Each cascade keeps only the modes of its band (cascadeBands.ts): the others are 0.
  *
  * Grid and frequency ordering. The patch of side Lx has N×N samples at x = (n, m)·Lx/N,
  * n, m in [0, N). Its wave vectors are k = 2π·(n', m')/Lx with n', m' in [−N/2, N/2). Texel
@@ -15,25 +21,40 @@
  * FFT with no reordering and no 1/N² factor. The field at −k lives at texel ((N − i) mod N,
  * (N − j) mod N); at the Nyquist index N/2 that is the texel itself.
  */
-import { detCosSinDegrees, detExp } from './deterministicMath';
-import { frequencyIndex, GRAVITY } from './dispersion';
 import type { SimulationParameters } from '../parameters/parameters';
+import { cascadeBands, cascadeRepeatPeriod, keepsMode, type CascadeBand } from './cascadeBands';
+import { frequencyIndex } from './dispersion';
 import { SeededRandom } from './random';
+import { waveNumberSpectrum } from './seaState';
 
+/** One cascade's initial spectrum. */
 export interface InitialSpectrum {
   resolution: number;
   patchSize: number;
+  /** The cascade's own repeat period T_c, s (cascadeBands.ts); ω = m·2π/T_c. */
+  repeatPeriod: number;
+  /** The modes it keeps (cascadeBands.ts). */
+  band: CascadeBand;
   /** RGBA per texel: (Re h̃0(k), Im h̃0(k), Re h̃0*(−k), Im h̃0*(−k)). */
   amplitudes: Float32Array;
   /**
    * RGBA per texel: (kx, kz, 1/|k|, m). kx and kz are the wavenumbers that derivatives use, with
    * the Nyquist component set to 0: its sign is ambiguous on an even grid, and i·k·h̃ there would
    * make the derivative fields complex. 1/|k| is 0 at k = 0. m is the quantized frequency index
-   * (ω = m·2π/T, see dispersion.ts), an exact integer.
+   * (ω = m·2π/T_c, see dispersion.ts), an exact integer; 0 outside the band.
    */
   waveVectors: Float32Array;
-  /** P(k) per texel, for inspection (the report's Figure 1). */
-  phillips: Float32Array;
+  /** Ψ(k) per texel in m⁴ (0 outside the band), for inspection (the report's Figure 1). */
+  density: Float32Array;
+}
+
+/** Ψ(kx, kz) in m⁴: the variance of waves travelling towards k̂ per unit area of the k plane. */
+export type WaveNumberSpectrum = (kx: number, kz: number) => number;
+
+/** Ψ of the sea state the parameters describe (seaState.ts); Phillips' A refers to the largest patch. */
+export function seaStateSpectrum(params: SimulationParameters): WaveNumberSpectrum {
+  const largestPatch = params.patchSizes[params.patchSizes.length - 1];
+  return (kx, kz) => waveNumberSpectrum(kx, kz, params, largestPatch);
 }
 
 /** The signed frequency n' of texel index i (the FFT ordering described above). */
@@ -41,30 +62,28 @@ export function signedFrequency(index: number, resolution: number): number {
   return index < resolution / 2 ? index : index - resolution;
 }
 
-/** Unit wind vector (x, z) for a direction in degrees; deterministic. */
-export function windUnitVector(directionDegrees: number): [number, number] {
-  return detCosSinDegrees(directionDegrees);
-}
-
-type PhillipsParameters = Pick<SimulationParameters, 'windSpeed' | 'windDirection' | 'amplitude' | 'smallWaveCutoff'>;
-
-/** P(k) for the wave vector (kx, kz) in rad/m. */
-export function phillips(kx: number, kz: number, params: PhillipsParameters): number {
-  const k2 = kx * kx + kz * kz;
-  if (k2 === 0 || params.windSpeed === 0) return 0; // no mean level; no wind, no waves
-  const [wx, wz] = windUnitVector(params.windDirection);
-  const largestWave = (params.windSpeed * params.windSpeed) / GRAVITY; // L
-  const cosine = (kx * wx + kz * wz) / Math.sqrt(k2);
-  const cutoff = params.smallWaveCutoff > 0 ? detExp(-k2 * params.smallWaveCutoff * params.smallWaveCutoff) : 1;
-  return ((params.amplitude * detExp(-1 / (k2 * largestWave * largestWave))) / (k2 * k2)) * cosine * cosine * cutoff;
-}
-
-export function createInitialSpectrum(params: SimulationParameters): InitialSpectrum {
-  const n = params.resolution;
-  const dk = (2 * Math.PI) / params.patchSize;
+/**
+ * The initial spectra of every cascade (params.patchSizes, finest first), drawn from one seeded
+ * generator, largest patch first: a single cascade gets the same deviates as before cascades
+ * existed, so a seed keeps its sea.
+ */
+export function createCascadeSpectra(params: SimulationParameters, spectrum = seaStateSpectrum(params)): InitialSpectrum[] {
   const random = new SeededRandom(params.seed);
+  const largestFirst = cascadeBands(params.patchSizes, params.resolution).reverse();
+  return largestFirst.map((band) => createInitialSpectrum(band, params, spectrum, random)).reverse();
+}
+
+function createInitialSpectrum(
+  band: CascadeBand,
+  params: SimulationParameters,
+  spectrum: WaveNumberSpectrum,
+  random: SeededRandom,
+): InitialSpectrum {
+  const n = params.resolution;
+  const dk = (2 * Math.PI) / band.patchSize;
+  const repeatPeriod = cascadeRepeatPeriod(band, params);
   const h0 = new Float64Array(2 * n * n); // h̃0 per texel, kept in double until packed
-  const phillipsValues = new Float32Array(n * n);
+  const density = new Float32Array(n * n);
   const waveVectors = new Float32Array(4 * n * n);
 
   for (let j = 0; j < n; j++) {
@@ -72,18 +91,19 @@ export function createInitialSpectrum(params: SimulationParameters): InitialSpec
     for (let i = 0; i < n; i++) {
       const kx = dk * signedFrequency(i, n);
       const texel = j * n + i;
-      const p = phillips(kx, kz, params);
-      const scale = Math.sqrt(p / 2);
-      // Both deviates are drawn for every texel, so the sequence does not depend on P.
+      const k = Math.sqrt(kx * kx + kz * kz);
+      const inBand = keepsMode(band, signedFrequency(i, n), signedFrequency(j, n));
+      const psi = inBand ? spectrum(kx, kz) : 0;
+      const scale = inBand ? Math.sqrt((spectrum(-kx, -kz) * dk * dk) / 4) : 0;
+      // Both deviates are drawn for every texel, so the sequence does not depend on Ψ.
       h0[2 * texel] = random.nextNormal() * scale;
       h0[2 * texel + 1] = random.nextNormal() * scale;
-      phillipsValues[texel] = p;
+      density[texel] = psi;
 
-      const k = Math.sqrt(kx * kx + kz * kz);
       waveVectors[4 * texel] = i === n / 2 ? 0 : kx;
       waveVectors[4 * texel + 1] = j === n / 2 ? 0 : kz;
       waveVectors[4 * texel + 2] = k > 0 ? 1 / k : 0;
-      waveVectors[4 * texel + 3] = frequencyIndex(k, params);
+      waveVectors[4 * texel + 3] = inBand ? frequencyIndex(k, { depth: params.depth, repeatPeriod }) : 0;
     }
   }
 
@@ -98,5 +118,5 @@ export function createInitialSpectrum(params: SimulationParameters): InitialSpec
       amplitudes[4 * texel + 3] = -h0[2 * opposite + 1];
     }
   }
-  return { resolution: n, patchSize: params.patchSize, amplitudes, waveVectors, phillips: phillipsValues };
+  return { resolution: n, patchSize: band.patchSize, repeatPeriod, band, amplitudes, waveVectors, density };
 }

@@ -9,7 +9,7 @@ async function openOcean(page: Page, width = 640, height = 360): Promise<void> {
 }
 
 test.describe('horizon geometry, read back from the real vertex shader', () => {
-  // Cameras several patches (250 m) from the origin, low (finest rings at mip 0) and high.
+  // Cameras several patches from the origin (of every cascade: 13.7, 79.3, 457 m), low and high.
   const cameras: [string, [number, number, number], [number, number, number]][] = [
     ['2 m up', [917.3, 2, -561.8], [1000, 0, -700]],
     ['40 m up', [917.3, 40, -561.8], [1000, 0, -700]],
@@ -36,7 +36,9 @@ test.describe('horizon geometry, read back from the real vertex shader', () => {
           expect(maxError, `mip ${level}`).toBeLessThan(0.01);
         }
       }
-      if (name === '2 m up') expect(Object.keys(results[0].byLevel)).toContain('0');
+      // 2 m up with 32 cells a ring (360 px), the finest cells are ≥ 2 m / 4: the finest cascade's
+      // (13.7 m / 256) mip 4, the middle one's mip 1, the largest one's mip 0.
+      if (name === '2 m up') expect(Object.keys(results[0].byLevel)).toContain('4');
       // Not frozen: between the two times almost every height changed (those at the coarsest mip,
       // the patch mean, stay put by design).
       const [before, after] = results.map((result) => result.heights);
@@ -76,7 +78,7 @@ test.describe('shading', () => {
     const samples = await page.evaluate((pixels) => {
       window.ocean.setUniformEnvironment([1, 1, 1]);
       // Refraction, caustics and glint switched off: the picture is R alone, in linear output.
-      window.ocean.setup({ amplitude: 0 }, { absorption: [1e3, 1e3, 1e3], scatterColour: [0, 0, 0], causticColour: [0, 0, 0] });
+      window.ocean.setup({ windSpeed: 0 }, { absorption: [1e3, 1e3, 1e3], scatterColour: [0, 0, 0], causticColour: [0, 0, 0] });
       window.ocean.setSun([0, 0.2, 1]);
       window.ocean.view([0, 10, 0], [0, 4, -10]);
       window.ocean.render(0, true);
@@ -131,10 +133,13 @@ test.describe('the sea reaches the horizon', () => {
 });
 
 test('heightAt(x, z) is the height of the rendered surface over (x, z), choppy displacement inverted', async ({ page }) => {
-  await openOcean(page);
+  // Two cascades whose finest texel (40 m / 256) is coarse enough for the rings nearest a camera
+  // 2 m up to sample every cascade at mip 0 (128 cells a ring at 1000 px): heightAt is the
+  // unfiltered sum of the layers, which the surface draws only there.
+  await openOcean(page, 1000, 1000);
   const result = await page.evaluate(() => {
     window.ocean.view([917.3, 2, -561.8], [1000, 0, -700]);
-    return window.ocean.heightAtCheck({ seed: 9, windSpeed: 14, choppiness: 1.5 }, 6.75);
+    return window.ocean.heightAtCheck({ seed: 9, windSpeed: 14, choppiness: 1.5, patchSizes: [40, 250] }, 6.75);
   });
   // Vertices where the sea folds over (Jacobian ≤ 0.2; a few % at choppiness 1.5) are ambiguous
   // and left out; Newton's inversion elsewhere lands within ~2e-3 of the RMS (float32 fields). A

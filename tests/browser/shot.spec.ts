@@ -1,12 +1,13 @@
 import { expect, test } from '@playwright/test';
 import { spawn, spawnSync } from 'node:child_process';
-import { mkdtempSync, readdirSync, readFileSync, rmSync } from 'node:fs';
+import { existsSync, mkdtempSync, readdirSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 import { PNG } from 'pngjs';
 
 // `npm run shot` (scripts/shot.mjs) as a user runs it: a Node process that builds the app if
-// needed, starts its own headless Chromium and writes PNG files. No page fixture here.
+// needed, starts its own headless Chromium and writes PNG files. Only the test that compares a
+// shot with the app itself (on the dev server, as app.spec.ts drives it) uses the page fixture.
 
 const root = resolve(import.meta.dirname, '../..');
 const script = join(root, 'scripts/shot.mjs');
@@ -90,19 +91,145 @@ test('bad arguments fail at once with a clear message', () => {
     [['--frames', '2.5', '--out-dir', 'x'], '--frames must be a whole number'],
     [['--frames', '3'], '--frames needs --out-dir'],
     [['--frames', '3', '--out-dir', 'x', '--fps', '0'], '--fps must be a number of frames per second above 0'],
-    [['--seed', 'seven'], '--seed must be an integer'],
-    [['--wind', '-1'], '--wind must be a wind speed in m/s from 0 to 100'],
     [['--time', 'later'], '--time must be a finite number of seconds'],
+    [['--time'], '--time needs a value'],
     [['--camera', '1,2,3'], '--camera must be six numbers'],
     [['--out', 'ocean.jpg'], '--out must name a .png file'],
-    [['--colour', 'blue'], "Unknown option '--colour'"],
+    [['ocean.png'], 'unexpected argument "ocean.png"'],
+    [['--query', 'seed=3', '--time', '2', '--wind-speed', '5'], '--query is the whole scene of an app link: put --time, --wind-speed into it'],
   ];
   for (const [args, message] of cases) {
     const result = spawnSync(process.execPath, [script, ...args], { cwd: root, encoding: 'utf8' });
     expect(result.status, args.join(' ')).toBe(2);
     expect(result.stderr, args.join(' ')).toContain(message);
   }
+});
+
+test('--help lists the CLI\'s options and, from the option tables, every scene option with its default', () => {
+  test.setTimeout(300_000); // the page writes the scene part: may build the app first
   const help = spawnSync(process.execPath, [script, '--help'], { cwd: root, encoding: 'utf8' });
-  expect(help.status).toBe(0);
+  expect(help.status, help.stderr).toBe(0);
   expect(help.stdout).toContain('--frames <n>');
+  expect(help.stdout).toContain('--query "<query>"');
+  expect(help.stdout).toContain('--wind is --wind-speed');
+  for (const name of ['spectrum', 'fetch', 'patch-sizes', 'depth', 'swell-height', 'shading-mode', 'absorption', 'path', 'skybox']) {
+    expect(help.stdout).toMatch(new RegExp(`\\n  --${name} `));
+  }
+  expect(help.stdout).toMatch(/--sun-elevation <deg> +a number of degrees from -90 to 90 \(default 30\)/);
+  expect(help.stdout).toMatch(/--wind-speed <m\/s> +a speed in m\/s from 0 to 60 \(default 10\)/);
+  expect(help.stdout).toContain('(default 13.7,79.3,457)');
+});
+
+/** Raw RGBA of a PNG, top row first. */
+function rgba(file: string): { width: number; height: number; data: Buffer } {
+  const png = PNG.sync.read(readFileSync(file));
+  return { width: png.width, height: png.height, data: png.data };
+}
+
+test('every scene option reaches the picture: spectrum, depth, fetch, patch sizes, shading mode; --wind is --wind-speed', async () => {
+  test.setTimeout(300_000);
+  const base = ['--seed', '4', '--time', '3', '--size', '160x90'];
+  const run = async (name: string, args: string[], build = false) => {
+    const result = await shot([...base, ...args, '--out', join(dir, `${name}.png`), ...(build ? [] : ['--no-build'])]);
+    expect(result.code, result.stderr).toBe(0);
+    return readFileSync(join(dir, `${name}.png`));
+  };
+  const old = await run('old-names', ['--wind', '12'], true);
+  // The old name and the new one, with the default spectrum written out, give the same bytes.
+  expect((await run('new-names', ['--wind-speed', '12', '--spectrum', 'jonswap'])).equals(old)).toBe(true);
+  expect((await run('phillips', ['--wind-speed', '12', '--spectrum', 'phillips'])).equals(old)).toBe(false);
+  const shallow = await run('tma', ['--wind-speed', '12', '--spectrum', 'tma', '--depth', '4', '--fetch', '300', '--patch-sizes', '10,50,250']);
+  expect(shallow.equals(old)).toBe(false);
+  expect((await run('absorption', ['--wind-speed', '12', '--absorption', '0.05,0.05,0.05', '--sun-elevation', '-5'])).equals(old)).toBe(false);
+
+  // The height mode (the report's Figure 3) shades the sea in greys: the lower half, all sea, is grey.
+  await run('height', ['--wind-speed', '12', '--shading-mode', 'height']);
+  const { width, height, data } = rgba(join(dir, 'height.png'));
+  let colourful = 0;
+  for (let y = Math.ceil(height / 2); y < height; y++) {
+    for (let x = 0; x < width; x++) {
+      const i = 4 * (y * width + x);
+      if (Math.max(data[i], data[i + 1], data[i + 2]) - Math.min(data[i], data[i + 1], data[i + 2]) > 2) colourful++;
+    }
+  }
+  expect(colourful).toBe(0);
+  const full = rgba(join(dir, 'old-names.png')).data;
+  const i = 4 * ((height - 3) * width + width / 2);
+  expect(full[i + 2] - full[i]).toBeGreaterThan(10); // the same sea shaded in full is blue
+});
+
+test('a bad value or an unknown option comes back from the page: exit code 2, naming the option', async () => {
+  test.setTimeout(300_000);
+  const cases: [string[], string][] = [
+    [['--wind-sped', '12'], 'unknown option --wind-sped; did you mean --wind-speed?'],
+    [['--sun-elevaton', '10'], 'did you mean --sun-elevation?'],
+    [['--szie', '320x180'], 'did you mean --size?'],
+    [['--seed', 'seven'], '--seed must be an integer from 0 to 4294967295; got "seven"'],
+    [['--wind', '-1'], '--wind must be a speed in m/s from 0 to 60; got "-1"'],
+    [['--spectrum', 'pm'], '--spectrum must be one of phillips, pierson-moskowitz, jonswap, tma; got "pm"'],
+    [['--shading-mode', 'glossy'], '--shading-mode must be one of full, fresnel'],
+    [['--patch-sizes', '100,50'], '--patch-sizes must be 1 to 4 sizes in metres'],
+    [['--absorption', '0.4,0.1'], '--absorption must be three numbers'],
+    [['--path', 'cuda'], '--path must be auto, gpu, js; got "cuda"'],
+    [['--wind', '5', '--wind-speed', '6'], '--wind-speed is given twice (also as --wind)'],
+    [['--query', 'windSpeed=99&cam=1,2'], 'windSpeed must be a speed in m/s from 0 to 60; got "99"; cam must be five numbers'],
+    [['--query', 'wind=5'], 'wind: unknown URL parameter'],
+  ];
+  let first = true;
+  for (const [args, message] of cases) {
+    const result = await shot([...args, '--size', '16x16', '--out', join(dir, 'never.png'), ...(first ? [] : ['--no-build'])]);
+    first = false;
+    expect(result.code, `${args.join(' ')}: ${result.stderr}`).toBe(2);
+    expect(result.stderr, args.join(' ')).toContain(message);
+  }
+  expect(existsSync(join(dir, 'never.png'))).toBe(false);
+});
+
+test('a link from the app and its shot agree pixel for pixel', async ({ page }) => {
+  test.setTimeout(300_000);
+  const size = { width: 320, height: 180 };
+  const query =
+    'windSpeed=14&windDirection=50&seed=5&sunElevation=18&sunAzimuth=70&absorption=0.3,0.06,0.03&paused=1&t=7.25&cam=3,9,-4,20,-8';
+  // The app, on the test server, as app.spec.ts drives it: its canvas right after a render.
+  await page.setViewportSize(size);
+  await page.goto(`/?${query}`);
+  await page.waitForFunction(() => window.oceanApp !== undefined);
+  const appPixels = await page.evaluate(async () => {
+    for (let i = 0; i < 3; i++) await new Promise((resolve) => requestAnimationFrame(resolve));
+    const { width, height, data } = await window.oceanApp.capturePixels();
+    let text = '';
+    for (let i = 0; i < data.length; i += 8192) text += String.fromCharCode(...data.subarray(i, i + 8192));
+    return { width, height, base64: btoa(text) };
+  });
+  const warnings = await page.locator('.notice.warning').count();
+  expect(warnings).toBe(0); // the link is one the app reads without complaint
+  const app = Buffer.from(appPixels.base64, 'base64');
+  expect([appPixels.width, appPixels.height]).toEqual([size.width, size.height]);
+
+  // The shot of the same link (as copied: the whole address works too).
+  const result = await shot(['--query', `http://127.0.0.1/?${query}`, '--size', `${size.width}x${size.height}`, '--out', join(dir, 'link.png')]);
+  expect(result.code, result.stderr).toBe(0);
+  expect(result.stderr).toContain('t = 7.25 s');
+  const { width, height, data } = rgba(join(dir, 'link.png'));
+  expect([width, height]).toEqual([size.width, size.height]);
+
+  // readPixels gives the bottom row first, the PNG the top row first.
+  let differing = 0;
+  let largest = 0;
+  for (let y = 0; y < height; y++) {
+    for (let x = 0; x < width; x++) {
+      const a = 4 * ((height - 1 - y) * width + x);
+      const b = 4 * (y * width + x);
+      let difference = 0;
+      for (let c = 0; c < 4; c++) difference = Math.max(difference, Math.abs(app[a + c] - data[b + c]));
+      if (difference > 0) differing++;
+      largest = Math.max(largest, difference);
+    }
+  }
+  expect({ differing, largest }).toEqual({ differing: 0, largest: 0 });
+
+  // Another camera in the link gives another picture (the comparison above is not vacuous).
+  const other = await shot(['--query', query.replace('cam=3,9,-4,20,-8', 'cam=3,9,-4,60,-8'), '--size', '320x180', '--out', join(dir, 'other.png'), '--no-build']);
+  expect(other.code, other.stderr).toBe(0);
+  expect(readFileSync(join(dir, 'other.png')).equals(readFileSync(join(dir, 'link.png')))).toBe(false);
 });

@@ -1,6 +1,6 @@
 import { expect, test } from '@playwright/test';
 import { validateParameters } from '../../src/parameters/parameters';
-import { createInitialSpectrum } from '../../src/spectrum/initialSpectrum';
+import { createCascadeSpectra } from '../../src/spectrum/initialSpectrum';
 
 test.beforeEach(async ({ page }) => {
   const errors: string[] = [];
@@ -47,6 +47,11 @@ for (const [name, changes] of [
   ['no wind', { windSpeed: 0 }],
   ['a 60 m/s wind', { windSpeed: 60 }],
   ['N = 1024', { resolution: 1024 }],
+  // Issue "Real seas without seams": the extremes of the sea state.
+  ['a fetch of 1 m', { resolution: 64, fetch: 0.001 }],
+  ['a fetch of 10 000 km and a 30 m swell', { resolution: 64, fetch: 1e4, swellHeight: 30, swellPeriod: 40 }],
+  ['TMA at a depth of 0.1 m', { resolution: 64, spectrum: 'tma', depth: 0.1, windSpeed: 60 }],
+  ['Phillips at 60 m/s with Donelan–Banner spreading requested', { resolution: 64, spectrum: 'phillips', windSpeed: 60, spreading: 'donelan-banner' }],
 ] as const) {
   test(`no NaN or Infinity reaches the GPU field textures with ${name}`, async ({ page }) => {
     expect(await page.evaluate((c) => window.harness.gpuNonFiniteCount(c, 17.5), changes)).toBe(0);
@@ -64,11 +69,17 @@ test('the JS path in a Web Worker uploads the same fields as CpuWaveFields', asy
 test('bad parameters raise errors naming them, and the simulation keeps its last good values', async ({ page }) => {
   const { messages, unchanged, nonFinite } = await page.evaluate(() => window.harness.badInput());
   expect(messages).toEqual([
-    expect.stringMatching(/^windSpeed must be a finite speed in m\/s from 0 to 100; got NaN$/),
+    expect.stringMatching(/^windSpeed must be a speed in m\/s from 0 to 60; got NaN$/),
     expect.stringMatching(/^resolution must be a power of two from 16 to 1024; got 100$/),
-    expect.stringMatching(/^patchSize must be .*> 0; got -1$/),
-    expect.stringMatching(/^amplitude must be a finite number ≥ 0; got -0.000001$/),
-    expect.stringMatching(/^repeatPeriod must be .*> 0; got 0$/),
+    expect.stringMatching(/^patchSizes must be .*ascending, each at least twice the one before; got \[-1\]$/),
+    expect.stringMatching(/^patchSizes must be .*ascending.*; got \[100, 50\]$/),
+    expect.stringMatching(/^patchSizes must be .*at least twice the one before; got \[50, 60\]$/),
+    expect.stringMatching(/^spectrum must be one of phillips, pierson-moskowitz, jonswap, tma; got bretschneider$/),
+    expect.stringMatching(/^spreading must be one of cos-2s, mitsuyasu, hasselmann, donelan-banner; got cosine$/),
+    expect.stringMatching(/^fetch must be a distance in km > 0 and at most 100000; got 0$/),
+    expect.stringMatching(/^swellPeriod must be a period in seconds > 0 and at most 40; got -3$/),
+    expect.stringMatching(/^amplitude must be a number from 0 to 1; got -0.000001$/),
+    expect.stringMatching(/^repeatPeriod must be .*> 0 and at most 100000; got 0$/),
     expect.stringMatching(/^depth must be .*; got 0$/),
     expect.stringMatching(/^time must be a finite number of seconds; got NaN$/),
   ]);
@@ -86,7 +97,7 @@ test('every GPU resource a simulation makes is freed by dispose (memory back to 
 
 test('the initial spectrum is bit-identical in Node and in the browser for the same seed', async ({ page }) => {
   const changes = { resolution: 64, seed: 7, windDirection: 33.3 };
-  const inNode = Array.from(new Uint32Array(createInitialSpectrum(validateParameters(changes)).amplitudes.buffer));
+  const inNode = createCascadeSpectra(validateParameters(changes)).flatMap((spectrum) => Array.from(new Uint32Array(spectrum.amplitudes.buffer)));
   const inBrowser = await page.evaluate((c) => window.harness.spectrumBits(c), changes);
   expect(inBrowser.length).toBe(inNode.length);
   expect(inBrowser).toEqual(inNode);

@@ -7,12 +7,18 @@
  * one alone with the term-by-term DFT of naiveDft.ts. Nothing of CpuWaveFields, fft.ts or the phase
  * table is used. Physical checks (phase speed, finite differences, the Jacobian of the choppy map)
  * need no reference at all.
+ *
+ * CpuWaveFields computes the fields for a choppiness λ = 1, over its spectrum's own repeat period
+ * T_c; the surface and the queries scale Dx, Dz and their derivatives by λ (Tessendorf 2001,
+ * eq. 29: D = λ·Σ −i·k̂·h̃·e^{ik·x} is linear in λ). The reference here is built for λ = 1, and the
+ * choppy-surface checks scale the λ = 1 fields by λ the way the surface does.
  */
 import { describe, expect, it } from 'vitest';
 import { CpuWaveFields } from '../../src/fft/cpuWaveFields';
-import { validateParameters, type SimulationParameters } from '../../src/parameters/parameters';
+import { DEFAULT_PARAMETERS, type SimulationParameters } from '../../src/parameters/parameters';
 import { SeededRandom } from '../../src/spectrum/random';
-import { createInitialSpectrum, type InitialSpectrum } from '../../src/spectrum/initialSpectrum';
+import { createCascadeSpectra, type InitialSpectrum } from '../../src/spectrum/initialSpectrum';
+import { phillips } from '../../src/spectrum/phillips';
 import { naiveInverseDft2D } from './naiveDft';
 
 const G = 9.81;
@@ -40,8 +46,8 @@ function evolvedSpectrum(spectrum: InitialSpectrum, repeatPeriod: number, t: num
   return [re, im];
 }
 
-/** The eight field spectra of waveFieldLayout.ts, each separately. */
-function fieldSpectra(spectrum: InitialSpectrum, choppiness: number, h: ComplexGrid): Record<FieldName, ComplexGrid> {
+/** The eight field spectra of waveFieldLayout.ts for a choppiness λ = 1, each separately. */
+function fieldSpectra(spectrum: InitialSpectrum, h: ComplexGrid): Record<FieldName, ComplexGrid> {
   const count = spectrum.resolution ** 2;
   const out = Object.fromEntries(
     FIELD_NAMES.map((name) => [name, [new Float64Array(count), new Float64Array(count)]]),
@@ -55,15 +61,14 @@ function fieldSpectra(spectrum: InitialSpectrum, choppiness: number, h: ComplexG
     const kx = spectrum.waveVectors[4 * p];
     const kz = spectrum.waveVectors[4 * p + 1];
     const kInverse = spectrum.waveVectors[4 * p + 2];
-    const lambda = choppiness;
     set('h', p, 1, 0);
     set('dhdx', p, 0, kx); // i·kx·h̃
     set('dhdz', p, 0, kz); // i·kz·h̃
-    set('Dx', p, 0, lambda * kx * kInverse); // i·λ·kx/k·h̃
-    set('Dz', p, 0, lambda * kz * kInverse); // i·λ·kz/k·h̃
-    set('dDxdx', p, -lambda * kx * kx * kInverse, 0); // −λ·kx²/k·h̃
-    set('dDzdz', p, -lambda * kz * kz * kInverse, 0); // −λ·kz²/k·h̃
-    set('dDxdz', p, -lambda * kx * kz * kInverse, 0); // −λ·kx·kz/k·h̃
+    set('Dx', p, 0, kx * kInverse); // i·kx/k·h̃
+    set('Dz', p, 0, kz * kInverse); // i·kz/k·h̃
+    set('dDxdx', p, -kx * kx * kInverse, 0); // −kx²/k·h̃
+    set('dDzdz', p, -kz * kz * kInverse, 0); // −kz²/k·h̃
+    set('dDxdz', p, -kx * kz * kInverse, 0); // −kx·kz/k·h̃
   }
   return out;
 }
@@ -74,8 +79,8 @@ interface Reference {
   imag: Fields;
 }
 
-function reference(spectrum: InitialSpectrum, choppiness: number, repeatPeriod: number, t: number): Reference {
-  const spectra = fieldSpectra(spectrum, choppiness, evolvedSpectrum(spectrum, repeatPeriod, t));
+function reference(spectrum: InitialSpectrum, t: number): Reference {
+  const spectra = fieldSpectra(spectrum, evolvedSpectrum(spectrum, spectrum.repeatPeriod, t));
   const real = {} as Fields;
   const imag = {} as Fields;
   for (const name of FIELD_NAMES) {
@@ -101,10 +106,26 @@ function readFields(waves: CpuWaveFields, n: number): Fields {
   return f;
 }
 
-function fieldsAt(spectrum: InitialSpectrum, choppiness: number, repeatPeriod: number, t: number): Fields {
-  const waves = new CpuWaveFields(spectrum, choppiness, repeatPeriod);
+function fieldsAt(spectrum: InitialSpectrum, t: number): Fields {
+  const waves = new CpuWaveFields(spectrum);
   waves.update(t);
   return readFields(waves, spectrum.resolution);
+}
+
+/** The horizontal fields (Dx, Dz and their derivatives) scaled by λ, as the surface and queries do. */
+function withChoppiness(f: Fields, lambda: number): Fields {
+  const out = { ...f };
+  for (const name of ['Dx', 'Dz', 'dDxdx', 'dDzdz', 'dDxdz'] as const) out[name] = f[name].map((v) => lambda * v);
+  return out;
+}
+
+/** The same scaling of the reference field spectra. */
+function spectraWithChoppiness(spectra: Record<FieldName, ComplexGrid>, lambda: number): Record<FieldName, ComplexGrid> {
+  const out = { ...spectra };
+  for (const name of ['Dx', 'Dz', 'dDxdx', 'dDzdz', 'dDxdz'] as const) {
+    out[name] = [spectra[name][0].map((v) => lambda * v), spectra[name][1].map((v) => lambda * v)];
+  }
+  return out;
 }
 
 const rms = (a: ArrayLike<number>) => {
@@ -137,7 +158,7 @@ function whiteSpectrum(base: InitialSpectrum, seed: number): InitialSpectrum {
 
 /**
  * One travelling wave: h̃0(q) = a at texel (i, j) of wave vector q, everything else 0 (the conjugate
- * entry h̃0*(−k) at texel −q is set to match, as createInitialSpectrum does). The sea is then
+ * entry h̃0*(−k) at texel −q is set to match, as createCascadeSpectra does). The sea is then
  * h(x, t) = 2|a|·cos(q·x + ωt + arg a).
  */
 function singleMode(base: InitialSpectrum, i: number, j: number, a: [number, number]): InitialSpectrum {
@@ -152,8 +173,20 @@ function singleMode(base: InitialSpectrum, i: number, j: number, a: [number, num
   return { ...base, amplitudes };
 }
 
+/** The Phillips model on one patch, merged over the defaults (parameters.test.ts checks validity). */
 function params(changes: Partial<SimulationParameters>): SimulationParameters {
-  return validateParameters(changes);
+  return { ...DEFAULT_PARAMETERS, spectrum: 'phillips', patchSizes: [250], windSpeed: 12, smallWaveCutoff: 0.1, ...changes };
+}
+
+/**
+ * The single cascade of the report's Phillips spectrum: Ψ = 2·P·(L/2π)² gives h̃0 = (ξr + i·ξi)·√(P/2)
+ * (spectrum.test.ts).
+ */
+function phillipsCascade(p: SimulationParameters): InitialSpectrum {
+  const [size] = p.patchSizes;
+  const spectra = createCascadeSpectra(p, (kx, kz) => 2 * phillips(kx, kz, p) * (size / (2 * Math.PI)) ** 2);
+  expect(spectra).toHaveLength(1);
+  return spectra[0];
 }
 
 // Small grids for the O(N⁴) reference. Wind at 30° so no row or column of the spectrum is empty,
@@ -161,13 +194,13 @@ function params(changes: Partial<SimulationParameters>): SimulationParameters {
 const SMALL_CASES = [
   {
     name: 'Phillips N=16',
-    p: params({ resolution: 16, patchSize: 40, windSpeed: 8, windDirection: 30, smallWaveCutoff: 0, repeatPeriod: 90 }),
+    p: params({ resolution: 16, patchSizes: [40], windSpeed: 8, windDirection: 30, smallWaveCutoff: 0, repeatPeriod: 90 }),
   },
   {
     name: 'Phillips N=32, depth 4 m',
     p: params({
       resolution: 32,
-      patchSize: 60,
+      patchSizes: [60],
       windSpeed: 10,
       windDirection: -50,
       smallWaveCutoff: 0,
@@ -176,11 +209,10 @@ const SMALL_CASES = [
       depth: 4,
     }),
   },
-].map(({ name, p }) => ({ name, p, spectrum: createInitialSpectrum(p) }));
+].map(({ name, p }) => ({ name, p, spectrum: phillipsCascade(p) }));
 // Unit amplitudes on every texel, Nyquist and k = 0 included, so no mode hides behind a small P.
 const WHITE = { name: 'white N=16', p: SMALL_CASES[0].p, spectrum: whiteSpectrum(SMALL_CASES[0].spectrum, 77) };
 const ALL_SMALL = [...SMALL_CASES, WHITE];
-const CHOPPINESS = 1.3;
 // t = 1e7 s (four months) checks that long runs keep full precision (time is wrapped before float32).
 const TIMES = [0, 3.7, 1e7 + 0.37];
 
@@ -200,7 +232,7 @@ describe('the field spectra (the reference built from spectrum.ts)', () => {
       }
       expect(nyquist / total).toBeGreaterThan(1e-6);
       for (const t of TIMES) {
-        const { real, imag } = reference(spectrum, CHOPPINESS, p.repeatPeriod, t);
+        const { real, imag } = reference(spectrum, t);
         for (const field of FIELD_NAMES) {
           const scale = rms(real[field]);
           expect(scale).toBeGreaterThan(0);
@@ -217,11 +249,11 @@ describe('the field spectra (the reference built from spectrum.ts)', () => {
 describe('CpuWaveFields.update', () => {
   for (const { name, p, spectrum } of ALL_SMALL) {
     it(`equals the separately transformed reference fields (${name})`, () => {
-      const waves = new CpuWaveFields(spectrum, CHOPPINESS, p.repeatPeriod);
+      const waves = new CpuWaveFields(spectrum);
       for (const t of TIMES) {
         waves.update(t);
         const got = readFields(waves, p.resolution);
-        const { real } = reference(spectrum, CHOPPINESS, p.repeatPeriod, t);
+        const { real } = reference(spectrum, t);
         for (const field of FIELD_NAMES) {
           // float32 phase table, FFT input and 2·log2(N) float32 FFT stages: ~1e-7 of the packed
           // pair's RMS per sample, the max over the grid a few times that (observed ≤ 1.4e-6);
@@ -235,8 +267,8 @@ describe('CpuWaveFields.update', () => {
 
     it(`satisfies Parseval: mean of f² over the grid = Σ|F̃(k, t)|² for every field (${name})`, () => {
       for (const t of TIMES) {
-        const got = fieldsAt(spectrum, CHOPPINESS, p.repeatPeriod, t);
-        const spectra = fieldSpectra(spectrum, CHOPPINESS, evolvedSpectrum(spectrum, p.repeatPeriod, t));
+        const got = fieldsAt(spectrum, t);
+        const spectra = fieldSpectra(spectrum, evolvedSpectrum(spectrum, spectrum.repeatPeriod, t));
         for (const field of FIELD_NAMES) {
           const meanSquare = rms(got[field]) ** 2;
           // The fields are within ~1e-6 of exact pointwise (above), so their mean square is within
@@ -246,12 +278,14 @@ describe('CpuWaveFields.update', () => {
       }
     });
 
-    it(`repeats exactly after the repeat period T (${name})`, () => {
+    it(`repeats exactly after the cascade's repeat period T_c (${name})`, () => {
       const t = 3.7;
-      const T = p.repeatPeriod;
-      const first = fieldsAt(spectrum, CHOPPINESS, T, t);
+      const T = spectrum.repeatPeriod;
+      // T_c is the user's T doubled as often as the 1 % phase-speed bound needs (cascadeBands.ts).
+      expect(Number.isInteger(Math.log2(T / p.repeatPeriod))).toBe(true);
+      const first = fieldsAt(spectrum, t);
       for (const later of [t + T, t + 1000 * T, t - 7 * T]) {
-        const again = fieldsAt(spectrum, CHOPPINESS, T, later);
+        const again = fieldsAt(spectrum, later);
         for (const field of FIELD_NAMES) {
           // t + 1000·T is rounded by ≤ 1.5e-11 s in double, a phase change of ≤ 1e-9 rad, far
           // below float32 resolution: the phase table differs by at most one float32 ulp (6e-8),
@@ -261,16 +295,16 @@ describe('CpuWaveFields.update', () => {
         }
       }
       // And it does change within a period.
-      const between = fieldsAt(spectrum, CHOPPINESS, T, t + T / 3);
+      const between = fieldsAt(spectrum, t + T / 3);
       expect(maxAbsDifference(between.h, first.h) / rms(first.h)).toBeGreaterThan(0.1);
     });
   }
 
   it('carries no state between updates: any order of times gives bit-identical fields', () => {
-    const { p, spectrum } = SMALL_CASES[1];
-    const fresh = new CpuWaveFields(spectrum, CHOPPINESS, p.repeatPeriod);
+    const { spectrum } = SMALL_CASES[1];
+    const fresh = new CpuWaveFields(spectrum);
     fresh.update(12.5);
-    const reused = new CpuWaveFields(spectrum, CHOPPINESS, p.repeatPeriod);
+    const reused = new CpuWaveFields(spectrum);
     reused.update(80);
     reused.update(1e6);
     reused.update(12.5);
@@ -278,25 +312,25 @@ describe('CpuWaveFields.update', () => {
     expect(new Uint32Array(reused.derivatives.buffer)).toEqual(new Uint32Array(fresh.derivatives.buffer));
   });
 
-  it('with choppiness 0 moves nothing sideways and leaves h as it is', () => {
-    const { p, spectrum } = SMALL_CASES[0];
-    const flat = fieldsAt(spectrum, 0, p.repeatPeriod, 3.7);
-    const choppy = fieldsAt(spectrum, CHOPPINESS, p.repeatPeriod, 3.7);
-    for (const field of ['Dx', 'Dz', 'dDxdx', 'dDzdz', 'dDxdz'] as const) {
-      // Only float32 rounding from the packed partner (Dx shares a transform with h) may remain,
-      // ~1e-7 of the RMS the field has at λ = 1.3; 1e-6 allows for that.
-      expect(Math.max(...flat[field].map(Math.abs)) / rms(choppy[field]), field).toBeLessThan(1e-6);
+  it('evolves with the spectrum’s own repeat period: fields(T) at t equal fields(2T) at 2t', () => {
+    const { spectrum } = SMALL_CASES[0];
+    const doubled = { ...spectrum, repeatPeriod: 2 * spectrum.repeatPeriod };
+    for (const t of [3.7, 41.25]) {
+      const a = fieldsAt(spectrum, t);
+      const b = fieldsAt(doubled, 2 * t);
+      // ω = m·2π/T: the same phases m·2π·t/T; only float32 rounding of the phase table differs.
+      for (const field of FIELD_NAMES) expect(maxAbsDifference(a[field], b[field]) / rms(a[field]), field).toBeLessThan(1e-6);
     }
-    // h does not depend on λ (1e-5·RMS: the float32 bound above).
-    expect(maxAbsDifference(flat.h, choppy.h) / rms(flat.h)).toBeLessThan(1e-5);
+    // And the period does matter: at the same t the two differ.
+    expect(maxAbsDifference(fieldsAt(spectrum, 3.7).h, fieldsAt(doubled, 3.7).h) / rms(fieldsAt(spectrum, 3.7).h)).toBeGreaterThan(0.1);
   });
 });
 
 describe('CpuWaveFields physics: one travelling wave', () => {
-  // N = 64 over 100 m; T = 2000 s makes ω0 = 2π/T = 0.0031 rad/s, so rounding ω down to a multiple
-  // of ω0 changes the phase speed by < ω0/ω ≈ 0.2% for these modes.
-  const deep = params({ resolution: 64, patchSize: 100, repeatPeriod: 2000 });
-  const shallow = params({ resolution: 64, patchSize: 100, repeatPeriod: 2000, depth: 3 });
+  // N = 64 over 100 m; T = 2000 s makes ω0 = 2π/T = 0.0031 rad/s, so rounding ω to the nearest
+  // multiple of ω0 changes the phase speed by < (ω0/2)/ω ≈ 0.1% for these modes.
+  const deep = params({ resolution: 64, patchSizes: [100], repeatPeriod: 2000 });
+  const shallow = params({ resolution: 64, patchSizes: [100], repeatPeriod: 2000, depth: 3 });
   const n = 64;
   const dx = 100 / n;
 
@@ -325,15 +359,17 @@ describe('CpuWaveFields physics: one travelling wave', () => {
   for (const p of [deep, shallow]) {
     for (const [i, j] of modes) {
       it(`moves at the phase speed √(g·tanh(kd)/k), against q: mode (${i}, ${j}), depth ${p.depth}`, () => {
-        const spectrum = singleMode(createInitialSpectrum(p), i, j, [0.3, -0.2]);
-        const qx = (2 * Math.PI * (i < n / 2 ? i : i - n)) / p.patchSize;
-        const qz = (2 * Math.PI * (j < n / 2 ? j : j - n)) / p.patchSize;
+        const spectrum = singleMode(phillipsCascade(p), i, j, [0.3, -0.2]);
+        const T = spectrum.repeatPeriod;
+        expect(T).toBe(p.repeatPeriod); // 2000 s already keeps every mode within 1 %: not doubled
+        const qx = (2 * Math.PI * (i < n / 2 ? i : i - n)) / 100;
+        const qz = (2 * Math.PI * (j < n / 2 ? j : j - n)) / 100;
         const k = Math.hypot(qx, qz);
         const omegaTrue = Math.sqrt(G * k * Math.tanh(k * p.depth)); // tanh(∞) = 1
         const t1 = 0.3;
         const t2 = 1.5; // the crest moves ~7 m, under half a wavelength: the phase difference is unambiguous
-        const phase1 = projectionPhase(fieldsAt(spectrum, 1, p.repeatPeriod, t1).h, qx, qz);
-        const phase2 = projectionPhase(fieldsAt(spectrum, 1, p.repeatPeriod, t2).h, qx, qz);
+        const phase1 = projectionPhase(fieldsAt(spectrum, t1).h, qx, qz);
+        const phase2 = projectionPhase(fieldsAt(spectrum, t2).h, qx, qz);
         let dPhase = phase2 - phase1;
         dPhase -= 2 * Math.PI * Math.round(dPhase / (2 * Math.PI)); // into (−π, π]
         // Crest at q·x = −phase, so along q̂ it moves by −ΔΦ/|q|.
@@ -343,21 +379,21 @@ describe('CpuWaveFields physics: one travelling wave', () => {
         // makes the part held in h̃0(−q) travel towards +q̂. (With the symmetric Phillips spectrum,
         // waves therefore run both with and against the wind.)
         expect(velocityAlongQ).toBeLessThan(0);
-        // Speed: ω/k within 1% (quantization of ω costs < 0.2%, the phase measurement ~1e-7).
+        // Speed: ω/k within 1% (quantization of ω costs < 0.1%, the phase measurement ~1e-7).
         const speed = -velocityAlongQ;
         expect(Math.abs(speed / (omegaTrue / k) - 1)).toBeLessThan(0.01);
         if (p.depth === Infinity) expect(Math.abs(speed / Math.sqrt(G / k) - 1)).toBeLessThan(0.01);
-        // And ω is exactly a multiple of 2π/T, rounded down (1e-3 of a step: phase noise ~1e-7·T/Δt).
-        const stepsPerPeriod = ((-velocityAlongQ * k) * p.repeatPeriod) / (2 * Math.PI);
+        // And ω is exactly a multiple of 2π/T, the nearest one (1e-3 of a step: phase noise ~1e-7·T/Δt).
+        const stepsPerPeriod = (-velocityAlongQ * k * T) / (2 * Math.PI);
         expect(Math.abs(stepsPerPeriod - Math.round(stepsPerPeriod))).toBeLessThan(1e-3);
-        expect(Math.round(stepsPerPeriod)).toBe(Math.floor((omegaTrue * p.repeatPeriod) / (2 * Math.PI)));
+        expect(Math.round(stepsPerPeriod)).toBe(Math.round((omegaTrue * T) / (2 * Math.PI)));
       });
     }
   }
 
-  it('is a cosine of amplitude 2|a| with no horizontal motion when λ = 0', () => {
-    const spectrum = singleMode(createInitialSpectrum(deep), 4, 0, [0.5, 0]);
-    const f = fieldsAt(spectrum, 0, deep.repeatPeriod, 0);
+  it('is a cosine of amplitude 2|a|, moving nothing sideways once scaled by λ = 0', () => {
+    const spectrum = singleMode(phillipsCascade(deep), 4, 0, [0.5, 0]);
+    const f = withChoppiness(fieldsAt(spectrum, 0), 0);
     const k = (2 * Math.PI * 4) / 100;
     let worst = 0;
     for (let p = 0; p < n * n; p++) {
@@ -366,54 +402,55 @@ describe('CpuWaveFields physics: one travelling wave', () => {
     expect(worst).toBeLessThan(1e-6); // float32 fields of amplitude 1: rounding ~1e-7
   });
 
-  it('with choppiness > 0 sharpens crests like a Gerstner wave: Dx = −λ·sin(kx) for h = cos(kx)', () => {
-    const lambda = 1.5;
-    const spectrum = singleMode(createInitialSpectrum(deep), 4, 0, [0.5, 0]); // h = cos(kx) at t = 0
-    const f = fieldsAt(spectrum, lambda, deep.repeatPeriod, 0);
-    const k = (2 * Math.PI * 4) / 100;
-    const crest = 0; // texel 0: x = 0, h = 1
-    const trough = n / 8; // half a wavelength (16 texels) later: h = −1
-    // Tolerances 1e-6: float32 fields of amplitude ≤ 1.5 (rounding ≤ ~1e-7).
-    expect(Math.abs(f.h[crest] - 1)).toBeLessThan(1e-6);
-    expect(Math.abs(f.h[trough] + 1)).toBeLessThan(1e-6);
-    // The crest itself does not move sideways; its neighbours move towards it.
-    expect(Math.abs(f.Dx[crest])).toBeLessThan(1e-6);
-    expect(f.Dx[crest + 1]).toBeLessThan(0);
-    expect(f.Dx[n - 1]).toBeGreaterThan(0);
-    // Compressed at the crest, stretched at the trough.
-    expect(1 + f.dDxdx[crest]).toBeLessThan(1);
-    expect(1 + f.dDxdx[trough]).toBeGreaterThan(1);
-    expect(Math.abs(f.dDxdx[crest] + lambda * k)).toBeLessThan(1e-6);
-    expect(Math.abs(f.dDxdx[trough] - lambda * k)).toBeLessThan(1e-6);
-    // The same, from the displaced points themselves: spacing < Δx at the crest, > Δx at the trough.
-    expect(dx + f.Dx[crest + 1] - f.Dx[crest]).toBeLessThan(dx);
-    expect(dx + f.Dx[trough + 1] - f.Dx[trough]).toBeGreaterThan(dx);
-    // The Gerstner wave x' = x − λ·sin(kx), y = cos(kx), everywhere; no motion along z.
-    let worst = 0;
-    for (let p = 0; p < n * n; p++) {
-      const x = (p % n) * dx;
-      worst = Math.max(
-        worst,
-        Math.abs(f.Dx[p] + lambda * Math.sin(k * x)),
-        Math.abs(f.dDxdx[p] + lambda * k * Math.cos(k * x)),
-        Math.abs(f.Dz[p]),
-        Math.abs(f.dDzdz[p]),
-        Math.abs(f.dDxdz[p]),
-      );
-    }
-    expect(worst).toBeLessThan(1e-6);
-  });
+  for (const lambda of [0.5, 1, 1.5]) {
+    it(`scaled by λ = ${lambda} sharpens crests like a Gerstner wave: Dx = −λ·sin(kx) for h = cos(kx)`, () => {
+      const spectrum = singleMode(phillipsCascade(deep), 4, 0, [0.5, 0]); // h = cos(kx) at t = 0
+      const f = withChoppiness(fieldsAt(spectrum, 0), lambda);
+      const k = (2 * Math.PI * 4) / 100;
+      const crest = 0; // texel 0: x = 0, h = 1
+      const trough = n / 8; // half a wavelength (16 texels) later: h = −1
+      // Tolerances 1e-6: float32 fields of amplitude ≤ 1.5 (rounding ≤ ~1e-7).
+      expect(Math.abs(f.h[crest] - 1)).toBeLessThan(1e-6);
+      expect(Math.abs(f.h[trough] + 1)).toBeLessThan(1e-6);
+      // The crest itself does not move sideways; its neighbours move towards it.
+      expect(Math.abs(f.Dx[crest])).toBeLessThan(1e-6);
+      expect(f.Dx[crest + 1]).toBeLessThan(0);
+      expect(f.Dx[n - 1]).toBeGreaterThan(0);
+      // Compressed at the crest, stretched at the trough.
+      expect(1 + f.dDxdx[crest]).toBeLessThan(1);
+      expect(1 + f.dDxdx[trough]).toBeGreaterThan(1);
+      expect(Math.abs(f.dDxdx[crest] + lambda * k)).toBeLessThan(1e-6);
+      expect(Math.abs(f.dDxdx[trough] - lambda * k)).toBeLessThan(1e-6);
+      // The same, from the displaced points themselves: spacing < Δx at the crest, > Δx at the trough.
+      expect(dx + f.Dx[crest + 1] - f.Dx[crest]).toBeLessThan(dx);
+      expect(dx + f.Dx[trough + 1] - f.Dx[trough]).toBeGreaterThan(dx);
+      // The Gerstner wave x' = x − λ·sin(kx), y = cos(kx), everywhere; no motion along z.
+      let worst = 0;
+      for (let p = 0; p < n * n; p++) {
+        const x = (p % n) * dx;
+        worst = Math.max(
+          worst,
+          Math.abs(f.Dx[p] + lambda * Math.sin(k * x)),
+          Math.abs(f.dDxdx[p] + lambda * k * Math.cos(k * x)),
+          Math.abs(f.Dz[p]),
+          Math.abs(f.dDzdz[p]),
+          Math.abs(f.dDxdz[p]),
+        );
+      }
+      expect(worst).toBeLessThan(1e-6);
+    });
+  }
 });
 
 describe('CpuWaveFields physics: derivatives against finite differences on a smooth sea', () => {
   // N = 128 over 100 m, Δx = 0.78 m, small-wave cutoff ℓ = 4·Δx: modes with k·Δx ≳ 1 are damped by
   // exp(−k²ℓ²/2) ≤ e^{−8}, so central differences resolve the sea.
-  const p = params({ resolution: 128, patchSize: 100, smallWaveCutoff: 400 / 128, windSpeed: 12, windDirection: 30 });
+  const p = params({ resolution: 128, patchSizes: [100], smallWaveCutoff: 400 / 128, windSpeed: 12, windDirection: 30 });
   const n = p.resolution;
-  const dx = p.patchSize / n;
-  const spectrum = createInitialSpectrum(p);
+  const dx = 100 / n;
+  const spectrum = phillipsCascade(p);
   const t = 2.5;
-  const hTilde = evolvedSpectrum(spectrum, p.repeatPeriod, t);
+  const hTilde = evolvedSpectrum(spectrum, spectrum.repeatPeriod, t);
 
   /** Central difference of f along x or z on the periodic grid. */
   function centralDifference(f: Float64Array, along: 'x' | 'z'): Float64Array {
@@ -449,8 +486,8 @@ describe('CpuWaveFields physics: derivatives against finite differences on a smo
   }
 
   it('∂h/∂x and ∂h/∂z equal central differences of h within the k²Δx²/6 truncation bound', () => {
-    const f = fieldsAt(spectrum, 1, p.repeatPeriod, t);
-    const spectra = fieldSpectra(spectrum, 1, hTilde);
+    const f = fieldsAt(spectrum, t);
+    const spectra = fieldSpectra(spectrum, hTilde);
     for (const [field, along] of [
       ['dhdx', 'x'],
       ['dhdz', 'z'],
@@ -469,10 +506,11 @@ describe('CpuWaveFields physics: derivatives against finite differences on a smo
     }
   });
 
-  it('the Jacobian (1 + ∂Dx/∂x)(1 + ∂Dz/∂z) − (∂Dx/∂z)² is that of the displaced grid x + D', () => {
+  it('the Jacobian (1 + λ∂Dx/∂x)(1 + λ∂Dz/∂z) − (λ∂Dx/∂z)² is that of the displaced grid x + λD', () => {
     const lambda = 2.5; // makes J range over about [0.66, 1.49] for this sea
-    const f = fieldsAt(spectrum, lambda, p.repeatPeriod, t);
-    const spectra = fieldSpectra(spectrum, lambda, hTilde);
+    // The λ = 1 fields scaled by λ, as the surface scales them.
+    const f = withChoppiness(fieldsAt(spectrum, t), lambda);
+    const spectra = spectraWithChoppiness(fieldSpectra(spectrum, hTilde), lambda);
     const analytic = new Float64Array(n * n);
     for (let q = 0; q < n * n; q++) analytic[q] = (1 + f.dDxdx[q]) * (1 + f.dDzdz[q]) - f.dDxdz[q] ** 2;
     // Finite-difference Jacobian of (x, z) → (x + Dx, z + Dz); ∂Dz/∂x comes from Dz itself, which
@@ -514,7 +552,7 @@ describe('CpuWaveFields robustness', () => {
   ] as const) {
     it(`gives finite fields for ${name}`, () => {
       const p = params(changes);
-      const waves = new CpuWaveFields(createInitialSpectrum(p), p.choppiness, p.repeatPeriod);
+      const waves = new CpuWaveFields(phillipsCascade(p));
       waves.update(5.3);
       expect(waves.displacement.every(Number.isFinite)).toBe(true);
       expect(waves.derivatives.every(Number.isFinite)).toBe(true);
@@ -526,4 +564,18 @@ describe('CpuWaveFields robustness', () => {
       }
     }, 30_000);
   }
+
+  it('gives finite, nonzero fields for every cascade of the default sea (Phillips Ψ over the default patches)', () => {
+    const p = { ...DEFAULT_PARAMETERS, spectrum: 'phillips' as const };
+    const largest = p.patchSizes[p.patchSizes.length - 1];
+    const spectra = createCascadeSpectra(p, (kx, kz) => 2 * phillips(kx, kz, p) * (largest / (2 * Math.PI)) ** 2);
+    expect(spectra).toHaveLength(3);
+    for (const spectrum of spectra) {
+      const waves = new CpuWaveFields(spectrum);
+      waves.update(1e7 + 5.3);
+      expect(waves.displacement.every(Number.isFinite), `${spectrum.patchSize} m`).toBe(true);
+      expect(waves.derivatives.every(Number.isFinite), `${spectrum.patchSize} m`).toBe(true);
+      expect(rms(waves.displacement), `${spectrum.patchSize} m`).toBeGreaterThan(0);
+    }
+  }, 30_000);
 });

@@ -1,6 +1,7 @@
 /**
  * Dispersion relation, frequency quantization, time wrapping and the phase table, each against the
- * formula it implements (Tessendorf 2001, eqs. 14, 15, 17) evaluated independently here.
+ * formula it implements (Tessendorf 2001, eqs. 14, 15, 17; ω rounded to the nearest multiple of
+ * 2π/T rather than down) evaluated independently here.
  */
 import { describe, expect, it } from 'vitest';
 import {
@@ -73,7 +74,9 @@ describe('angularFrequency', () => {
 });
 
 describe('frequencyIndex', () => {
-  it('rounds ω down to a multiple of 2π/T: m·2π/T ≤ ω < (m+1)·2π/T', () => {
+  it('rounds ω to the nearest multiple of 2π/T: |m·2π/T − ω| ≤ π/T', () => {
+    let roundedUp = 0;
+    let roundedDown = 0;
     for (const repeatPeriod of [1, 17.3, 200, 2000, 12345]) {
       for (const depth of [Infinity, 3]) {
         for (const k of WAVENUMBERS) {
@@ -82,12 +85,26 @@ describe('frequencyIndex', () => {
           expect(m).toBeGreaterThanOrEqual(0);
           const omega = Math.sqrt(G * k * Math.tanh(k * depth)); // tanh(∞) = 1
           const step = (2 * Math.PI) / repeatPeriod;
-          // The bounds are relative 1e-12 loose for rounding in ω·T/2π (~1e-16 relative of
-          // values up to ~1e6), which can only matter when ω sits on a multiple of the step.
-          expect(m * step).toBeLessThanOrEqual(omega * (1 + 1e-12));
-          expect(omega).toBeLessThan((m + 1) * step * (1 + 1e-12));
+          // Half a step, loosened by relative 1e-12 for rounding in ω·T/2π (~1e-16 relative of
+          // values up to ~1e6), which can only matter when ω sits halfway between two multiples.
+          expect(Math.abs(m * step - omega)).toBeLessThanOrEqual((step / 2) * (1 + 1e-12) + omega * 1e-12);
+          if (m * step > omega) roundedUp++;
+          else if (m * step < omega) roundedDown++;
         }
       }
+    }
+    // Both directions occur: this is rounding to the nearest, not floor (Tessendorf's) or ceil.
+    expect(roundedUp).toBeGreaterThan(100);
+    expect(roundedDown).toBeGreaterThan(100);
+  });
+
+  it('halves the largest phase-speed error of rounding down: at most π/T over ω', () => {
+    // The relative phase-speed error of a mode is |m·2π/T − ω|/ω ≤ (π/T)/ω: 1 % once T ≥ π/(0.01·ω).
+    for (const k of [0.01, 0.1, 1, 10]) {
+      const omega = Math.sqrt(G * k);
+      const repeatPeriod = Math.PI / (0.01 * omega);
+      const m = frequencyIndex(k, { depth: Infinity, repeatPeriod });
+      expect(Math.abs((m * 2 * Math.PI) / repeatPeriod / omega - 1)).toBeLessThanOrEqual(0.01 * (1 + 1e-12));
     }
   });
 

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { cellsPerRingForViewport, createHorizonGridGeometry, RING_COUNT, RingFrames } from '../../src/render/horizonGrid';
+import { cellsPerRingForViewport, createHorizonGridGeometry, finestTexel, RING_COUNT, RingFrames, type LayerGrid } from '../../src/render/horizonGrid';
 import { SeededRandom } from '../../src/spectrum/random';
 
 describe('horizon grid geometry', () => {
@@ -23,7 +23,9 @@ describe('horizon grid geometry', () => {
 describe('RingFrames', () => {
   const cells = 64;
   const half = cells / 2;
-  const texel = 250 / 256;
+  // One 250 m layer of 256 texels (the old single patch), and the default three cascades.
+  const single: LayerGrid[] = [{ frame: { size: 250, resolution: 256 } }];
+  const cascades: LayerGrid[] = [457, 13.7, 79.3].map((size) => ({ frame: { size, resolution: 256 } }));
   const random = new SeededRandom(3);
   const cameras = Array.from({ length: 200 }, () => [
     (random.nextUniform() - 0.5) * 2e4,
@@ -33,11 +35,22 @@ describe('RingFrames', () => {
 
   it('snaps every ring centre to twice its cell size, so vertices sit on fixed world points', () => {
     const rings = new RingFrames();
-    for (const [x, y, z] of cameras) {
-      rings.update(x, z, y, 250, texel, cells);
+    for (const [x, y, z] of cameras) for (const layers of [single, cascades]) {
+      rings.update(x, z, y, layers, cells);
       for (let r = 0; r <= RING_COUNT; r++) {
-        const [cx, cz, cell] = rings.frames.subarray(4 * r, 4 * r + 3);
-        for (const c of [cx, cz]) expect(Math.abs(c / (2 * cell) - Math.round(c / (2 * cell)))).toBeLessThan(1e-4);
+        const [cx, cz, cell, level] = rings.frames.subarray(4 * r, 4 * r + 4);
+        // The centres are snapped in double precision and stored as float32 for the shader. With
+        // the old dyadic texel (250/256 m) the float32 centres were exact multiples of 2·cell; with a
+        // texel like 13.7/256 m they are off by float32 rounding, ≤ 2^−24·|c| (≤ 6e-4 m at 10 km),
+        // against a whole cell (≥ 0.1 m here) for a centre that is not snapped. So: the distance to
+        // the nearest multiple of the exact 2·cell (texel·2^(level+1), level an exact integer) must
+        // be within that rounding, plus 1e-4 of a cell for the division.
+        const exactCell = finestTexel(layers) * 2 ** level;
+        expect(Math.abs(cell / exactCell - 1)).toBeLessThan(1.2e-7);
+        for (const c of [cx, cz]) {
+          const off = Math.abs(c - Math.round(c / (2 * exactCell)) * 2 * exactCell);
+          expect(off).toBeLessThanOrEqual(2 ** -24 * Math.abs(c) + 1e-4 * exactCell);
+        }
         // The camera is inside its finest rings' central cells.
         if (r === 0) expect(Math.max(Math.abs(x - cx), Math.abs(z - cz))).toBeLessThanOrEqual(2 * cell * 1.0001);
       }
@@ -48,14 +61,16 @@ describe('RingFrames', () => {
     const rings = new RingFrames();
     // Ring r ≥ 1 draws every cell except those whose two coordinates lie in [−half/2 + 1, half/2 − 1]
     // (createHorizonGridGeometry); ring r − 1 covers centre_{r−1} ± half · cell_{r−1}.
-    for (const [x, y, z] of cameras) {
-      rings.update(x, z, y, 250, texel, cells);
+    for (const [x, y, z] of cameras) for (const layers of [single, cascades]) {
+      rings.update(x, z, y, layers, cells);
       for (let r = 1; r < RING_COUNT; r++) {
         const [cx, cz, cell] = rings.frames.subarray(4 * r, 4 * r + 3);
         const [ix, iz, innerCell] = rings.frames.subarray(4 * (r - 1), 4 * (r - 1) + 3);
         const holeLow = (-half / 2 + 1) * cell;
         const holeHigh = (half / 2) * cell; // far edge of the last hole cell
-        const slack = 1e-6 * cell;
+        // Float32 rounding of the stored centres and cells (see the test above): ≤ 2^−24 of each
+        // term, so 2^−22 of their sum bounds it; a ring misplaced by a cell breaks these by ≥ 0.1 m.
+        const slack = 2 ** -22 * (Math.abs(ix) + Math.abs(cx) + Math.abs(iz) + Math.abs(cz) + half * cell) + 1e-6 * cell;
         expect(ix - half * innerCell).toBeLessThanOrEqual(cx + holeLow + slack);
         expect(ix + half * innerCell).toBeGreaterThanOrEqual(cx + holeHigh - slack);
         expect(iz - half * innerCell).toBeLessThanOrEqual(cz + holeLow + slack);
@@ -70,8 +85,61 @@ describe('RingFrames', () => {
   it('reaches about a thousand camera heights away before the skirt', () => {
     const rings = new RingFrames();
     for (const height of [1, 10, 100, 2000]) {
-      rings.update(0, 0, height, 250, texel, cells);
-      expect(rings.farEdgeDistance).toBeGreaterThan(1000 * height);
+      for (const layers of [single, cascades]) {
+        rings.update(0, 0, height, layers, cells);
+        expect(rings.farEdgeDistance).toBeGreaterThan(1000 * height);
+      }
+    }
+  });
+
+  it('takes its finest cells from the finest layer’s texel, whatever the order of the layers', () => {
+    expect(finestTexel(single)).toBe(250 / 256);
+    expect(finestTexel(cascades)).toBe(13.7 / 256);
+    expect(finestTexel([{ frame: { size: 100, resolution: 64 } }, { frame: { size: 120, resolution: 1024 } }])).toBe(120 / 1024);
+    const rings = new RingFrames();
+    for (const [x, y, z] of cameras) {
+      for (const layers of [single, cascades, [...cascades].reverse()]) {
+        rings.update(x, z, y, layers, cells);
+        for (let r = 0; r <= RING_COUNT; r++) {
+          const [, , cell, level] = rings.frames.subarray(4 * r, 4 * r + 4);
+          // cell_r = texel·2^(level_r), level_r = level_0 + r, level_0 ≥ 0 (float32 storage: 1e-6).
+          expect(Number.isInteger(level) && level >= r).toBe(true);
+          expect(Math.abs(cell / (finestTexel(layers) * 2 ** level) - 1)).toBeLessThan(1e-6);
+        }
+        // Ring 0's cells are the finest texel·2^j with the smallest j ≥ 0 that keeps them at least
+        // max(1, height)/(cellsPerRing/8), so ring 0 covers about 8 camera heights.
+        const wanted = Math.max(1, y) / (cells / 8);
+        const cell0 = finestTexel(layers) * 2 ** rings.frames[3];
+        expect(cell0).toBeGreaterThanOrEqual(wanted * (1 - 1e-12));
+        if (rings.frames[3] > 0) expect(cell0 / 2).toBeLessThan(wanted);
+      }
+    }
+  });
+
+  it('gives each layer the texture coordinate of each ring centre, [ring · layers + layer]', () => {
+    const rings = new RingFrames();
+    for (const [x, y, z] of cameras.slice(0, 50)) {
+      for (const layers of [single, cascades]) {
+        rings.update(x, z, y, layers, cells);
+        expect(rings.uvOrigins).toHaveLength(2 * (RING_COUNT + 1) * layers.length);
+        for (let r = 0; r <= RING_COUNT; r++) {
+          // The centre as double precision would have it (cell sizes are texel·2^level: exact scaling).
+          const cell = finestTexel(layers) * 2 ** rings.frames[4 * r + 3];
+          const centre = [Math.floor(x / (2 * cell)) * 2 * cell, Math.floor(z / (2 * cell)) * 2 * cell];
+          layers.forEach(({ frame: { size, resolution } }, layer) => {
+            for (const axis of [0, 1]) {
+              const uv = rings.uvOrigins[2 * (r * layers.length + layer) + axis];
+              expect(uv >= 0 && uv < 1).toBe(true);
+              // uv·size ≡ centre + ½ texel (mod size): GL samples texel i at u = (i + ½)/N.
+              const want = centre[axis] / size + 0.5 / resolution;
+              let turns = uv - want;
+              turns -= Math.round(turns);
+              // float32 of a value in [0, 1): ≤ 6e-8; the double arithmetic is far finer.
+              expect(Math.abs(turns), `ring ${r}, layer ${layer}, axis ${axis}`).toBeLessThan(1.2e-7);
+            }
+          });
+        }
+      }
     }
   });
 });

@@ -1,11 +1,19 @@
 /**
  * The Phillips spectrum and the initial amplitudes h̃0 on the FFT grid (Tessendorf 2001, eqs.
  * 23–25), checked against the formulas evaluated independently here with Math.exp / Math.cos.
+ *
+ * createCascadeSpectra takes a wave-number spectrum Ψ and draws h̃0(k) = (ξr + i·ξi)·√(Ψ(−k)·Δk²/4).
+ * With Ψ = 2·P·(L/2π)² and one cascade of side L that is exactly the report's
+ * h̃0 = (ξr + i·ξi)·√(P/2) (P symmetric), so the report's tests run on phillipsCascade() below.
+ * Parameters are merged over the defaults without validation (parameters.test.ts checks that).
  */
 import { describe, expect, it } from 'vitest';
 import { angularFrequency, frequencyIndex } from '../../src/spectrum/dispersion';
-import { validateParameters, type SimulationParameters } from '../../src/parameters/parameters';
-import { createInitialSpectrum, phillips, signedFrequency, windUnitVector } from '../../src/spectrum/initialSpectrum';
+import { DEFAULT_PARAMETERS, type SimulationParameters } from '../../src/parameters/parameters';
+import { cascadeBands } from '../../src/spectrum/cascadeBands';
+import { SeededRandom } from '../../src/spectrum/random';
+import { createCascadeSpectra, signedFrequency, type InitialSpectrum, type WaveNumberSpectrum } from '../../src/spectrum/initialSpectrum';
+import { phillips, windUnitVector } from '../../src/spectrum/phillips';
 
 const G = 9.81;
 
@@ -25,8 +33,38 @@ function referencePhillips(kx: number, kz: number, p: SimulationParameters): num
   return ((p.amplitude * Math.exp(-1 / (k * L) ** 2)) / k ** 4) * cosine ** 2 * cutoff;
 }
 
+/**
+ * The report's setting: the Phillips model on one 250 m patch, 12 m/s wind, ℓ = 0.1 m (the
+ * defaults before cascades), with `changes` on top.
+ */
 function params(changes: Partial<SimulationParameters>): SimulationParameters {
-  return validateParameters(changes);
+  return {
+    ...DEFAULT_PARAMETERS,
+    spectrum: 'phillips',
+    patchSizes: [250],
+    windSpeed: 12,
+    smallWaveCutoff: 0.1,
+    ...changes,
+  };
+}
+
+/** Side of the single cascade of these parameters. */
+function patchOf(p: SimulationParameters): number {
+  if (p.patchSizes.length !== 1) throw new Error(`one cascade expected, got ${p.patchSizes}`);
+  return p.patchSizes[0];
+}
+
+/** Ψ = 2·P·(L/2π)² (m⁴), which makes one cascade of side L hold the report's h̃0. */
+function phillipsDensity(p: SimulationParameters): WaveNumberSpectrum {
+  const scale = 2 * (patchOf(p) / (2 * Math.PI)) ** 2;
+  return (kx, kz) => scale * phillips(kx, kz, p);
+}
+
+/** The single cascade of the report's Phillips spectrum. */
+function phillipsCascade(p: SimulationParameters): InitialSpectrum {
+  const spectra = createCascadeSpectra(p, phillipsDensity(p));
+  expect(spectra).toHaveLength(1);
+  return spectra[0];
 }
 
 describe('phillips', () => {
@@ -154,68 +192,98 @@ describe('signedFrequency', () => {
   });
 });
 
-describe('createInitialSpectrum', () => {
+describe('createCascadeSpectra with one Phillips cascade (the report’s h̃0)', () => {
   const cases = [
-    params({ resolution: 16, patchSize: 50, windDirection: 30, depth: 5, smallWaveCutoff: 0 }),
-    params({ resolution: 32, patchSize: 80, windDirection: -110, windSpeed: 20, seed: 9 }),
+    params({ resolution: 16, patchSizes: [50], windDirection: 30, depth: 5, smallWaveCutoff: 0 }),
+    params({ resolution: 32, patchSizes: [80], windDirection: -110, windSpeed: 20, seed: 9 }),
   ];
 
   it('stores (kx, kz, 1/|k|, m) per texel, with the Nyquist components of kx and kz set to 0', () => {
     for (const p of cases) {
       const n = p.resolution;
-      const { waveVectors } = createInitialSpectrum(p);
+      const L = patchOf(p);
+      const spectrum = phillipsCascade(p);
+      const { waveVectors, repeatPeriod } = spectrum;
+      // One cascade keeps everything: band [0, ∞), period T·2^j (cascadeBands.test.ts checks j).
+      expect(spectrum.band).toEqual({ patchSize: L, low: 0, high: Infinity });
+      expect(spectrum.patchSize).toBe(L);
+      expect(Number.isInteger(Math.log2(repeatPeriod / p.repeatPeriod))).toBe(true);
+      const wrong: string[] = [];
       for (let j = 0; j < n; j++) {
         for (let i = 0; i < n; i++) {
           const t = 4 * (j * n + i);
-          const kx = (2 * Math.PI * signed(i, n)) / p.patchSize;
-          const kz = (2 * Math.PI * signed(j, n)) / p.patchSize;
+          const kx = (2 * Math.PI * signed(i, n)) / L;
+          const kz = (2 * Math.PI * signed(j, n)) / L;
           const k = Math.hypot(kx, kz);
           // Float32 storage: relative ≤ 2^−24 ≈ 6e-8; 1.2e-7 also allows a double rounding.
           const close = (got: number, want: number) => Math.abs(got - want) <= 1.2e-7 * Math.abs(want);
-          if (i === n / 2) expect(waveVectors[t] === 0).toBe(true);
-          else expect(close(waveVectors[t], kx), `kx at ${i},${j}`).toBe(true);
-          if (j === n / 2) expect(waveVectors[t + 1] === 0).toBe(true);
-          else expect(close(waveVectors[t + 1], kz), `kz at ${i},${j}`).toBe(true);
+          const problems: string[] = [];
+          if (i === n / 2 ? waveVectors[t] !== 0 : !close(waveVectors[t], kx)) problems.push('kx');
+          if (j === n / 2 ? waveVectors[t + 1] !== 0 : !close(waveVectors[t + 1], kz)) problems.push('kz');
           // 1/|k| of the true k (Nyquist components included), 0 at k = 0.
-          if (k === 0) expect(waveVectors[t + 2]).toBe(0);
-          else expect(close(waveVectors[t + 2], 1 / k), `1/k at ${i},${j}`).toBe(true);
+          if (k === 0 ? waveVectors[t + 2] !== 0 : !close(waveVectors[t + 2], 1 / k)) problems.push('1/k');
           const m = waveVectors[t + 3];
-          expect(m).toBe(frequencyIndex(k, p));
-          // and independently: m·2π/T ≤ ω(k) < (m + 1)·2π/T (1e-12: rounding slack, as in dispersion.test.ts)
+          if (m !== frequencyIndex(k, { depth: p.depth, repeatPeriod })) problems.push('m');
+          // and independently: m·2π/T_c is ω(k) rounded to the nearest multiple of 2π/T_c,
+          // |m·2π/T_c − ω| ≤ π/T_c (1e-12: rounding slack, as in dispersion.test.ts)
           const omega = angularFrequency(k, p.depth);
-          expect((m * 2 * Math.PI) / p.repeatPeriod).toBeLessThanOrEqual(omega * (1 + 1e-12));
-          expect(omega).toBeLessThan(((m + 1) * 2 * Math.PI) / p.repeatPeriod);
+          if (Math.abs((m * 2 * Math.PI) / repeatPeriod - omega) > (Math.PI / repeatPeriod) * (1 + 1e-12)) problems.push('ω');
           // The opposite texel holds −k (exactly: float32 negation) and the same m.
           const o = 4 * (((n - j) % n) * n + ((n - i) % n));
-          expect(waveVectors[o] === -waveVectors[t] && waveVectors[o + 1] === -waveVectors[t + 1]).toBe(true);
-          expect(waveVectors[o + 2]).toBe(waveVectors[t + 2]);
-          expect(waveVectors[o + 3]).toBe(m);
+          if (waveVectors[o] !== -waveVectors[t] || waveVectors[o + 1] !== -waveVectors[t + 1]) problems.push('−k');
+          if (waveVectors[o + 2] !== waveVectors[t + 2] || waveVectors[o + 3] !== m) problems.push('1/k or m at −k');
+          if (problems.length > 0) wrong.push(`(${i}, ${j}): ${problems.join(', ')}`);
+        }
+      }
+      expect(wrong).toEqual([]);
+    }
+  });
+
+  it('stores Ψ = 2·P·(L/2π)² per texel (float32 of the independent formula)', () => {
+    for (const p of cases) {
+      const n = p.resolution;
+      const L = patchOf(p);
+      const scale = 2 * (L / (2 * Math.PI)) ** 2;
+      const spectrum = phillipsCascade(p);
+      for (let j = 0; j < n; j++) {
+        for (let i = 0; i < n; i++) {
+          const kx = (2 * Math.PI * signed(i, n)) / L;
+          const kz = (2 * Math.PI * signed(j, n)) / L;
+          const want = scale * referencePhillips(kx, kz, p);
+          // Float32 rounding (≤ 6e-8 relative) plus the cos² term's ~2e-15 absolute (see above).
+          const slack = 1.2e-7 * want + (scale * 2e-15 * p.amplitude) / Math.max(kx * kx + kz * kz, 1e-300) ** 2;
+          expect(Math.abs(spectrum.density[j * n + i] - want)).toBeLessThanOrEqual(slack);
         }
       }
     }
   });
 
-  it('stores P per texel (float32 of the independent formula)', () => {
+  it('holds h̃0 = (ξr + i·ξi)·√(P/2), the report’s amplitudes, with ξ the seed’s deviates in texel order', () => {
     for (const p of cases) {
       const n = p.resolution;
-      const spectrum = createInitialSpectrum(p);
+      const L = patchOf(p);
+      const { amplitudes } = phillipsCascade(p);
+      const random = new SeededRandom(p.seed);
+      let worst = 0;
       for (let j = 0; j < n; j++) {
         for (let i = 0; i < n; i++) {
-          const kx = (2 * Math.PI * signed(i, n)) / p.patchSize;
-          const kz = (2 * Math.PI * signed(j, n)) / p.patchSize;
-          const want = referencePhillips(kx, kz, p);
-          // Float32 rounding (≤ 6e-8 relative) plus the cos² term's ~2e-15 absolute (see above).
-          const slack = 1.2e-7 * want + (2e-15 * p.amplitude) / Math.max(kx * kx + kz * kz, 1e-300) ** 2;
-          expect(Math.abs(spectrum.phillips[j * n + i] - want)).toBeLessThanOrEqual(slack);
+          const t = 4 * (j * n + i);
+          const P = referencePhillips((2 * Math.PI * signed(i, n)) / L, (2 * Math.PI * signed(j, n)) / L, p);
+          const scale = Math.sqrt(P / 2);
+          const [xr, xi] = [random.nextNormal(), random.nextNormal()];
+          // Float32 storage, relative 6e-8 of |h̃0|, plus P's own ~1e-13 (see the formula test).
+          const slack = 1.2e-7 * scale * Math.max(Math.abs(xr), Math.abs(xi), 1) + 1e-300;
+          worst = Math.max(worst, (Math.abs(amplitudes[t] - xr * scale) + Math.abs(amplitudes[t + 1] - xi * scale)) / slack);
         }
       }
+      expect(worst).toBeLessThanOrEqual(1);
     }
   });
 
   it('pairs each texel k with the conjugate of h̃0 at −k, texel ((N−i) mod N, (N−j) mod N)', () => {
     for (const p of cases) {
       const n = p.resolution;
-      const { amplitudes } = createInitialSpectrum(p);
+      const { amplitudes } = phillipsCascade(p);
       let nonzero = 0;
       for (let j = 0; j < n; j++) {
         for (let i = 0; i < n; i++) {
@@ -235,12 +303,12 @@ describe('createInitialSpectrum', () => {
 
   it('is bit-identical for the same seed and different for another seed', () => {
     const p = params({ resolution: 64, seed: 12345 });
-    const a = createInitialSpectrum(p);
-    const b = createInitialSpectrum({ ...p });
-    for (const key of ['amplitudes', 'waveVectors', 'phillips'] as const) {
+    const a = phillipsCascade(p);
+    const b = phillipsCascade({ ...p });
+    for (const key of ['amplitudes', 'waveVectors', 'density'] as const) {
       expect(new Uint32Array(a[key].buffer)).toEqual(new Uint32Array(b[key].buffer));
     }
-    const other = createInitialSpectrum({ ...p, seed: 12346 });
+    const other = phillipsCascade({ ...p, seed: 12346 });
     let differing = 0;
     for (let t = 0; t < 64 * 64; t++) if (other.amplitudes[4 * t] !== a.amplitudes[4 * t]) differing++;
     expect(differing).toBe(64 * 64 - 1); // all but k = 0, where h̃0 = 0 for any seed
@@ -250,14 +318,14 @@ describe('createInitialSpectrum', () => {
   it('draws the same normal deviates whatever the spectrum, so a wind change keeps the sea’s phases', () => {
     const calm = params({ resolution: 32, windSpeed: 5, windDirection: 10, seed: 4 });
     const storm = params({ resolution: 32, windSpeed: 25, windDirection: 70, seed: 4 });
-    const a = createInitialSpectrum(calm);
-    const b = createInitialSpectrum(storm);
+    const a = phillipsCascade(calm);
+    const b = phillipsCascade(storm);
     let checked = 0;
     for (let t = 0; t < 32 * 32; t++) {
       const i = t % 32;
       const j = Math.floor(t / 32);
-      const kx = (2 * Math.PI * signed(i, 32)) / calm.patchSize;
-      const kz = (2 * Math.PI * signed(j, 32)) / calm.patchSize;
+      const kx = (2 * Math.PI * signed(i, 32)) / patchOf(calm);
+      const kz = (2 * Math.PI * signed(j, 32)) / patchOf(calm);
       const scaleA = Math.sqrt(phillips(kx, kz, calm) / 2);
       const scaleB = Math.sqrt(phillips(kx, kz, storm) / 2);
       if (!(scaleA > 1e-15 && scaleB > 1e-15)) continue;
@@ -275,7 +343,7 @@ describe('createInitialSpectrum', () => {
   it('has ⟨|h̃0|²⟩ = P: mean of |h̃0|²/P over 65 000 texels is 1 within 5 standard errors', () => {
     const p = params({ resolution: 256, seed: 2024 });
     const n = p.resolution;
-    const { amplitudes } = createInitialSpectrum(p);
+    const { amplitudes } = phillipsCascade(p);
     let count = 0;
     let sumBoth = 0;
     let sumReal = 0;
@@ -283,7 +351,7 @@ describe('createInitialSpectrum', () => {
     let sumCross = 0;
     for (let j = 0; j < n; j++) {
       for (let i = 0; i < n; i++) {
-        const dk = (2 * Math.PI) / p.patchSize;
+        const dk = (2 * Math.PI) / patchOf(p);
         const P = referencePhillips(dk * signed(i, n), dk * signed(j, n), p);
         if (!(P > 1e-50)) continue; // keep h̃0 well inside float32's normal range
         const t = 4 * (j * n + i);
@@ -304,27 +372,27 @@ describe('createInitialSpectrum', () => {
     expect(Math.abs(sumImag / count - 1)).toBeLessThan(5 * Math.sqrt(2 / count));
     // ξr·ξi: mean 0, variance 1 (independent real and imaginary parts).
     expect(Math.abs(sumCross / count)).toBeLessThan(5 / Math.sqrt(count));
-  });
+  }, 30_000);
 
   it('has no NaN or Infinity for no wind, a 60 m/s gale, and N = 1024 (built in well under 5 s)', () => {
     for (const p of [params({ windSpeed: 0 }), params({ windSpeed: 60 }), params({ resolution: 1024 })]) {
       const start = performance.now();
-      const spectrum = createInitialSpectrum(p);
+      const spectrum = phillipsCascade(p);
       const seconds = (performance.now() - start) / 1000;
       // ~0.4 s for N = 1024 on a laptop; 5 s flags a complexity regression without flaking.
       expect(seconds).toBeLessThan(5);
       const n = p.resolution;
       expect(spectrum.resolution).toBe(n);
-      expect(spectrum.patchSize).toBe(p.patchSize);
+      expect(spectrum.patchSize).toBe(patchOf(p));
       expect(spectrum.amplitudes.length).toBe(4 * n * n);
       expect(spectrum.waveVectors.length).toBe(4 * n * n);
-      expect(spectrum.phillips.length).toBe(n * n);
-      for (const array of [spectrum.amplitudes, spectrum.waveVectors, spectrum.phillips]) {
+      expect(spectrum.density.length).toBe(n * n);
+      for (const array of [spectrum.amplitudes, spectrum.waveVectors, spectrum.density]) {
         expect(array.every(Number.isFinite)).toBe(true);
       }
       if (p.windSpeed === 0) {
         expect(spectrum.amplitudes.every((x) => x === 0)).toBe(true);
-        expect(spectrum.phillips.every((x) => x === 0)).toBe(true);
+        expect(spectrum.density.every((x) => x === 0)).toBe(true);
       } else {
         expect(spectrum.amplitudes.some((x) => x !== 0)).toBe(true);
       }
@@ -334,7 +402,84 @@ describe('createInitialSpectrum', () => {
 
 describe('wind direction edge case found in review', () => {
   it('a tiny negative wind direction builds a spectrum', () => {
-    const params = validateParameters({ resolution: 16, windDirection: -1e-20 });
-    expect(() => createInitialSpectrum(params)).not.toThrow();
+    expect(() => phillipsCascade(params({ resolution: 16, windDirection: -1e-20 }))).not.toThrow();
+  });
+});
+
+describe('createCascadeSpectra with several cascades', () => {
+  // A spectrum that is not symmetric, so Ψ(k) and Ψ(−k) differ: waves travel towards +x mostly.
+  const lopsided: WaveNumberSpectrum = (kx, kz) => {
+    const k2 = kx * kx + kz * kz;
+    return k2 === 0 ? 0 : (Math.exp(-k2 / 400) * (1.5 + Math.tanh(kx))) / (1 + k2);
+  };
+  const p = params({ resolution: 32, patchSizes: [3, 15, 60], seed: 31, depth: 7 });
+
+  it('draws h̃0(k) = (ξr + i·ξi)·√(Ψ(−k)·Δk²/4) inside each band, largest patch first, two deviates per texel', () => {
+    const spectra = createCascadeSpectra(p, lopsided);
+    const n = p.resolution;
+    expect(spectra.map((s) => s.patchSize)).toEqual([3, 15, 60]);
+    const bands = cascadeBands(p.patchSizes, p.resolution);
+    const random = new SeededRandom(p.seed);
+    // Largest first: cascade 2, then 1, then 0, each drawing 2·N² deviates in texel order.
+    for (const c of [2, 1, 0]) {
+      const s = spectra[c];
+      expect(s.band).toEqual(bands[c]);
+      const dk = (2 * Math.PI) / p.patchSizes[c];
+      let worst = 0;
+      let kept = 0;
+      let zeroOutside = true;
+      for (let j = 0; j < n; j++) {
+        for (let i = 0; i < n; i++) {
+          const t = j * n + i;
+          const [kx, kz] = [dk * signed(i, n), dk * signed(j, n)];
+          const k = Math.sqrt(kx * kx + kz * kz);
+          const [xr, xi] = [random.nextNormal(), random.nextNormal()];
+          if (!(k >= bands[c].low && k < bands[c].high)) {
+            zeroOutside &&= s.amplitudes[4 * t] === 0 && s.amplitudes[4 * t + 1] === 0 && s.density[t] === 0;
+            continue;
+          }
+          kept++;
+          const scale = Math.sqrt((lopsided(-kx, -kz) * dk * dk) / 4);
+          // Float32 storage: 6e-8 relative; the slack is relative to the larger of the two parts.
+          const slack = 1.2e-7 * scale * Math.max(Math.abs(xr), Math.abs(xi), 1) + 1e-300;
+          worst = Math.max(worst, (Math.abs(s.amplitudes[4 * t] - xr * scale) + Math.abs(s.amplitudes[4 * t + 1] - xi * scale)) / slack);
+          // Ψ(k) itself, as float32, for inspection.
+          worst = Math.max(worst, Math.abs(s.density[t] - lopsided(kx, kz)) / (6e-8 * lopsided(kx, kz) + 1e-300));
+        }
+      }
+      expect(kept, `cascade ${c}`).toBeGreaterThan(20);
+      expect(zeroOutside, `cascade ${c}`).toBe(true);
+      expect(worst, `cascade ${c}`).toBeLessThanOrEqual(1);
+    }
+  });
+
+  it('pairs each texel with the conjugate of h̃0 at −k in every cascade', () => {
+    const n = p.resolution;
+    for (const { amplitudes } of createCascadeSpectra(p, lopsided)) {
+      let unpaired = 0;
+      for (let j = 0; j < n; j++) {
+        for (let i = 0; i < n; i++) {
+          const t = 4 * (j * n + i);
+          const o = 4 * (((n - j) % n) * n + ((n - i) % n));
+          if (amplitudes[t + 2] !== amplitudes[o] || amplitudes[t + 3] !== -amplitudes[o + 1]) unpaired++;
+        }
+      }
+      expect(unpaired).toBe(0);
+    }
+  });
+
+  it('gives the largest cascade the deviates a single cascade of that size gets, so a seed keeps its swell', () => {
+    const [, , coarsest] = createCascadeSpectra(p, lopsided);
+    const [alone] = createCascadeSpectra({ ...p, patchSizes: [60] }, lopsided);
+    const n = p.resolution;
+    let compared = 0;
+    for (let t = 0; t < n * n; t++) {
+      if (coarsest.density[t] === 0) continue;
+      // Same deviate, same Ψ, same Δk: bit-identical.
+      expect(coarsest.amplitudes[4 * t]).toBe(alone.amplitudes[4 * t]);
+      expect(coarsest.amplitudes[4 * t + 1]).toBe(alone.amplitudes[4 * t + 1]);
+      compared++;
+    }
+    expect(compared).toBeGreaterThan(50);
   });
 });

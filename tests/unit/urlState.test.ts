@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { DEFAULT_PARAMETERS } from '../../src/parameters/parameters';
+import { DEFAULT_PARAMETERS, SIMULATION_OPTIONS } from '../../src/parameters/parameters';
 import {
   assignState,
   DEFAULT_STATE,
@@ -16,10 +16,19 @@ import {
 function changed(): AppState {
   return {
     ...defaultState(),
+    spectrum: 'tma',
     windSpeed: 7.5,
     windDirection: -45,
+    fetch: 250,
+    peakEnhancement: 2.5,
+    spreading: 'cos-2s',
+    spreadingExponent: 24,
+    swellHeight: 1.5,
+    swellPeriod: 14,
+    swellDirection: -20,
+    swellElongation: 0.3,
     amplitude: 9e-7,
-    patchSize: 200,
+    patchSizes: [20, 120, 600],
     resolution: 128,
     choppiness: 1.25,
     smallWaveCutoff: 0.05,
@@ -59,6 +68,8 @@ describe('serializeState / parseState', () => {
     const query = new URLSearchParams(serializeState(changed()));
     expect([...query.keys()]).toEqual(URL_KEYS);
     expect(query.get('depth')).toBe('35');
+    expect(query.get('patchSizes')).toBe('20,120,600');
+    expect(query.get('spectrum')).toBe('tma');
     expect(query.get('mode')).toBe('height');
     expect(query.get('paused')).toBe('1');
     expect(query.get('cam')).toBe('100.5,7.25,-30.125,170,-20.5');
@@ -71,6 +82,25 @@ describe('serializeState / parseState', () => {
     expect(parseState(query)).toEqual({ state: defaultState(), warnings: [] });
     expect(parseState('')).toEqual({ state: defaultState(), warnings: [] });
     expect(parseState('?')).toEqual({ state: defaultState(), warnings: [] });
+  });
+
+  it('has every simulation option as a URL key, first, in the table’s order', () => {
+    const keys = Object.keys(SIMULATION_OPTIONS);
+    expect(URL_KEYS.slice(0, keys.length)).toEqual(keys);
+  });
+
+  it('writes patch sizes as "13.7,79.3,457" and reads them back', () => {
+    expect(serializeState({ ...defaultState(), patchSizes: [10, 60, 350] })).toContain('patchSizes=10,60,350&');
+    expect(parseState('patchSizes=13.7,79.3,457')).toEqual({ state: defaultState(), warnings: [] });
+    const { state, warnings } = parseState('patchSizes=5,40');
+    expect(warnings).toEqual([]);
+    expect(state.patchSizes).toEqual([5, 40]);
+  });
+
+  it('warns that an old link’s patchSize is unknown and keeps the default cascades', () => {
+    const { state, warnings } = parseState('patchSize=250');
+    expect(warnings).toEqual([{ parameter: 'patchSize', message: expect.stringContaining('unknown') }]);
+    expect(state).toEqual(defaultState());
   });
 
   it('writes deep water as depth=deep and reads deep / Infinity', () => {
@@ -99,10 +129,19 @@ describe('invalid values', () => {
   const cases: [string, string][] = [
     ['windSpeed', 'abc'],
     ['windSpeed', '150'],
+    ['windSpeed', '61'],
     ['windSpeed', ''],
+    ['spectrum', 'gauss'],
+    ['spreading', 'cos2s'],
+    ['fetch', '0'],
+    ['swellElongation', '2'],
     ['resolution', '100'],
     ['resolution', '2048'],
-    ['patchSize', '-3'],
+    ['patchSizes', '-3'],
+    ['patchSizes', '10,15'],
+    ['patchSizes', '10,abc'],
+    ['patchSizes', ''],
+    ['patchSizes', '1,2,4,8,16'],
     ['amplitude', '0x10'],
     ['depth', '0'],
     ['depth', 'shallow'],
@@ -150,9 +189,18 @@ describe('invalid values', () => {
 
   it('resets the parameter a combination check names (repeatPeriod too long for N and patch size)', () => {
     // N = 1024 on a 10 m patch repeats at most every ~6160 s; each value alone is fine.
-    const { state, warnings } = parseState('resolution=1024&patchSize=10&repeatPeriod=9000');
+    const { state, warnings } = parseState('resolution=1024&patchSizes=10&repeatPeriod=9000');
     expect(warnings.map((w) => w.parameter)).toEqual(['repeatPeriod']);
-    expect(state).toMatchObject({ resolution: 1024, patchSize: 10, repeatPeriod: DEFAULT_PARAMETERS.repeatPeriod });
+    expect(warnings[0].message).toContain('using the default 200');
+    expect(state).toMatchObject({ resolution: 1024, patchSizes: [10], repeatPeriod: DEFAULT_PARAMETERS.repeatPeriod });
+  });
+
+  it('resets patch sizes whose neighbours are too far apart for the resolution', () => {
+    // At N = 64 neighbours may differ by at most N/2 = 32×; each value alone is fine.
+    const { state, warnings } = parseState('resolution=64&patchSizes=1,100');
+    expect(warnings.map((w) => w.parameter)).toEqual(['patchSizes']);
+    expect(warnings[0].message).toContain('using the default 13.7,79.3,457');
+    expect(state).toMatchObject({ resolution: 64, patchSizes: DEFAULT_PARAMETERS.patchSizes });
   });
 
   it('parseValue explains what is allowed', () => {

@@ -65,8 +65,8 @@ function setup(parameters: Partial<SimulationParameters>, shading: OceanShadingO
   simulation = new OceanSimulation(renderer, parameters, { path: 'gpu', worker: false });
   const sim = simulation;
   surface = new OceanSurface(
-    { displacement: sim.uniforms.tDisplacement, derivatives: sim.uniforms.tDerivatives, patchSize: sim.uniforms.patchSize, environment, sunDirection: { value: sunDirection } },
-    () => sim.parameters.patchSize / sim.parameters.resolution,
+    { environment, sunDirection: { value: sunDirection } },
+    () => ({ layers: sim.layers, choppiness: sim.parameters.choppiness }),
     shading,
   );
   scene.add(surface);
@@ -176,23 +176,22 @@ const harness = {
 /**
  * Draws the horizon grid as points with the real vertex shader (define CAPTURE_POSITIONS), one
  * float texel per vertex, reads back each vertex's displaced position and rest point, and checks
- * displaced − rest against the JS fields sampled at the rest point (bilinear, REPEAT, at the
- * vertex's mip level, mips built by 2×2 averages as generateMipmap does).
+ * displaced − rest against the sum of the layers' JS fields sampled at the rest point (bilinear,
+ * REPEAT, at the vertex's mip level in each layer, mips built by 2×2 averages as generateMipmap
+ * does), horizontal parts scaled by the choppiness.
  */
 function geometryCheck(t: number, withRestPoints = false) {
   const sim = simulation!;
   const mesh = surface!;
   sim.update(t);
-  mesh.placeRings(camera);
+  mesh.onBeforeRender(renderer, scene, camera); // the viewport's ring size, and the rings under the camera
   const count = mesh.geometry.getAttribute('position').count;
   const captureWidth = 1024;
   const captureHeight = Math.ceil(count / captureWidth);
-  const material = new OceanMaterial(
-    { displacement: sim.uniforms.tDisplacement, derivatives: sim.uniforms.tDerivatives, patchSize: sim.uniforms.patchSize, environment, sunDirection: { value: sunDirection } },
-    {},
-    { CAPTURE_POSITIONS: 1 },
-  );
-  for (const name of ['ringFrames', 'ringUvOrigins', 'ringOffsets', 'halfRingCells']) {
+  const material = new OceanMaterial({ environment, sunDirection: { value: sunDirection } }, {}, { CAPTURE_POSITIONS: 1 });
+  const { choppiness } = sim.parameters;
+  material.bindLayers(sim.layers, choppiness);
+  for (const name of ['ringFrames', 'ringLayerUvOrigins', 'ringOffsets', 'halfRingCells']) {
     material.uniforms[name].value = mesh.material.uniforms[name].value;
   }
   material.uniforms.captureWidth.value = captureWidth;
@@ -217,13 +216,36 @@ function geometryCheck(t: number, withRestPoints = false) {
   target.dispose();
   material.dispose();
 
-  const { resolution: n, patchSize, choppiness, repeatPeriod } = sim.parameters;
-  const fields = new CpuWaveFields(sim.spectrum, choppiness, repeatPeriod);
-  fields.update(t);
-  const mips = mipChain(fields.displacement, n);
+  const n = sim.parameters.resolution;
+  const layers = sim.layers.map((layer, i) => {
+    const fields = new CpuWaveFields(layer.spectrum);
+    fields.update(t);
+    const lodBias = material.uniforms.layerLodBias.value[i] as number;
+    return { size: layer.frame.size, fields, mips: mipChain(fields.displacement, n), lodBias };
+  });
+  // RMS of the summed height over the largest patch's grid (the sum does not repeat on a smaller one).
+  const largest = layers[layers.length - 1];
   let sumSquares = 0;
-  for (let i = 1; i < fields.displacement.length; i += 4) sumSquares += fields.displacement[i] ** 2;
+  for (let j = 0; j < n; j++) {
+    for (let i = 0; i < n; i++) {
+      const x = (i * largest.size) / n;
+      const z = (j * largest.size) / n;
+      let h = 0;
+      for (const layer of layers) h += sampleBilinear(layer.fields.displacement, n, x / layer.size + 0.5 / n, z / layer.size + 0.5 / n)[1];
+      sumSquares += h * h;
+    }
+  }
   const rms = Math.sqrt(sumSquares / (n * n));
+  /** Σ over layers of the field sampled at rest point (x, z), each at its own mip level. */
+  const summed = (x: number, z: number, lod: number, pick: (layer: (typeof layers)[number], level: number) => Float32Array): number[] => {
+    const total = [0, 0, 0, 0];
+    for (const layer of layers) {
+      const level = Math.min(Math.max(0, Math.round(lod) + layer.lodBias), layer.mips.length - 1); // GL clamps
+      const value = sampleBilinear(pick(layer, level), n >> level, x / layer.size + 0.5 / n, z / layer.size + 0.5 / n);
+      for (let c = 0; c < 4; c++) total[c] += value[c];
+    }
+    return total;
+  };
   const byLevel: Record<string, { count: number; maxError: number }> = {};
   let skirt = 0;
   let maxOffGrid = 0;
@@ -238,10 +260,14 @@ function geometryCheck(t: number, withRestPoints = false) {
       skirt++;
       continue;
     }
-    const level = Math.min(Math.round(lod), mips.length - 1); // GL clamps to the last level
-    const expected = sampleBilinear(mips[level], n >> level, x / patchSize + 0.5 / n, z / patchSize + 0.5 / n);
-    const error = Math.max(Math.abs(px - x - expected[0]), Math.abs(py - expected[1]), Math.abs(pz - z - expected[2]));
-    const key = level === mips.length - 1 ? 'coarsest' : String(level);
+    const level = Math.min(Math.round(lod), layers[0].mips.length - 1); // of the finest layer
+    const expected = summed(x, z, lod, (layer, mip) => layer.mips[mip]);
+    const error = Math.max(
+      Math.abs(px - x - choppiness * expected[0]),
+      Math.abs(py - expected[1]),
+      Math.abs(pz - z - choppiness * expected[2]),
+    );
+    const key = level === layers[0].mips.length - 1 ? 'coarsest' : String(level);
     byLevel[key] ??= { count: 0, maxError: 0 };
     byLevel[key].count++;
     byLevel[key].maxError = Math.max(byLevel[key].maxError, error / rms);
@@ -249,11 +275,13 @@ function geometryCheck(t: number, withRestPoints = false) {
     const cell = mesh.material.uniforms.ringFrames.value[4 * ring + 2] as number;
     for (const c of [x, z]) maxOffGrid = Math.max(maxOffGrid, Math.abs(c / cell - Math.round(c / cell)));
     heights.push(py);
-    if (level === 0) {
-      const [, , dxx, dzz] = sampleBilinear(fields.derivatives, n, x / patchSize + 0.5 / n, z / patchSize + 0.5 / n);
-      displacedAtMip0.push([px, py, pz, (1 + dxx) * (1 + dzz) - expected[3] * expected[3]]);
+    if (level === 0 && layers.every((layer) => Math.round(lod) + layer.lodBias <= 0)) {
+      const [, , dxx, dzz] = summed(x, z, 0, (layer) => layer.fields.derivatives);
+      const dxz = choppiness * expected[3];
+      displacedAtMip0.push([px, py, pz, (1 + choppiness * dxx) * (1 + choppiness * dzz) - dxz * dxz]);
     }
-    if (withRestPoints) restPoints.push(`${x},${z},${level}`);
+    // Keyed by the unclamped mip level: the coarser layers' levels go on growing past the finest's last.
+    if (withRestPoints) restPoints.push(`${x},${z},${Math.round(lod)}`);
   }
   return { count, skirt, rms, byLevel, maxOffGrid, heights, restPoints, displacedAtMip0 };
 }

@@ -6,7 +6,7 @@
  */
 import { ACESFilmicToneMapping, PerspectiveCamera, Scene, Vector3, WebGLRenderer } from 'three';
 import { Ocean } from '../../../src/ocean';
-import type { ShadingMode } from '../../../src/render/oceanMaterial';
+import type { ShadingMode } from '../../../src/parameters/sceneOptions';
 
 /** Camera position and target of each named view. */
 export const VIEWS: Record<string, [[number, number, number], [number, number, number]]> = {

@@ -8,7 +8,7 @@ import { CpuWaveFields } from '../../../src/fft/cpuWaveFields';
 import { GpuWaveFields, supportedGpuPrecision, type GpuPrecision } from '../../../src/fft/gpuWaveFields';
 import { OceanSimulation } from '../../../src/layers/oceanSimulation';
 import { validateParameters, type SimulationParameters } from '../../../src/parameters/parameters';
-import { createInitialSpectrum, type InitialSpectrum } from '../../../src/spectrum/initialSpectrum';
+import { createCascadeSpectra } from '../../../src/spectrum/initialSpectrum';
 
 const renderer = new WebGLRenderer({ canvas: document.createElement('canvas') });
 
@@ -85,9 +85,9 @@ const harness = {
   ): { passCount: number; results: { t: number; displacement: ChannelComparison[]; derivatives: ChannelComparison[] }[] } {
     const params = validateParameters(changes);
     const n = params.resolution;
-    const spectrum = createInitialSpectrum(params);
-    const gpu = new GpuWaveFields(renderer, spectrum, params.choppiness, params.repeatPeriod, precision);
-    const js = new CpuWaveFields(spectrum, params.choppiness, params.repeatPeriod);
+    const spectrum = createCascadeSpectra(params)[0];
+    const gpu = new GpuWaveFields(renderer, spectrum, precision);
+    const js = new CpuWaveFields(spectrum);
     const results = times.map((t) => {
       gpu.update(t);
       js.update(t);
@@ -104,20 +104,21 @@ const harness = {
   /** Counts of non-finite values in the GPU fields (both textures) at time t. */
   gpuNonFiniteCount(changes: Partial<SimulationParameters>, t: number): number {
     const params = validateParameters(changes);
-    const gpu = new GpuWaveFields(renderer, createInitialSpectrum(params), params.choppiness, params.repeatPeriod, 'float32');
-    gpu.update(t);
     let count = 0;
-    for (const index of [0, 1]) {
-      for (const value of readTarget(gpu.output, index, params.resolution, 'float32')) if (!Number.isFinite(value)) count++;
+    for (const spectrum of createCascadeSpectra(params)) {
+      const gpu = new GpuWaveFields(renderer, spectrum, 'float32');
+      gpu.update(t);
+      for (const index of [0, 1]) {
+        for (const value of readTarget(gpu.output, index, params.resolution, 'float32')) if (!Number.isFinite(value)) count++;
+      }
+      gpu.dispose();
     }
-    gpu.dispose();
     return count;
   },
 
   /** The initial spectrum's amplitudes, as the bit patterns of their float32 values. */
   spectrumBits(changes: Partial<SimulationParameters>): number[] {
-    const spectrum = createInitialSpectrum(validateParameters(changes));
-    return Array.from(new Uint32Array(spectrum.amplitudes.buffer));
+    return createCascadeSpectra(validateParameters(changes)).flatMap((spectrum) => Array.from(new Uint32Array(spectrum.amplitudes.buffer)));
   },
 
   /**
@@ -126,7 +127,7 @@ const harness = {
    */
   async workerAgainstDirect(changes: Partial<SimulationParameters>, t: number): Promise<{ path: string; maxDifference: number; rms: number }> {
     const simulation = new OceanSimulation(renderer, changes, { path: 'js', worker: true });
-    const displacement = () => simulation.uniforms.tDisplacement.value as DataTexture;
+    const displacement = () => simulation.layers[0].textures.displacement.value as DataTexture;
     const deadline = performance.now() + 20_000;
     // The worker answers a frame later; keep asking, as the render loop would.
     while (performance.now() < deadline) {
@@ -134,8 +135,7 @@ const harness = {
       await new Promise((resolve) => setTimeout(resolve, 20));
       if (Array.from(displacement().image.data as Float32Array).some((v) => v !== 0)) break;
     }
-    const params = simulation.parameters;
-    const direct = new CpuWaveFields(simulation.spectrum as InitialSpectrum, params.choppiness, params.repeatPeriod);
+    const direct = new CpuWaveFields(simulation.layers[0].spectrum);
     direct.update(t);
     const fromWorker = displacement().image.data as Float32Array;
     let maxDifference = 0;
@@ -157,7 +157,13 @@ const harness = {
     const attempts: (() => void)[] = [
       () => simulation.setParameters({ windSpeed: NaN }),
       () => simulation.setParameters({ resolution: 100 }),
-      () => simulation.setParameters({ patchSize: -1 }),
+      () => simulation.setParameters({ patchSizes: [-1] }),
+      () => simulation.setParameters({ patchSizes: [100, 50] }),
+      () => simulation.setParameters({ patchSizes: [50, 60] }),
+      () => simulation.setParameters({ spectrum: 'bretschneider' as 'jonswap' }),
+      () => simulation.setParameters({ spreading: 'cosine' as 'cos-2s' }),
+      () => simulation.setParameters({ fetch: 0 }),
+      () => simulation.setParameters({ swellPeriod: -3 }),
       () => simulation.setParameters({ amplitude: -1e-6 }),
       () => simulation.setParameters({ repeatPeriod: 0 }),
       () => simulation.setParameters({ depth: 0 }),
@@ -173,9 +179,11 @@ const harness = {
     }
     simulation.update(4);
     const unchanged = JSON.stringify(before) === JSON.stringify(simulation.parameters);
-    const output = (simulation as unknown as { fieldPath: GpuWaveFields }).fieldPath.output;
     let nonFinite = 0;
-    for (const index of [0, 1]) for (const v of readTarget(output, index, 64, 'float32')) if (!Number.isFinite(v)) nonFinite++;
+    for (const layer of simulation.layers) {
+      const { output } = (layer as unknown as { backend: GpuWaveFields }).backend;
+      for (const index of [0, 1]) for (const v of readTarget(output, index, 64, 'float32')) if (!Number.isFinite(v)) nonFinite++;
+    }
     simulation.dispose();
     return { messages, unchanged, nonFinite };
   },

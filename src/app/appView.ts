@@ -1,0 +1,77 @@
+/**
+ * How the app draws its scene, shared by the app (app.ts) and `npm run shot` (examples/shot.ts), so
+ * that a shot of an app link draws the very pixels the app's canvas shows: the renderer's settings,
+ * the camera's lens, the ocean built from an AppState, and what happens before every render.
+ * No DOM beyond what three.js needs; no side effects on import.
+ */
+import { ACESFilmicToneMapping, PerspectiveCamera, WebGLRenderer, type WebGLRendererParameters } from 'three';
+import { Ocean, type OceanOptions } from '../ocean';
+import { skyboxFaceUrls } from '../render/skyEnvironment';
+import { MIN_HEIGHT } from './flyControls';
+import { simulationParameters, type AppState } from './urlState';
+
+/** The app's renderer: antialiased, ACES filmic tone mapping. The caller sets pixel ratio and size. */
+export function createAppRenderer(parameters: WebGLRendererParameters = {}): WebGLRenderer {
+  const renderer = new WebGLRenderer({ antialias: true, ...parameters });
+  renderer.toneMapping = ACESFilmicToneMapping;
+  return renderer;
+}
+
+/** The app's camera: 55° vertical field of view, near plane 0.5 m; prepareAppFrame moves the far plane. */
+export function createAppCamera(aspect = 1): PerspectiveCamera {
+  return new PerspectiveCamera(55, aspect, 0.5, 1e5);
+}
+
+/** The ocean `state` describes (simulation, path, sun, shading, wireframe), generated sky. */
+export function createAppOcean(renderer: WebGLRenderer, state: Readonly<AppState>, options: Pick<OceanOptions, 'worker'> = {}): Ocean {
+  const ocean = new Ocean(renderer, {
+    ...simulationParameters(state),
+    ...options,
+    path: state.path,
+    sunElevation: state.sunElevation,
+    sunAzimuth: state.sunAzimuth,
+    ior: state.ior,
+    absorption: state.absorption,
+    scatterColour: state.scatterColour,
+    causticPower: state.causticPower,
+    causticColour: state.causticColour,
+    shadingMode: state.mode,
+  });
+  ocean.surface.material.wireframe = state.wireframe;
+  return ocean;
+}
+
+/**
+ * Starts loading the six-face skybox `state.skybox` names (null for 'generated'); until it has
+ * loaded, and if it fails, the generated sky stays.
+ */
+export function loadAppSkybox(ocean: Ocean, skybox: string): Promise<void> | null {
+  if (skybox === 'generated') return null;
+  const base = skybox.endsWith('/') ? skybox : `${skybox}/`;
+  return ocean.sky.loadFaces(skyboxFaceUrls(base));
+}
+
+/**
+ * Before each render: the sea at time `t`, the eye kept above the crest under it, and the far
+ * plane out to the horizon the previous render reached (Ocean.horizonDistance).
+ */
+export function prepareAppFrame(ocean: Ocean, camera: PerspectiveCamera, t: number): void {
+  ocean.update(t);
+  // The controls keep the eye above the mean sea level; near the water it must also stay above the
+  // crest under it. heightAt updates the fields on the CPU, so it is asked only when a crest
+  // (4 standard deviations of the height) could reach the camera.
+  if (camera.position.y < MIN_HEIGHT + 4 * ocean.heightRms) {
+    const water = ocean.heightAt(camera.position.x, camera.position.z);
+    camera.position.y = Math.max(camera.position.y, water + MIN_HEIGHT);
+  }
+  fitFarPlane(ocean, camera);
+}
+
+/** Moves the far plane out to the horizon of the last render; returns whether it moved. */
+export function fitFarPlane(ocean: Ocean, camera: PerspectiveCamera): boolean {
+  const far = Math.max(1e4, 1.5 * ocean.horizonDistance);
+  const moved = far !== camera.far;
+  camera.far = far;
+  camera.updateProjectionMatrix();
+  return moved;
+}

@@ -1,0 +1,58 @@
+/**
+ * An FFT cascade: one periodic patch of the sea, simulated from its own band of the spectrum
+ * (src/spectrum/cascadeBands.ts) by one FFT backend, the GPU's fragment passes
+ * (src/fft/gpuWaveFields.ts) or JS (src/fft/cpuFieldTextures.ts, optionally in a worker).
+ * Owns its backend and its CPU copy for queries, and frees both in dispose().
+ */
+import type { WebGLRenderer } from 'three';
+import { CpuFieldTextures } from '../fft/cpuFieldTextures';
+import { CpuWaveFields } from '../fft/cpuWaveFields';
+import { GpuWaveFields, type GpuPrecision } from '../fft/gpuWaveFields';
+import type { InitialSpectrum } from '../spectrum/initialSpectrum';
+import type { LayerFieldsOnCpu, LayerFrame, WaveLayer } from './waveLayer';
+
+/** Which implementation computes a cascade's fields. */
+export type FftBackend = { kind: 'gpu'; precision: GpuPrecision } | { kind: 'js'; worker: boolean };
+
+export class FftCascade implements WaveLayer {
+  readonly textures;
+  readonly frame: LayerFrame;
+  private readonly backend: GpuWaveFields | CpuFieldTextures;
+  /** The JS fields for queries, computed on demand for the time last asked. */
+  private query: { fields: CpuWaveFields; time: number } | null = null;
+
+  constructor(
+    renderer: WebGLRenderer,
+    readonly spectrum: InitialSpectrum,
+    backend: FftBackend,
+  ) {
+    this.backend =
+      backend.kind === 'gpu' ? new GpuWaveFields(renderer, spectrum, backend.precision) : new CpuFieldTextures(renderer, spectrum, backend.worker);
+    this.textures = { displacement: { value: this.backend.displacement }, derivatives: { value: this.backend.derivatives } };
+    this.frame = { size: spectrum.patchSize, origin: [0, 0], periodic: true, resolution: spectrum.resolution };
+  }
+
+  /** Fragment passes per update on the GPU, 0 in JS. */
+  get passCount(): number {
+    return this.backend instanceof GpuWaveFields ? this.backend.passCount : 0;
+  }
+
+  /** The fields at time t (s), computed from t alone (no state carried between updates). */
+  update(t: number): void {
+    this.backend.update(t);
+  }
+
+  fieldsOnCpu(t: number): LayerFieldsOnCpu {
+    this.query ??= { fields: new CpuWaveFields(this.spectrum), time: NaN };
+    if (this.query.time !== t) {
+      this.query.fields.update(t);
+      this.query.time = t;
+    }
+    return this.query.fields;
+  }
+
+  dispose(): void {
+    this.backend.dispose();
+    this.query = null;
+  }
+}

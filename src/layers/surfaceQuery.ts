@@ -1,0 +1,81 @@
+/**
+ * Questions about the sea surface answered on the CPU from the same layers the surface draws:
+ * the sum of every layer's fields (waveLayer.ts), with the horizontal parts scaled by the
+ * choppiness λ, sampled bilinearly as the GPU samples them at mip level 0.
+ */
+import type { WaveLayer } from './waveLayer';
+
+/** The summed fields at one rest point: displacement and the Jacobian terms of the choppy map. */
+interface SurfaceSample {
+  dx: number;
+  height: number;
+  dz: number;
+  /** ∂Dx/∂x, ∂Dz/∂z, ∂Dx/∂z (= ∂Dz/∂x) */
+  dxdx: number;
+  dzdz: number;
+  dxdz: number;
+}
+
+/**
+ * Height of the water surface at the world point (x, z) at time t: the height of the surface
+ * point x0 that the choppy displacement moves onto (x, z), x0 + λ·D(x0) = (x, z), found by
+ * Newton's method with the Jacobian of that map. Where the surface folds over itself (Jacobian ≤ 0,
+ * breaking crests) several points land on (x, z) and the one nearest the start is returned.
+ */
+export function heightAt(layers: readonly WaveLayer[], choppiness: number, t: number, x: number, z: number): number {
+  const sample: SurfaceSample = { dx: 0, height: 0, dz: 0, dxdx: 0, dzdz: 0, dxdz: 0 };
+  let restX = x;
+  let restZ = z;
+  for (let iteration = 0; iteration < 20; iteration++) {
+    sampleLayers(layers, t, restX, restZ, sample);
+    const residualX = restX + choppiness * sample.dx - x;
+    const residualZ = restZ + choppiness * sample.dz - z;
+    if (Math.abs(residualX) + Math.abs(residualZ) < 1e-7) break;
+    const jxx = 1 + choppiness * sample.dxdx;
+    const jzz = 1 + choppiness * sample.dzdz;
+    const jxz = choppiness * sample.dxdz;
+    const determinant = jxx * jzz - jxz * jxz;
+    if (determinant > 0.05) {
+      restX -= (jzz * residualX - jxz * residualZ) / determinant;
+      restZ -= (jxx * residualZ - jxz * residualX) / determinant;
+    } else {
+      // Near a fold Newton steps explode: fall back to a damped fixed-point step.
+      restX -= 0.5 * residualX;
+      restZ -= 0.5 * residualZ;
+    }
+  }
+  sampleLayers(layers, t, restX, restZ, sample);
+  return sample.height;
+}
+
+/** Sums every layer's fields at the rest point (x, z) into `out`. */
+function sampleLayers(layers: readonly WaveLayer[], t: number, x: number, z: number, out: SurfaceSample): void {
+  out.dx = out.height = out.dz = out.dxdx = out.dzdz = out.dxdz = 0;
+  for (const layer of layers) {
+    const { size, origin, resolution, periodic } = layer.frame;
+    const u = ((x - origin[0]) / size) * resolution;
+    const v = ((z - origin[1]) / size) * resolution;
+    if (!periodic && (u < 0 || v < 0 || u > resolution - 1 || v > resolution - 1)) continue;
+    const { displacement, derivatives } = layer.fieldsOnCpu(t);
+    out.dx += bilinear(displacement, resolution, u, v, 0);
+    out.height += bilinear(displacement, resolution, u, v, 1);
+    out.dz += bilinear(displacement, resolution, u, v, 2);
+    out.dxdz += bilinear(displacement, resolution, u, v, 3);
+    out.dxdx += bilinear(derivatives, resolution, u, v, 2);
+    out.dzdz += bilinear(derivatives, resolution, u, v, 3);
+  }
+}
+
+/**
+ * Bilinear sample with wrap-around of channel c of an RGBA N×N field at continuous texel
+ * coordinates (u, v), where texel (i, j) holds the field at (u, v) = (i, j) — the same
+ * interpolation the GPU does for the surface (see horizonGrid.ts).
+ */
+function bilinear(data: Float32Array, n: number, u: number, v: number, c: number): number {
+  const i0 = Math.floor(u);
+  const j0 = Math.floor(v);
+  const fu = u - i0;
+  const fv = v - j0;
+  const at = (i: number, j: number) => data[4 * ((((j % n) + n) % n) * n + (((i % n) + n) % n)) + c];
+  return (1 - fv) * ((1 - fu) * at(i0, j0) + fu * at(i0 + 1, j0)) + fv * ((1 - fu) * at(i0, j0 + 1) + fu * at(i0 + 1, j0 + 1));
+}

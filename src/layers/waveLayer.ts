@@ -1,0 +1,46 @@
+/**
+ * The wave-layer contract: what every producer of the sea's motion gives the surface.
+ *
+ * A layer holds fields in the layout of src/fft/waveFieldLayout.ts (displacement (Dx, h, Dz,
+ * ∂Dx/∂z) and derivatives (∂h/∂x, ∂h/∂z, ∂Dx/∂x, ∂Dz/∂z), horizontal parts for a choppiness of 1)
+ * over a square of the sea. The surface material (src/render/oceanMaterial.ts), the queries
+ * (surfaceQuery.ts) and the app's inspector take a list of layers and nothing else, and sum them:
+ * the sea is the sum of its layers, with the horizontal parts scaled by the choppiness.
+ *
+ * Today's layers are FFT cascades (fftCascade.ts), periodic patches of several sizes. A local layer
+ * (a wake grid that follows a boat) or another backend is one more class against this contract.
+ */
+import type { Texture } from 'three';
+
+/** Where a layer lies on the sea plane. */
+export interface LayerFrame {
+  /** Side of the square the textures cover, m. */
+  readonly size: number;
+  /** World (x, z) of the texture's texel (0, 0), m. */
+  readonly origin: readonly [number, number];
+  /** True when the fields repeat outside the square (REPEAT wrapping); false: zero outside. */
+  readonly periodic: boolean;
+  /** Texels per side. */
+  readonly resolution: number;
+}
+
+/** The layer's fields on the CPU, texel (i, j) at origin + (i, j)·size/resolution, RGBA per texel. */
+export interface LayerFieldsOnCpu {
+  readonly displacement: Float32Array;
+  readonly derivatives: Float32Array;
+}
+
+export interface WaveLayer {
+  /** What the surface samples; stable `{ value }` objects, so a material binds them once. */
+  readonly textures: {
+    readonly displacement: { value: Texture | null };
+    readonly derivatives: { value: Texture | null };
+  };
+  readonly frame: LayerFrame;
+  /** Advances the layer to time t (s); dt is the step since the last update (0 for a jump). */
+  update(t: number, dt: number): void;
+  /** The fields at time t on the CPU, for queries (computed on demand, then kept for that t). */
+  fieldsOnCpu(t: number): LayerFieldsOnCpu;
+  /** Frees every GPU resource and worker the layer made. */
+  dispose(): void;
+}

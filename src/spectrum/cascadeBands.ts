@@ -1,0 +1,84 @@
+/**
+ * How the spectrum is split between FFT cascades, and how long each cascade's repeat period is.
+ *
+ * Cascades are square patches of different sides L (ascending; index 0 is the finest). Each
+ * wavelength is simulated once: cascade c keeps the modes with |k| in [low_c, high_c). The
+ * boundary between a cascade and the next finer one is the geometric mean of the finer grid's
+ * fundamental 2π/L_finer and the coarser grid's Nyquist radius πN/L_coarser: both grids then have
+ * the same margin, √(N·L_finer/(2·L_coarser)), the finer one that many rings of modes inside the
+ * boundary to resolve directions, the coarser one that factor of headroom below its Nyquist
+ * radius (4.7 for the default 256² cascades 5.8× apart). The boundary lies inside both grids as
+ * long as L_coarser/L_finer ≤ N/2. (gasgiant/FFT-Ocean puts it at a fixed 6 fundamentals, which
+ * fails for small N.) The coarsest cascade also keeps everything down to its fundamental, the
+ * finest everything up to its grid's corner.
+ *
+ * Repeat period of a cascade (Tessendorf 2001, eq. 17). Each mode's ω is rounded to the nearest
+ * multiple m·2π/T_c, an error of at most π/T_c, so the phase speed ω/k of every mode is within
+ * PHASE_SPEED_TOLERANCE of the true one when π/T_c ≤ PHASE_SPEED_TOLERANCE·ω_slowest. T_c is the
+ * user's repeat period T doubled until that holds: all T_c are T·2^j, so the whole sea still
+ * repeats, after the longest of them.
+ */
+import { angularFrequency } from './dispersion';
+
+/** Largest relative error of any simulated mode's phase speed. */
+export const PHASE_SPEED_TOLERANCE = 0.01;
+
+export interface CascadeBand {
+  /** Side of the cascade's patch, m. */
+  patchSize: number;
+  /** The modes it keeps: low ≤ |k| < high, rad/m (high may be Infinity). */
+  low: number;
+  high: number;
+}
+
+/** Bands of cascades with these patch sizes (ascending) and N texels a side. */
+export function cascadeBands(patchSizes: readonly number[], resolution: number): CascadeBand[] {
+  // Between cascade c (finer) and c + 1 (coarser): √(2π/L_c · πN/L_{c+1}).
+  const boundary = (c: number) => Math.sqrt(((2 * Math.PI) / patchSizes[c]) * ((Math.PI * resolution) / patchSizes[c + 1]));
+  return patchSizes.map((patchSize, c) => ({
+    patchSize,
+    low: c === patchSizes.length - 1 ? 0 : boundary(c),
+    high: c === 0 ? Infinity : boundary(c - 1),
+  }));
+}
+
+/** Largest ratio of neighbouring patch sizes for which every boundary lies inside both grids. */
+export function maxPatchRatio(resolution: number): number {
+  return resolution / 2;
+}
+
+/**
+ * Whether a cascade keeps the mode (n, m)·2π/L of its grid. Decided in grid units, where n² + m²
+ * is exact, with a wave vector on (or within 1e-9 of) an edge given to the finer cascade: when
+ * both grids hold the same wavenumber (patch sizes in a whole ratio), rounding cannot make both
+ * cascades keep it, or neither.
+ */
+export function keepsMode(band: CascadeBand, n: number, m: number): boolean {
+  const fundamental = (2 * Math.PI) / band.patchSize;
+  const edge = (k: number) => (k / fundamental) ** 2 * (1 - 1e-9);
+  const indexSquared = n * n + m * m;
+  return indexSquared >= edge(band.low) && indexSquared < edge(band.high);
+}
+
+/** The Nyquist radius πN/L of a cascade's grid: above it, directions are not all resolved. */
+export function nyquistRadius(band: CascadeBand, resolution: number): number {
+  return (Math.PI * resolution) / band.patchSize;
+}
+
+/** |k| of the slowest nonzero mode a cascade keeps (a lower bound: its band's low edge or fundamental). */
+export function slowestModeInBand(band: CascadeBand): number {
+  return Math.max(band.low, (2 * Math.PI) / band.patchSize);
+}
+
+/** |k| of the fastest mode a cascade keeps (an upper bound: its band's high edge or grid corner). */
+export function fastestModeInBand(band: CascadeBand, resolution: number): number {
+  return Math.min(band.high, Math.SQRT2 * nyquistRadius(band, resolution));
+}
+
+/** T·2^j, the shortest that keeps every mode of the band within PHASE_SPEED_TOLERANCE (see above). */
+export function cascadeRepeatPeriod(band: CascadeBand, params: { depth: number; repeatPeriod: number }): number {
+  const needed = Math.PI / (PHASE_SPEED_TOLERANCE * angularFrequency(slowestModeInBand(band), params.depth));
+  let period = params.repeatPeriod;
+  while (period < needed) period *= 2;
+  return period;
+}

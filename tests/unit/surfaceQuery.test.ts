@@ -1,0 +1,202 @@
+/**
+ * heightAt (src/layers/surfaceQuery.ts): the height of the choppy sea surface at a world point,
+ * from the sum of the layers' fields (waveLayer.ts: horizontal parts for λ = 1, scaled by the
+ * choppiness), over hand-made layers whose fields are written here from a formula.
+ *
+ * The reference is a single travelling wave, whose choppy surface is a Gerstner (trochoidal)
+ * wave: with h = A·cos θ, θ = k·x0 + φ, the λ = 1 displacement is D = −k̂·A·sin θ (Tessendorf 2001,
+ * eq. 29), and the surface point over the rest point x0 is (x0 + λ·D(x0), h(x0)). Along k̂ the rest
+ * coordinate s0 of the point that lands on s solves s0 − λ·A·sin(|k|s0 + φ) = s, a monotone scalar
+ * equation when λ·A·|k| < 1, solved here by bisection; across k̂ nothing moves.
+ */
+import { describe, expect, it } from 'vitest';
+import { heightAt } from '../../src/layers/surfaceQuery';
+import type { LayerFrame, WaveLayer } from '../../src/layers/waveLayer';
+
+/** A layer with fixed fields (the same at every t), recording the times it was asked for. */
+interface FakeLayer extends WaveLayer {
+  readonly times: number[];
+}
+
+function fakeLayer(frame: LayerFrame, displacement: Float32Array, derivatives: Float32Array): FakeLayer {
+  const times: number[] = [];
+  return {
+    times,
+    textures: { displacement: { value: null }, derivatives: { value: null } },
+    frame,
+    update: () => {},
+    fieldsOnCpu: (t: number) => {
+      times.push(t);
+      return { displacement, derivatives };
+    },
+    dispose: () => {},
+  };
+}
+
+/** The wave h = A·cos(k·x + φ) with its λ = 1 fields. */
+interface Wave {
+  amplitude: number;
+  kx: number;
+  kz: number;
+  phase: number;
+}
+
+/** `share` of the wave's fields (layout of waveFieldLayout.ts) sampled on a layer's texels. */
+function waveLayer(wave: Wave, share: number, frame: LayerFrame): FakeLayer {
+  const n = frame.resolution;
+  const displacement = new Float32Array(4 * n * n);
+  const derivatives = new Float32Array(4 * n * n);
+  const { amplitude: a, kx, kz, phase } = wave;
+  const k = Math.hypot(kx, kz);
+  for (let j = 0; j < n; j++) {
+    for (let i = 0; i < n; i++) {
+      const x = frame.origin[0] + (i * frame.size) / n;
+      const z = frame.origin[1] + (j * frame.size) / n;
+      const theta = kx * x + kz * z + phase;
+      const c = share * a * Math.cos(theta);
+      const s = share * a * Math.sin(theta);
+      const t = 4 * (j * n + i);
+      // (Dx, h, Dz, ∂Dx/∂z) and (∂h/∂x, ∂h/∂z, ∂Dx/∂x, ∂Dz/∂z) for D = −k̂·A·sin θ.
+      displacement.set([(-kx / k) * s, c, (-kz / k) * s, ((-kx * kz) / k) * c], t);
+      derivatives.set([-kx * s, -kz * s, ((-kx * kx) / k) * c, ((-kz * kz) / k) * c], t);
+    }
+  }
+  return fakeLayer(frame, displacement, derivatives);
+}
+
+/** Height of the Gerstner surface of `wave` with choppiness λ at the world point (x, z). */
+function gerstnerHeight(wave: Wave, lambda: number, x: number, z: number): number {
+  const k = Math.hypot(wave.kx, wave.kz);
+  const s = (wave.kx * x + wave.kz * z) / k; // along k̂
+  const a = wave.amplitude;
+  expect(lambda * a * k).toBeLessThan(1); // no folds: one rest point per surface point
+  // s0 − λA·sin(k·s0 + φ) = s is increasing in s0 and its root lies within λA of s.
+  let low = s - lambda * a - 1e-9;
+  let high = s + lambda * a + 1e-9;
+  for (let step = 0; step < 200 && high - low > 1e-13; step++) {
+    const mid = (low + high) / 2;
+    if (mid - lambda * a * Math.sin(k * mid + wave.phase) < s) low = mid;
+    else high = mid;
+  }
+  return a * Math.cos(k * ((low + high) / 2) + wave.phase);
+}
+
+describe('heightAt over two periodic layers that split one cosine wave', () => {
+  // k = 2π·(1, 1)/10 m: periodic on both the 10 m and the 20 m layer. Both have texels of
+  // 10/512 = 20/1024 m, where bilinear interpolation of a wave of |k| = 0.89 rad/m errs by at most
+  // A·(|k|Δ)²/8 ≈ 1.1e-5 m; near the steepest crests (λ = 3: Jacobian ≥ 0.2) a displacement error
+  // moves the rest point by up to 1/0.2 of itself, a height error ≲ 4× as large. Total ≲ 6e-5 m
+  // against the 1e-4 m asked for; float32 storage adds ~1e-8.
+  const wave: Wave = { amplitude: 0.3, kx: (2 * Math.PI) / 10, kz: (2 * Math.PI) / 10, phase: 0.4 };
+  // The fine layer's origin is a whole number of texels off the coarse one's, so the grids share texels.
+  const fine = waveLayer(wave, 0.7, { size: 10, origin: [2.5, -7.5], periodic: true, resolution: 512 });
+  const coarse = waveLayer(wave, 0.3, { size: 20, origin: [0, 0], periodic: true, resolution: 1024 });
+  const layers = [fine, coarse];
+  // Points on both sides of the origin, far outside both squares (the layers repeat), on crests,
+  // troughs and slopes.
+  const points: [number, number][] = [
+    [0, 0],
+    [1.234, 5.678],
+    [-13.37, 2.5],
+    [250.1, -999.9],
+    [4.3, 4.3],
+    ...Array.from({ length: 40 }, (_, i): [number, number] => [-30 + 1.618 * i, 17 - 0.913 * i]),
+  ];
+
+  for (const lambda of [0.7, 1.5, 3]) {
+    it(`equals the Gerstner wave’s height within 1e-4 m with choppiness ${lambda}`, () => {
+      let worst = 0;
+      let moved = 0;
+      for (const [x, z] of points) {
+        const want = gerstnerHeight(wave, lambda, x, z);
+        worst = Math.max(worst, Math.abs(heightAt(layers, lambda, 12.5, x, z) - want));
+        // The choppy height differs from the plain cosine at (x, z): the test sees the displacement.
+        moved = Math.max(moved, Math.abs(want - wave.amplitude * Math.cos(wave.kx * x + wave.kz * z + wave.phase)));
+      }
+      expect(worst).toBeLessThan(1e-4);
+      expect(moved).toBeGreaterThan(0.05);
+    });
+  }
+
+  it('with choppiness 0 is the plain sum of the layers’ heights', () => {
+    // At points on both grids' texels bilinear interpolation returns the texels themselves: the
+    // sum of the two float32 values, exactly (1e-12 for rounding of the texel coordinates).
+    for (const [i, j] of [
+      [0, 0],
+      [17, 300],
+      [511, 5],
+      [-40, 1000],
+    ]) {
+      const [x, z] = [(i * 10) / 512, (j * 10) / 512];
+      const texel = (layer: FakeLayer, x0: number, z0: number) => {
+        const { size, origin, resolution: n } = layer.frame;
+        const u = (((Math.round(((x0 - origin[0]) / size) * n) % n) + n) % n) as number;
+        const v = (((Math.round(((z0 - origin[1]) / size) * n) % n) + n) % n) as number;
+        return layer.fieldsOnCpu(0).displacement[4 * (v * n + u) + 1];
+      };
+      const sum = texel(fine, x, z) + texel(coarse, x, z);
+      expect(Math.abs(heightAt(layers, 0, 0, x, z) - sum)).toBeLessThan(1e-12);
+    }
+    // Anywhere: the cosine itself within the interpolation error.
+    for (const [x, z] of points) {
+      const want = wave.amplitude * Math.cos(wave.kx * x + wave.kz * z + wave.phase);
+      expect(Math.abs(heightAt(layers, 0, 0, x, z) - want)).toBeLessThan(1e-4);
+    }
+  });
+
+  it('asks every layer for its fields at the time it was given', () => {
+    fine.times.length = 0;
+    coarse.times.length = 0;
+    heightAt(layers, 1, 42.25, 1, 2);
+    expect(fine.times.length).toBeGreaterThan(0);
+    expect(new Set([...fine.times, ...coarse.times])).toEqual(new Set([42.25]));
+  });
+});
+
+describe('heightAt with a non-periodic layer', () => {
+  // A 10 m square at (100, 200) that raises the water by 0.25 m and moves nothing sideways.
+  const n = 32;
+  const displacement = new Float32Array(4 * n * n);
+  for (let t = 0; t < n * n; t++) displacement[4 * t + 1] = 0.25;
+  const patch = fakeLayer({ size: 10, origin: [100, 200], periodic: false, resolution: n }, displacement, new Float32Array(4 * n * n));
+  const wave: Wave = { amplitude: 0.2, kx: (2 * Math.PI) / 16, kz: 0, phase: 1 };
+  const background = waveLayer(wave, 1, { size: 16, origin: [0, 0], periodic: true, resolution: 256 });
+
+  it('contributes nothing outside its square, and its fields inside', () => {
+    for (const lambda of [0, 1.2]) {
+      const inside: [number, number][] = [
+        [100, 200],
+        [104.2, 203.7],
+        [109.5, 209.5],
+      ];
+      // Left of, right of, below, above, diagonal to the square, and where a periodic copy would be.
+      // (Along x at least λ·A = 0.24 m away: the choppy background moves the rest point of a
+      // surface point by up to that, and it is the rest point that the patch is sampled at.)
+      const outside: [number, number][] = [
+        [99.5, 205],
+        [110.5, 205],
+        [105, 210.01],
+        [105, 199.9],
+        [105, 210.5],
+        [90, 190],
+        [115, 215],
+        [95, 195],
+        [5, 5],
+      ];
+      for (const [x, z] of inside) {
+        const difference = heightAt([background, patch], lambda, 0, x, z) - heightAt([background], lambda, 0, x, z);
+        expect(Math.abs(difference - 0.25), `inside at (${x}, ${z}), λ = ${lambda}`).toBeLessThan(1e-7);
+      }
+      for (const [x, z] of outside) {
+        const difference = heightAt([background, patch], lambda, 0, x, z) - heightAt([background], lambda, 0, x, z);
+        expect(difference, `outside at (${x}, ${z}), λ = ${lambda}`).toBe(0);
+      }
+    }
+  });
+
+  it('alone, is the still water level 0 outside its square', () => {
+    expect(heightAt([patch], 1, 0, 0, 0)).toBe(0);
+    expect(heightAt([patch], 1, 0, 120, 200)).toBe(0);
+    expect(Math.abs(heightAt([patch], 1, 0, 105, 205) - 0.25)).toBeLessThan(1e-7);
+  });
+});
