@@ -1,9 +1,15 @@
-// The sky behind everything: a unit box around the eye, drawn at the far plane (z = w), so that
-// after the sea it only shades pixels nothing else covered (SkyBackground, src/render/skyBackground.ts).
+// The sky behind everything: one triangle that covers the screen, at the far plane (z = w = 1),
+// so that after the sea it only shades pixels nothing else covered (SkyBackground,
+// src/render/skyBackground.ts). Each corner carries the world direction of its view ray; the
+// direction is an affine function of the screen position, so interpolating it is exact.
+// (A box around the eye drawn with z = w was clipped into garbage by SwiftShader when the view ran
+// exactly along one of its edges, e.g. 45° down along ±z: the sky covered the sea.)
+uniform mat4 skyProjectionInverse;  // the camera's projectionMatrixInverse
+uniform mat3 skyCameraRotation;     // the camera's rotation (its matrixWorld without translation)
 varying vec3 vDirection;
 
 void main() {
-  vDirection = position;
-  vec4 clip = projectionMatrix * vec4(mat3(viewMatrix) * position, 1.0);  // rotation only: centred on the eye
-  gl_Position = clip.xyww;
+  vec4 view = skyProjectionInverse * vec4(position.xy, 1.0, 1.0);
+  vDirection = skyCameraRotation * (view.xyz / view.w);
+  gl_Position = vec4(position.xy, 1.0, 1.0);
 }

@@ -4,35 +4,44 @@
  * nothing else covered. (A scene.background would be drawn first under every pixel, then mostly
  * hidden by the sea; under SwiftShader that cost a fifth of the frame.)
  *
- * It is one draw call of a unit box that needs no transform: frustum culling is off, and the
- * vertex shader centres it on the eye. Tone mapped like the sea, except a loaded face set, which
+ * It is one draw call of a triangle that covers the screen (in clip space: no transform, frustum
+ * culling off); each corner gets the world direction of its view ray from the camera's inverse
+ * projection and rotation, set before each draw. Tone mapped like the sea, except a loaded face set, which
  * is already display-referred (LDR sRGB) and shows as it is. Owns its geometry and material;
  * dispose() frees them (not the SkyEnvironment).
  */
-import { BackSide, BoxGeometry, Mesh, ShaderMaterial } from 'three';
+import { BufferGeometry, Float32BufferAttribute, Matrix3, Matrix4, Mesh, ShaderMaterial, type Camera, type Scene, type WebGLRenderer } from 'three';
 import { shaderSource } from '../shaderSource';
 import type { SkyEnvironment } from './skyEnvironment';
 
 /** Drawn after opaque objects with a lower renderOrder (three.js sorts opaque objects by it first). */
 const SKY_RENDER_ORDER = 1000;
 
-export class SkyBackground extends Mesh<BoxGeometry, ShaderMaterial> {
+export class SkyBackground extends Mesh<BufferGeometry, ShaderMaterial> {
   constructor(private readonly sky: SkyEnvironment) {
     const material = new ShaderMaterial({
       name: 'skyBackground',
       vertexShader: shaderSource('sky/background.vert'),
       fragmentShader: shaderSource('sky/background.frag'),
-      uniforms: { skyEnvironment: sky.environment },
-      side: BackSide,
+      uniforms: {
+        skyEnvironment: sky.environment,
+        skyProjectionInverse: { value: new Matrix4() },
+        skyCameraRotation: { value: new Matrix3() },
+      },
       depthWrite: false, // depthTest stays on: LessEqual passes at the far plane where nothing was drawn
     });
-    super(new BoxGeometry(1, 1, 1), material);
+    // Clip-space corners of a triangle that covers the screen [−1, 1]².
+    const geometry = new BufferGeometry().setAttribute('position', new Float32BufferAttribute([-1, -1, 0, 3, -1, 0, -1, 3, 0], 3));
+    super(geometry, material);
     this.name = 'SkyBackground';
     this.frustumCulled = false;
     this.renderOrder = SKY_RENDER_ORDER;
   }
 
-  override onBeforeRender(): void {
+  override onBeforeRender(_renderer: WebGLRenderer, _scene: Scene, camera: Camera): void {
+    const u = this.material.uniforms;
+    u.skyProjectionInverse.value.copy(camera.projectionMatrixInverse);
+    u.skyCameraRotation.value.setFromMatrix4(camera.matrixWorld);
     const toneMapped = !this.sky.usingFaces;
     if (this.material.toneMapped !== toneMapped) {
       this.material.toneMapped = toneMapped;
