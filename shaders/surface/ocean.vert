@@ -1,5 +1,6 @@
 // Ocean surface, vertex stage: a horizon-grid vertex displaced by the sum of the wave layers,
-// P = x0 + Σ (λ·Dx, h, λ·Dz) sampled at the rest point x0 (src/fft/waveFieldLayout.ts).
+// P = x0 + Σ (λ·Dx, h, λ·Dz) sampled at the rest point x0 (src/fft/waveFieldLayout.ts), moved by
+// the slow surface warp w(x0) (src/layers/surfaceWarp.ts).
 #include "surface/horizonGrid.glsl"
 #include "surface/waveLayers.glsl"
 
@@ -25,10 +26,11 @@ uniform float captureHeight;
 
 void main() {
   GridPoint point = horizonGridPoint();
+  vec2 sampled = point.fromCentre + surfaceWarpOffset(point.world);  // from the ring centre, metres
   vec3 displacement = vec3(0.0);
   #pragma unroll_loop_start
   for (int i = 0; i < LAYER_COUNT; i++) {
-    vLayerUv[ i ] = ringLayerUvOrigins[point.frameRing * LAYER_COUNT + UNROLLED_LOOP_INDEX] + point.fromCentre / layerSizes[ i ];
+    vLayerUv[ i ] = ringLayerUvOrigins[point.frameRing * LAYER_COUNT + UNROLLED_LOOP_INDEX] + sampled / layerSizes[ i ];
     displacement += textureLod(tLayerDisplacement[ i ], vLayerUv[ i ], point.lod + layerLodBias[ i ]).xyz;
   }
   #pragma unroll_loop_end

@@ -10,3 +10,16 @@ uniform sampler2D tLayerDerivatives[LAYER_COUNT];   // (∂h/∂x, ∂h/∂z, �
 uniform float layerSizes[LAYER_COUNT];              // metres
 uniform float layerLodBias[LAYER_COUNT];            // log2(finest texel / this layer's texel)
 uniform float choppiness;                           // λ
+
+// The slow warp of where the cascades are sampled, w(x) = Σ a_j·d_j·sin(k_j·x + φ_j)
+// (src/layers/surfaceWarp.ts, which says why and fills surfaceWarp: per component
+// (kx, kz, φ, a) then (dx, dz, 0, 0)). Returns w at the rest point, metres.
+uniform vec4 surfaceWarp[6];
+
+vec2 surfaceWarpOffset(vec2 world) {
+  vec2 offset = vec2(0.0);
+  for (int j = 0; j < 6; j += 2) {
+    offset += surfaceWarp[j].w * sin(dot(surfaceWarp[j].xy, world) + surfaceWarp[j].z) * surfaceWarp[j + 1].xy;
+  }
+  return offset;
+}

@@ -1,8 +1,11 @@
 /**
  * Questions about the sea surface answered on the CPU from the same layers the surface draws:
  * the sum of every layer's fields (waveLayer.ts), with the horizontal parts scaled by the
- * choppiness λ, sampled bilinearly as the GPU samples them at mip level 0.
+ * choppiness λ, sampled bilinearly as the GPU samples them at mip level 0, periodic layers at the
+ * warped point x + w(x) (surfaceWarp.ts). Newton's Jacobian leaves out the warp's own gradient
+ * (at most WARP_MAX_STRAIN): the steps are a little off, the converged point is not.
  */
+import { surfaceWarp } from './surfaceWarp';
 import type { WaveLayer } from './waveLayer';
 
 /** The summed fields at one rest point: displacement and the Jacobian terms of the choppy map. */
@@ -48,13 +51,16 @@ export function heightAt(layers: readonly WaveLayer[], choppiness: number, t: nu
   return sample.height;
 }
 
+const warp: [number, number] = [0, 0];
+
 /** Sums every layer's fields at the rest point (x, z) into `out`. */
 function sampleLayers(layers: readonly WaveLayer[], t: number, x: number, z: number, out: SurfaceSample): void {
   out.dx = out.height = out.dz = out.dxdx = out.dzdz = out.dxdz = 0;
+  const [warpX, warpZ] = surfaceWarp(x, z, warp);
   for (const layer of layers) {
     const { size, origin, resolution, periodic } = layer.frame;
-    const u = ((x - origin[0]) / size) * resolution;
-    const v = ((z - origin[1]) / size) * resolution;
+    const u = ((periodic ? x + warpX : x) - origin[0]) / size * resolution;
+    const v = ((periodic ? z + warpZ : z) - origin[1]) / size * resolution;
     if (!periodic && (u < 0 || v < 0 || u > resolution - 1 || v > resolution - 1)) continue;
     const { displacement, derivatives } = layer.fieldsOnCpu(t);
     out.dx += bilinear(displacement, resolution, u, v, 0);

@@ -5,6 +5,7 @@
  * figures. Typed setters check their values and keep the last good one when a value is bad.
  */
 import { Color, DoubleSide, ShaderMaterial, UniformsLib, UniformsUtils, Vector3, type Texture } from 'three';
+import { SURFACE_WARP_UNIFORMS } from '../layers/surfaceWarp';
 import type { WaveLayer } from '../layers/waveLayer';
 import { mergeOptions } from '../parameters/options';
 import { DEFAULT_SHADING, SHADING_MODES, SHADING_OPTIONS, type ShadingOptions } from '../parameters/sceneOptions';
@@ -41,6 +42,7 @@ export class OceanMaterial extends ShaderMaterial {
           layerSizes: { value: [] as number[] },
           layerLodBias: { value: [] as number[] },
           choppiness: { value: 1 },
+          surfaceWarp: { value: SURFACE_WARP_UNIFORMS },
           ringOffsets: { value: new Float32Array(2 * (RING_COUNT + 1)) },
           halfRingCells: { value: 32 },
           sunColour: { value: new Color(12, 11, 9.5) },

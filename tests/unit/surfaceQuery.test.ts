@@ -7,10 +7,12 @@
  * wave: with h = A·cos θ, θ = k·x0 + φ, the λ = 1 displacement is D = −k̂·A·sin θ (Tessendorf 2001,
  * eq. 29), and the surface point over the rest point x0 is (x0 + λ·D(x0), h(x0)). Along k̂ the rest
  * coordinate s0 of the point that lands on s solves s0 − λ·A·sin(|k|s0 + φ) = s, a monotone scalar
- * equation when λ·A·|k| < 1, solved here by bisection; across k̂ nothing moves.
+ * equation when λ·A·|k| < 1. Periodic layers are sampled through the slow surface warp w
+ * (surfaceWarp.ts), so the reference solves x0 + λ·D(x0 + w(x0)) = x instead.
  */
 import { describe, expect, it } from 'vitest';
 import { heightAt } from '../../src/layers/surfaceQuery';
+import { surfaceWarp, WARP_MAX_STRAIN } from '../../src/layers/surfaceWarp';
 import type { LayerFrame, WaveLayer } from '../../src/layers/waveLayer';
 
 /** A layer with fixed fields (the same at every t), recording the times it was asked for. */
@@ -64,21 +66,30 @@ function waveLayer(wave: Wave, share: number, frame: LayerFrame): FakeLayer {
   return fakeLayer(frame, displacement, derivatives);
 }
 
-/** Height of the Gerstner surface of `wave` with choppiness λ at the world point (x, z). */
+/** w(x, z), the surface warp the periodic layers are sampled through (surfaceWarp.ts). */
+function warp(x: number, z: number): [number, number] {
+  return surfaceWarp(x, z, [0, 0]);
+}
+
+/**
+ * Height of the Gerstner surface of `wave` with choppiness λ at the world point (x, z), the layers
+ * sampled through the warp: the rest point x0 with x0 + λ·D(x0 + w(x0)) = (x, z), found here by
+ * plain fixed-point iteration (a contraction: λ·A·|k|·(1 + WARP_MAX_STRAIN) < 1), independent of
+ * heightAt's Newton steps; the height is H(x0 + w(x0)).
+ */
 function gerstnerHeight(wave: Wave, lambda: number, x: number, z: number): number {
   const k = Math.hypot(wave.kx, wave.kz);
-  const s = (wave.kx * x + wave.kz * z) / k; // along k̂
   const a = wave.amplitude;
-  expect(lambda * a * k).toBeLessThan(1); // no folds: one rest point per surface point
-  // s0 − λA·sin(k·s0 + φ) = s is increasing in s0 and its root lies within λA of s.
-  let low = s - lambda * a - 1e-9;
-  let high = s + lambda * a + 1e-9;
-  for (let step = 0; step < 200 && high - low > 1e-13; step++) {
-    const mid = (low + high) / 2;
-    if (mid - lambda * a * Math.sin(k * mid + wave.phase) < s) low = mid;
-    else high = mid;
+  expect(lambda * a * k * (1 + WARP_MAX_STRAIN)).toBeLessThan(1); // no folds: one rest point per surface point
+  let [x0, z0] = [x, z];
+  for (let step = 0; step < 20_000; step++) {
+    const [wx, wz] = warp(x0, z0);
+    const s = a * Math.sin(wave.kx * (x0 + wx) + wave.kz * (z0 + wz) + wave.phase);
+    // D = −k̂·A·sin θ, so x0 = (x, z) − λ·D = (x, z) + λ·k̂·A·sin θ.
+    [x0, z0] = [x + (lambda * wave.kx * s) / k, z + (lambda * wave.kz * s) / k];
   }
-  return a * Math.cos(k * ((low + high) / 2) + wave.phase);
+  const [wx, wz] = warp(x0, z0);
+  return a * Math.cos(wave.kx * (x0 + wx) + wave.kz * (z0 + wz) + wave.phase);
 }
 
 describe('heightAt over two periodic layers that split one cosine wave', () => {
@@ -111,7 +122,8 @@ describe('heightAt over two periodic layers that split one cosine wave', () => {
         const want = gerstnerHeight(wave, lambda, x, z);
         worst = Math.max(worst, Math.abs(heightAt(layers, lambda, 12.5, x, z) - want));
         // The choppy height differs from the plain cosine at (x, z): the test sees the displacement.
-        moved = Math.max(moved, Math.abs(want - wave.amplitude * Math.cos(wave.kx * x + wave.kz * z + wave.phase)));
+        const [wx, wz] = warp(x, z);
+        moved = Math.max(moved, Math.abs(want - wave.amplitude * Math.cos(wave.kx * (x + wx) + wave.kz * (z + wz) + wave.phase)));
       }
       expect(worst).toBeLessThan(1e-4);
       expect(moved).toBeGreaterThan(0.05);
@@ -119,27 +131,35 @@ describe('heightAt over two periodic layers that split one cosine wave', () => {
   }
 
   it('with choppiness 0 is the plain sum of the layers’ heights', () => {
-    // At points on both grids' texels bilinear interpolation returns the texels themselves: the
-    // sum of the two float32 values, exactly (1e-12 for rounding of the texel coordinates).
+    // At points whose warped position lies on both grids' texels, bilinear interpolation returns
+    // the texels themselves: the sum of the two float32 values (1e-9 for the rounding of the
+    // texel coordinates and of the point found by iteration).
     for (const [i, j] of [
       [0, 0],
       [17, 300],
       [511, 5],
       [-40, 1000],
     ]) {
-      const [x, z] = [(i * 10) / 512, (j * 10) / 512];
+      const [targetX, targetZ] = [(i * 10) / 512, (j * 10) / 512];
+      // The point (x, z) with (x, z) + w(x, z) on that texel.
+      let [x, z] = [targetX, targetZ];
+      for (let step = 0; step < 100; step++) {
+        const [wx, wz] = warp(x, z);
+        [x, z] = [targetX - wx, targetZ - wz];
+      }
       const texel = (layer: FakeLayer, x0: number, z0: number) => {
         const { size, origin, resolution: n } = layer.frame;
         const u = (((Math.round(((x0 - origin[0]) / size) * n) % n) + n) % n) as number;
         const v = (((Math.round(((z0 - origin[1]) / size) * n) % n) + n) % n) as number;
         return layer.fieldsOnCpu(0).displacement[4 * (v * n + u) + 1];
       };
-      const sum = texel(fine, x, z) + texel(coarse, x, z);
-      expect(Math.abs(heightAt(layers, 0, 0, x, z) - sum)).toBeLessThan(1e-12);
+      const sum = texel(fine, targetX, targetZ) + texel(coarse, targetX, targetZ);
+      expect(Math.abs(heightAt(layers, 0, 0, x, z) - sum)).toBeLessThan(1e-9);
     }
-    // Anywhere: the cosine itself within the interpolation error.
+    // Anywhere: the cosine at the warped point, within the interpolation error.
     for (const [x, z] of points) {
-      const want = wave.amplitude * Math.cos(wave.kx * x + wave.kz * z + wave.phase);
+      const [wx, wz] = warp(x, z);
+      const want = wave.amplitude * Math.cos(wave.kx * (x + wx) + wave.kz * (z + wz) + wave.phase);
       expect(Math.abs(heightAt(layers, 0, 0, x, z) - want)).toBeLessThan(1e-4);
     }
   });
@@ -164,10 +184,11 @@ describe('heightAt with a non-periodic layer', () => {
 
   it('contributes nothing outside its square, and its fields inside', () => {
     for (const lambda of [0, 1.2]) {
+      // At least λ·A = 0.24 m inside its texels' span [100, 109.69] (see below).
       const inside: [number, number][] = [
-        [100, 200],
+        [100.3, 200.3],
         [104.2, 203.7],
-        [109.5, 209.5],
+        [109.4, 209.4],
       ];
       // Left of, right of, below, above, diagonal to the square, and where a periodic copy would be.
       // (Along x at least λ·A = 0.24 m away: the choppy background moves the rest point of a

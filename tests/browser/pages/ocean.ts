@@ -24,6 +24,7 @@ import { OceanMaterial, type OceanShadingOptions } from '../../../src/render/oce
 import { OceanSurface } from '../../../src/render/oceanSurface';
 import { CpuWaveFields } from '../../../src/fft/cpuWaveFields';
 import { OceanSimulation } from '../../../src/layers/oceanSimulation';
+import { surfaceWarp } from '../../../src/layers/surfaceWarp';
 import type { SimulationParameters } from '../../../src/parameters/parameters';
 
 const query = new URLSearchParams(location.search);
@@ -236,12 +237,13 @@ function geometryCheck(t: number, withRestPoints = false) {
     }
   }
   const rms = Math.sqrt(sumSquares / (n * n));
-  /** Σ over layers of the field sampled at rest point (x, z), each at its own mip level. */
+  /** Σ over layers of the field sampled at rest point (x, z) moved by the surface warp, each at its own mip level. */
   const summed = (x: number, z: number, lod: number, pick: (layer: (typeof layers)[number], level: number) => Float32Array): number[] => {
     const total = [0, 0, 0, 0];
+    const [wx, wz] = surfaceWarp(x, z, [0, 0]);
     for (const layer of layers) {
       const level = Math.min(Math.max(0, Math.round(lod) + layer.lodBias), layer.mips.length - 1); // GL clamps
-      const value = sampleBilinear(pick(layer, level), n >> level, x / layer.size + 0.5 / n, z / layer.size + 0.5 / n);
+      const value = sampleBilinear(pick(layer, level), n >> level, (x + wx) / layer.size + 0.5 / n, (z + wz) / layer.size + 0.5 / n);
       for (let c = 0; c < 4; c++) total[c] += value[c];
     }
     return total;

@@ -1,0 +1,72 @@
+/**
+ * Test page for tiling: renders the whole Ocean (simulation, generated sky, surface) as an app
+ * would (ACES filmic tone mapping, sRGB output, camera.far beyond ocean.horizonDistance) from a
+ * given camera, and hands the frame back as a PNG data URL. tests/browser/tiling.spec.ts measures
+ * the picture's autocorrelation.
+ */
+import { ACESFilmicToneMapping, PerspectiveCamera, Scene, SRGBColorSpace, Vector3, WebGLRenderer } from 'three';
+import { Ocean, type OceanOptions } from '../../../src/ocean';
+import { SURFACE_WARP_UNIFORMS } from '../../../src/layers/surfaceWarp';
+
+const query = new URLSearchParams(location.search);
+const size = Number(query.get('size') ?? 512);
+const renderer = new WebGLRenderer({ antialias: false, preserveDrawingBuffer: true });
+renderer.setPixelRatio(1);
+renderer.setSize(size, size);
+renderer.toneMapping = ACESFilmicToneMapping;
+renderer.outputColorSpace = SRGBColorSpace;
+document.body.appendChild(renderer.domElement);
+
+/** Vertical field of view in degrees (the picture is square). */
+const FOV = 55;
+const camera = new PerspectiveCamera(FOV, 1, 0.5, 1e5);
+let ocean: Ocean | null = null;
+let scene = new Scene();
+
+const harness = {
+  fov: FOV,
+  /**
+   * Replaces the sea with a new Ocean of these options; `warp: false` switches the surface warp off
+   * (src/layers/surfaceWarp.ts), for the control that shows what the measurement sees without it.
+   */
+  setup(options: OceanOptions, warp = true): void {
+    if (ocean) {
+      ocean.removeFromParent();
+      ocean.dispose();
+    }
+    ocean = new Ocean(renderer, { path: 'gpu', worker: false, ...options });
+    if (!warp) ocean.surface.material.uniforms.surfaceWarp.value = new Float32Array(SURFACE_WARP_UNIFORMS.length);
+    scene = new Scene().add(ocean);
+  },
+  /**
+   * Renders the sea at time t from `position` looking at `target` (with `up` as the camera's up, for
+   * views straight down) and returns the frame as a PNG data URL and the horizon distance.
+   */
+  render(
+    t: number,
+    position: [number, number, number],
+    target: [number, number, number],
+    up: [number, number, number] = [0, 1, 0],
+  ): { png: string; horizonDistance: number; far: number } {
+    camera.position.fromArray(position);
+    camera.up.fromArray(up);
+    camera.lookAt(new Vector3().fromArray(target));
+    camera.far = 1e5;
+    camera.updateProjectionMatrix();
+    camera.updateMatrixWorld();
+    ocean!.update(t);
+    renderer.render(scene, camera); // places the rings, so horizonDistance is known
+    camera.far = Math.max(1e5, 1.5 * ocean!.horizonDistance);
+    camera.updateProjectionMatrix();
+    renderer.render(scene, camera);
+    return { png: renderer.domElement.toDataURL('image/png'), horizonDistance: ocean!.horizonDistance, far: camera.far };
+  },
+};
+
+declare global {
+  interface Window {
+    tiling: typeof harness;
+  }
+}
+window.tiling = harness;
+document.title = 'ready';
