@@ -55,10 +55,14 @@ export function checkOption<T>(table: OptionTable<T>, key: string, value: unknow
   if (!rule.check(value)) throw new ParameterError(key, value, rule.allowed);
 }
 
-/** `changes` checked one by one and merged over `base` (arrays copied); throws on the first bad one. */
+/**
+ * `changes` checked one by one and merged over `base` (arrays copied); throws on the first bad one.
+ * A key whose value is undefined is not given (as an optional TypeScript property), not bad.
+ */
 export function mergeOptions<T extends object>(table: OptionTable<T>, changes: Partial<T>, base: Readonly<T>): T {
   const merged = { ...base };
   for (const [key, value] of Object.entries(changes)) {
+    if (value === undefined) continue;
     checkOption(table, key, value);
     (merged as Record<string, unknown>)[key] = Array.isArray(value) ? [...value] : value;
   }

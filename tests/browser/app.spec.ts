@@ -4,6 +4,9 @@
  * SwiftShader; pixels are read by the app right after its render (oceanApp.capturePixels).
  */
 import { expect, test, type Page } from '@playwright/test';
+import { DEFAULT_PARAMETERS } from '../../src/parameters/parameters';
+import { beaufortPreset, SEA_PRESETS } from '../../src/spectrum/presets';
+import { seaState } from '../../src/spectrum/seaState';
 import { withoutWebGL2 } from './withoutWebGL2';
 
 type Vec3 = [number, number, number];
@@ -51,6 +54,17 @@ function meanAbsDifference(a: Buffer, b: Buffer): number {
 
 const pose = (page: Page) => page.evaluate(() => window.oceanApp.controls.pose);
 
+/** The sea state as the status line and the panel's "Hs, Tp" line start: "Hs 2.14 m, Tp 6.2 s (simulated Hs 2.22 m)". */
+const SEA_STATE_TEXT = String.raw`Hs \d+\.\d\d m, Tp \d+\.\d s \(simulated Hs \d+\.\d\d m\)`;
+
+/** What the status line and the panel say for `options` (seaState.ts) and the simulated 4·RMS height. */
+function seaStateText(options: Parameters<typeof seaState>[0], simulatedHs: number): string {
+  const { significantWaveHeight, peakPeriod } = seaState(options);
+  return `Hs ${significantWaveHeight.toFixed(2)} m, Tp ${peakPeriod.toFixed(1)} s (simulated Hs ${simulatedHs.toFixed(2)} m)`;
+}
+
+const escapeRegExp = (text: string) => text.replace(/[.*+?^${}()|[\]\\]/g, '\\$&');
+
 /** v = (cos φ cos θ, sin θ, sin φ cos θ) (course report §2.6). */
 function viewDirection(yawDeg: number, pitchDeg: number): Vec3 {
   const phi = (yawDeg * Math.PI) / 180;
@@ -93,7 +107,9 @@ test.describe('the app', () => {
   test('loads without console errors and shows the FFT path, CPU timings and the keys', async ({ page }) => {
     const errors = await openApp(page, 'resolution=64');
     const status = page.locator('#status .status-line');
-    await expect(status).toHaveText(/^FFT: (GPU RGBA32F|GPU RGBA16F|JS in a worker|JS) · \d+ fps · CPU time: sim \d+\.\d ms, render \d+\.\d ms$/);
+    await expect(status).toHaveText(
+      new RegExp(`^${SEA_STATE_TEXT} · FFT: (GPU RGBA32F|GPU RGBA16F|JS in a worker|JS) · \\d+ fps · CPU time: sim \\d+\\.\\d ms, render \\d+\\.\\d ms$`),
+    );
     await expect(page.locator('#status .status-time')).toHaveText(/^t = \d+\.\d\d s · camera speed 20 m\/s$/);
     const path = await page.evaluate(() => window.oceanApp.ocean.simulation.path);
     const label = { 'gpu-rgba32f': 'GPU RGBA32F', 'gpu-rgba16f': 'GPU RGBA16F', 'js-worker': 'JS in a worker', js: 'JS' }[path];
@@ -138,8 +154,14 @@ test.describe('the app', () => {
 
     await holdKey(page, 'Space', 500);
     expect((await pose(page)).position[1]).toBeGreaterThan(afterA.position[1] + 1);
-    await holdKey(page, 'Shift', 2000); // 10 m/s down for 2 s from ~13 m: stops at 1 m
-    expect((await pose(page)).position[1]).toBe(1);
+    await holdKey(page, 'Shift', 2000); // 10 m/s down for 2 s from ~13 m: stops at 1 m above the water
+    // The controls stop at 1 m above the mean level, and the app keeps the eye 1 m above the crest
+    // under it (appView.ts): the lowest eye is max(1, water + 1), the water read from heightAt.
+    const low = await page.evaluate(() => {
+      const { camera, ocean } = window.oceanApp;
+      return { y: camera.position.y, water: ocean.heightAt(camera.position.x, camera.position.z) };
+    });
+    expect(low.y).toBeCloseTo(Math.max(1, low.water + 1), 9);
   });
 
   test('dragging turns the view: right increases yaw, up increases pitch, pitch clamps at ±89°', async ({ page }) => {
@@ -262,12 +284,13 @@ test.describe('the app', () => {
     await expect(warnings.nth(0)).toContainText('windSpeed must be');
     await expect(warnings.nth(1)).toContainText('resolution must be a power of two');
     await expect(warnings.nth(2)).toContainText('mode must be one of');
-    await expect(warnings.nth(0)).toContainText('using the default 12');
+    await expect(warnings.nth(0)).toContainText(`using the default ${DEFAULT_PARAMETERS.windSpeed}`);
+    await expect(warnings.nth(1)).toContainText(`using the default ${DEFAULT_PARAMETERS.resolution}`);
     const { parameters, mode } = await page.evaluate(() => ({
       parameters: window.oceanApp.ocean.parameters,
       mode: window.oceanApp.ocean.shading.shadingMode,
     }));
-    expect(parameters).toMatchObject({ windSpeed: 12, resolution: 256, seed: 5 });
+    expect(parameters).toMatchObject({ windSpeed: DEFAULT_PARAMETERS.windSpeed, resolution: DEFAULT_PARAMETERS.resolution, seed: 5 });
     expect(mode).toBe('full');
     // The URL now holds what runs; a warning can be dismissed.
     expect(page.url()).not.toContain('abc');
@@ -293,12 +316,64 @@ test.describe('the app', () => {
     expect(await page.evaluate(() => window.oceanApp.ocean.parameters.seed)).toBe(4);
 
     // Presets and "new seed" go through the same path.
-    await page.locator('[data-key="preset.storm"] button').click();
-    expect(await page.evaluate(() => window.oceanApp.ocean.parameters)).toMatchObject({ windSpeed: 20, amplitude: 9e-8, patchSize: 600 });
-    await expect(page.locator('[data-key="windSpeed"] input')).toHaveValue('20');
+    await page.locator('[data-key="preset"] select').selectOption('storm');
+    expect(await page.evaluate(() => window.oceanApp.ocean.parameters)).toMatchObject({ ...SEA_PRESETS.storm, seed: 4 });
+    await expect(page.locator('[data-key="windSpeed"] input')).toHaveValue(String(SEA_PRESETS.storm.windSpeed));
     await page.locator('[data-key="newSeed"] button').click();
     expect(await page.evaluate(() => window.oceanApp.ocean.parameters.seed)).not.toBe(4);
-    await expect.poll(() => new URL(page.url()).searchParams.get('windSpeed')).toBe('20');
+    await expect.poll(() => new URL(page.url()).searchParams.get('windSpeed')).toBe(String(SEA_PRESETS.storm.windSpeed));
+  });
+
+  test('the status line and the panel\'s "Hs, Tp" line show the sea state the parameters describe', async ({ page }) => {
+    const errors = await openApp(page, 'windSpeed=17&fetch=300&resolution=64');
+    const status = page.locator('#status .status-line');
+    const panelLine = page.locator('[data-key="seaState"] input');
+    for (const sea of [{ windSpeed: 17, fetch: 300 }, { windSpeed: 6, fetch: 300 }]) {
+      if (sea.windSpeed !== 17) await page.locator('[data-key="windSpeed"] input').fill(String(sea.windSpeed));
+      expect(await page.evaluate(() => window.oceanApp.ocean.parameters)).toMatchObject(sea);
+      const heightRms = await page.evaluate(() => window.oceanApp.ocean.heightRms);
+      // The cascades hold nearly all of this spectrum, so what they simulate is near its Hs, but
+      // a random sample of it: at 17 m/s only a few wave vectors carry the peak, and over seeds
+      // 1–12 the simulated Hs ranges from 0.73 to 1.27 times the spectrum's (mean 0.99).
+      const { significantWaveHeight } = seaState(sea);
+      expect(4 * heightRms).toBeGreaterThan(0.6 * significantWaveHeight);
+      expect(4 * heightRms).toBeLessThan(1.4 * significantWaveHeight);
+      const expected = seaStateText(sea, 4 * heightRms);
+      await expect(status).toHaveText(new RegExp(`^${escapeRegExp(expected)} · FFT: `));
+      await expect(panelLine).toHaveValue(expected);
+    }
+    expect(errors).toEqual([]);
+  });
+
+  test('choosing a preset in the dropdown applies its whole sea state, cascade sizes included', async ({ page }) => {
+    const errors = await openApp(page, 'resolution=32&seed=3&swellHeight=2&depth=20&choppiness=1.3');
+    const menu = page.locator('[data-key="preset"] select');
+    const beaufort = Array.from({ length: 13 }, (_, force) => `Beaufort ${force}`);
+    expect(await menu.locator('option').allTextContents()).toEqual(['', ...Object.keys(SEA_PRESETS), ...beaufort]);
+    const urlParams = () => new URL(page.url()).searchParams;
+    for (const [name, preset] of [
+      ['storm', SEA_PRESETS.storm],
+      ['Beaufort 3', beaufortPreset(3)],
+      ['shallow bay', SEA_PRESETS['shallow bay']],
+    ] as const) {
+      await menu.selectOption(name);
+      const applied = await page.evaluate(() => {
+        const { ocean } = window.oceanApp;
+        return { parameters: ocean.parameters, cascades: ocean.simulation.layers.map((layer) => layer.spectrum.patchSize), heightRms: ocean.heightRms };
+      });
+      // Every sea-state value of the preset (the swell and the depth of the URL are reset), and the
+      // cascades it asks for; the grid's resolution, the seed and the choppiness stay.
+      expect(applied.parameters).toMatchObject({ ...preset, resolution: 32, seed: 3, choppiness: 1.3 });
+      expect(applied.parameters.patchSizes).toEqual(preset.patchSizes);
+      expect(applied.cascades).toEqual(preset.patchSizes);
+      await expect(page.locator('[data-key="windSpeed"] input')).toHaveValue(String(preset.windSpeed));
+      await expect(page.locator('[data-key="patchSizes"] input')).toHaveValue(preset.patchSizes!.join(','));
+      await expect(menu).toHaveValue(''); // the menu is an action, not a state
+      await expect(page.locator('#status .status-line')).toHaveText(new RegExp(`^${escapeRegExp(seaStateText(preset, 4 * applied.heightRms))} · `));
+      await expect.poll(() => [urlParams().get('windSpeed'), urlParams().get('patchSizes')]).toEqual([String(preset.windSpeed), preset.patchSizes!.join(',')]);
+    }
+    await expect(page.locator('#status .notice.warning')).toHaveCount(0);
+    expect(errors).toEqual([]);
   });
 
   test('switching the shading mode in the panel changes the picture', async ({ page }) => {
@@ -306,6 +381,7 @@ test.describe('the app', () => {
     const full = await pixels(page);
     await page.getByText('Sun & shading').click(); // the folder starts closed
     await page.locator('[data-key="mode"] select').selectOption('height');
+    await expect(page.locator('#status .notice.warning')).toHaveCount(0); // the ocean took it
     expect(await page.evaluate(() => window.oceanApp.ocean.shading.shadingMode)).toBe('height');
     const height = await pixels(page);
     expect(meanAbsDifference(full, height)).toBeGreaterThan(10);
@@ -390,13 +466,14 @@ test.describe('the app', () => {
   });
 });
 
-test('the inspector draws the real height field: a tile matches the texture it shows', async ({ page }) => {
-  // The JS path keeps the field in a DataTexture the test can read; paused, so it stays put.
-  await openApp(page, 'resolution=32&path=js&paused=1&t=7.5&inspector=1', { width: 720, height: 405 }, false);
-  await expect.poll(() => page.evaluate(() => window.oceanApp.ocean.simulation.path)).toBe('js-worker');
-  await frames(page, 10);
-  const result = await page.evaluate(async () => {
+/**
+ * Compares the inspector's height tile with the texture of the cascade it shows: returns the
+ * worst difference of 6 × 6 samples from the GL-style bilinear sample of the field, and their spread.
+ */
+async function compareHeightTile(page: Page): Promise<{ cascade: number; cells: number; worst: number; spread: number }> {
+  return page.evaluate(async () => {
     const { ocean, inspector } = window.oceanApp;
+    const cascade = inspector!.shownCascade;
     const heightTile = 3; // P(k), Re h̃0, Im h̃0, height h, …
     const view = inspector!.tiles[heightTile].view as unknown as { material: { uniforms: { scale: { value: number } } } };
     const scale = view.material.uniforms.scale.value;
@@ -404,9 +481,11 @@ test('the inspector draws the real height field: a tile matches the texture it s
     // Read the field after the await: the worker path swaps arrays between frames, and the one
     // the texture no longer holds is transferred to the worker (detached). Paused, every frame
     // carries the same field.
-    const field = (ocean.simulation.layers[inspector!.shownCascade].textures.displacement.value as unknown as { image: { data: Float32Array } }).image.data.slice();
+    const field = (ocean.simulation.layers[cascade].textures.displacement.value as unknown as { image: { data: Float32Array } }).image.data.slice();
     const n = 32;
-    const size = Math.floor(width / 9);
+    // The strip's square cells: the field tiles, then the S(ω) plot (Inspector.CELL_COUNT).
+    const cells = (inspector!.constructor as unknown as { CELL_COUNT: number }).CELL_COUNT;
+    const size = Math.floor(width / cells);
     // GL-style bilinear sample of h (channel 1) with REPEAT at uv.
     const sample = (u: number, v: number) => {
       const x = u * n - 0.5;
@@ -432,10 +511,31 @@ test('the inspector draws the real height field: a tile matches the texture it s
     }
     const mean = greys.reduce((a, b) => a + b, 0) / greys.length;
     const spread = Math.sqrt(greys.reduce((a, b) => a + (b - mean) ** 2, 0) / greys.length);
-    return { worst, spread };
+    return { cascade, cells, worst, spread };
   });
-  expect(result.spread).toBeGreaterThan(0.03); // not a blank or uniform tile
-  expect(result.worst).toBeLessThan(0.03); // 8-bit output and float32 filtering: ~0.005
+}
+
+test('the inspector draws the real height field: a tile matches the texture it shows', async ({ page }) => {
+  // The JS path keeps the field in a DataTexture the test can read; paused, so it stays put.
+  await openApp(page, 'resolution=32&path=js&paused=1&t=7.5&inspector=1', { width: 720, height: 405 }, false);
+  await expect.poll(() => page.evaluate(() => window.oceanApp.ocean.simulation.path)).toBe('js-worker');
+  await frames(page, 10);
+  const cascades = await page.evaluate(() => window.oceanApp.ocean.simulation.layers.length);
+  expect(cascades).toBe(DEFAULT_PARAMETERS.patchSizes.length);
+  // By default the tiles show the largest cascade.
+  const largest = await compareHeightTile(page);
+  expect(largest.cascade).toBe(cascades - 1);
+  expect(largest.cells).toBe(10); // nine field tiles and the S(ω) plot
+  expect(largest.spread).toBeGreaterThan(0.03); // not a blank or uniform tile
+  expect(largest.worst).toBeLessThan(0.03); // 8-bit output and float32 filtering: ~0.005
+
+  // C shows the next cascade (after the last, the first): the tile then matches that one's texture.
+  await page.keyboard.press('c');
+  await frames(page, 3); // the tiles' scales follow the shown cascade's spectrum at the next render
+  const finest = await compareHeightTile(page);
+  expect(finest.cascade).toBe(0);
+  expect(finest.spread).toBeGreaterThan(0.03);
+  expect(finest.worst).toBeLessThan(0.03);
 });
 
 test('flying low over a rough sea, the eye stays above the crest under it', async ({ page }) => {

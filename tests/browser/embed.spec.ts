@@ -1,4 +1,5 @@
 import { expect, test, type Page } from '@playwright/test';
+import { DEFAULT_PARAMETERS } from '../../src/parameters/parameters';
 import { withoutWebGL2 } from './withoutWebGL2';
 
 // <fft-ocean> in a page: zero-configuration rendering, sizing, live attributes, pausing when it
@@ -74,9 +75,16 @@ test('attributes apply live; a bad value warns, naming the attribute, and keeps 
     el.setAttribute('choppiness', '1.5');
     el.setAttribute('sun-azimuth', '200');
     el.setAttribute('shading-mode', 'height');
-    const changed = { ...ocean.parameters, sunAzimuth: ocean.sky.sunAzimuth, mode: ocean.shading.shadingMode };
+    el.setAttribute('patch-sizes', '20,100');
+    const changed = {
+      ...ocean.parameters,
+      sunAzimuth: ocean.sky.sunAzimuth,
+      mode: ocean.shading.shadingMode,
+      cascades: ocean.simulation.layers.map((layer) => layer.spectrum.patchSize),
+    };
     el.setAttribute('wind-speed', 'fast');
     el.setAttribute('resolution', '100');
+    el.setAttribute('patch-sizes', '100,20');
     el.setAttribute('sun-elevation', '95');
     el.setAttribute('shading-mode', 'shiny');
     el.setAttribute('time-scale', 'NaN');
@@ -86,9 +94,10 @@ test('attributes apply live; a bad value warns, naming the attribute, and keeps 
     return { initial, changed, kept, defaulted, sameOcean: el.ocean === ocean };
   });
   expect(result.initial).toMatchObject({ resolution: 64, windSpeed: 6, seed: 9, sun: 10 });
-  expect(result.changed).toMatchObject({ windSpeed: 20, windDirection: -45, choppiness: 1.5, sunAzimuth: 200, mode: 'height' });
-  expect(result.kept).toMatchObject({ windSpeed: 20, resolution: 64, sun: 10, mode: 'height' });
-  expect(result.defaulted).toBe(12);
+  expect(result.changed).toMatchObject({ windSpeed: 20, windDirection: -45, choppiness: 1.5, sunAzimuth: 200, mode: 'height', patchSizes: [20, 100] });
+  expect(result.changed.cascades).toEqual([20, 100]);
+  expect(result.kept).toMatchObject({ windSpeed: 20, resolution: 64, sun: 10, mode: 'height', patchSizes: [20, 100] });
+  expect(result.defaulted).toBe(DEFAULT_PARAMETERS.windSpeed);
   expect(result.sameOcean).toBe(true);
   const warnings = log.warnings.join('\n');
   for (const [name, value] of [
@@ -97,11 +106,13 @@ test('attributes apply live; a bad value warns, naming the attribute, and keeps 
     ['sun-elevation', '95'],
     ['shading-mode', 'shiny'],
     ['time-scale', 'NaN'],
+    ['patch-sizes', '100,20'],
   ]) {
     expect(warnings).toContain(`<fft-ocean>: ignoring ${name}="${value}"`);
   }
   expect(warnings).toContain('keeping 20'); // wind-speed kept its last good value
   expect(warnings).toContain('a power of two from 16 to 1024');
+  expect(warnings).toContain('keeping 20,100'); // patch-sizes kept its last good value
 });
 
 test('paused freezes time and draws only on changes; the time can be set', async ({ page }) => {

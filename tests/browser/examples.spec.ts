@@ -5,6 +5,7 @@ import { join, resolve } from 'node:path';
 import type { DataTexture, Mesh, PerspectiveCamera, Scene, WebGLRenderer } from 'three';
 import type { FftOceanElement } from '../../src/embed/fftOceanElement';
 import type { Ocean } from '../../src/ocean';
+import { DEFAULT_PARAMETERS } from '../../src/parameters/parameters';
 import { serveDirectory } from '../../scripts/static-server.mjs';
 
 // The example pages (served by Vite, as in the app build) and the built library (dist/lib)
@@ -68,7 +69,7 @@ test('element.html: three <fft-ocean>s among page content, sized by the page, al
     expect(el.width).toBeLessThan(result.contentWidth / 2);
     expect(el.right).toBeLessThanOrEqual(result.contentRight + 0.5);
   }
-  expect([hero.wind, calm.wind, storm.wind]).toEqual([12, 4, 26]);
+  expect([hero.wind, calm.wind, storm.wind]).toEqual([DEFAULT_PARAMETERS.windSpeed, 4, 26]); // the hero has no attributes
   for (const el of result.elements) {
     expect(el.frames, el.id).toBeGreaterThanOrEqual(2);
     expect(Math.max(...el.sky.slice(0, 3)), `${el.id} sky`).toBeGreaterThan(120); // a bright sky, not a black box

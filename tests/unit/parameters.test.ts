@@ -64,7 +64,6 @@ const BAD_VALUES: [keyof SimulationParameters, unknown, string[]][] = [
   ['patchSizes', 250, ['sizes in metres']],
   ['spectrum', 'phillip', ['one of phillips, pierson-moskowitz, jonswap, tma']],
   ['spectrum', 'JONSWAP', ['one of']],
-  ['spectrum', undefined, ['one of']],
   ['spreading', 'cos2s', ['one of cos-2s, mitsuyasu, hasselmann, donelan-banner']],
   ['windSpeed', NaN, ['from 0 to 60']],
   ['windSpeed', Infinity, ['from 0 to 60']],
@@ -110,6 +109,13 @@ const BAD_VALUES: [keyof SimulationParameters, unknown, string[]][] = [
   ['resolution', '256', ['power of two']],
   ['seed', null, ['integer']],
 ];
+
+describe('validateParameters takes an undefined value as not given', () => {
+  it('keeps the base value, as for an optional property left out', () => {
+    const base = validateParameters({ windSpeed: 17, spectrum: 'tma' });
+    expect(validateParameters({ windSpeed: undefined, spectrum: undefined, seed: 9 }, base)).toEqual({ ...base, seed: 9 });
+  });
+});
 
 describe('validateParameters rejects bad values', () => {
   for (const [parameter, value, allowed] of BAD_VALUES) {

@@ -177,13 +177,13 @@ const skyHarness = {
   directionFromAngles: (elevation: number, azimuth: number): Vec3 => sunDirectionFromAngles(elevation, azimuth).toArray() as Vec3,
   deepWaterColor: (): Vec3 => current().skyUniforms.skyDeepWaterColor.value.toArray() as Vec3,
 
-  /** setSun's error message, or null if it did not throw. */
+  /** setSun's error as "<name>: <message>" (e.g. "ParameterError: sunElevation must be …"), or null if it did not throw. */
   setSun(elevation: number, azimuth: number): string | null {
     try {
       current().setSun(elevation, azimuth);
       return null;
     } catch (error) {
-      return error instanceof Error ? `Error: ${error.message}` : `non-Error thrown: ${String(error)}`;
+      return error instanceof Error ? `${error.name}: ${error.message}` : `non-Error thrown: ${String(error)}`;
     }
   },
 
