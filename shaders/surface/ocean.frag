@@ -23,6 +23,7 @@ uniform vec3 causticColour;
 uniform float heightScale;     // metres shown as full white in the height mode
 
 varying vec2 vLayerUv[LAYER_COUNT];
+varying float vCrossDerivative;  // λ·Σ ∂Dx/∂z, see ocean.vert
 varying vec3 vWorldPosition;
 centroid varying vec2 vRestPosition;  // see ocean.vert
 flat varying float vRing;
@@ -52,15 +53,13 @@ void main() {
   if (max(fromInner.x, fromInner.y) < vInnerRing.z) discard;
 
   vec4 derivatives = vec4(0.0);  // Σ (∂h/∂x, ∂h/∂z, ∂Dx/∂x, ∂Dz/∂z)
-  float dxDz = 0.0;               // Σ ∂Dx/∂z
   #pragma unroll_loop_start
   for (int i = 0; i < LAYER_COUNT; i++) {
     derivatives += texture(tLayerDerivatives[ i ], vLayerUv[ i ]);
-    dxDz += texture(tLayerDisplacement[ i ], vLayerUv[ i ]).w;
   }
   #pragma unroll_loop_end
   derivatives.zw *= choppiness;
-  dxDz *= choppiness;
+  float dxDz = vCrossDerivative;
   vec3 normal = choppyNormal(derivatives, dxDz);
   vec3 view = normalize(vWorldPosition - cameraPosition);  // d, from the eye to the surface
   // A normal that faces away from the eye (behind a steep crest) is bent back into view.

@@ -9,6 +9,11 @@
 uniform vec2 ringLayerUvOrigins[(RING_COUNT + 1) * LAYER_COUNT];
 
 varying vec2 vLayerUv[LAYER_COUNT];  // each layer's coordinates of the rest point, for the fragment stage
+// λ·Σ ∂Dx/∂z (= ∂Dz/∂x), the cross term of the choppy map's Jacobian, for the normal. Per vertex
+// (it comes with the displacement fetch, .w) and interpolated: the fragment stage then fetches one
+// texture per layer instead of two. It is a second-order correction of the normal; its value at
+// the vertex's mip level is all the detail it needs.
+varying float vCrossDerivative;
 varying vec3 vWorldPosition;
 // centroid: with multisampling, a pixel only partly covered by a triangle must not evaluate the
 // rest point outside it (the ring-overlap test in ocean.frag would then keep a dropped triangle).
@@ -27,15 +32,16 @@ uniform float captureHeight;
 void main() {
   GridPoint point = horizonGridPoint();
   vec2 sampled = point.fromCentre + surfaceWarpOffset(point.world);  // from the ring centre, metres
-  vec3 displacement = vec3(0.0);
+  vec4 displacement = vec4(0.0);
   #pragma unroll_loop_start
   for (int i = 0; i < LAYER_COUNT; i++) {
     vLayerUv[ i ] = ringLayerUvOrigins[point.frameRing * LAYER_COUNT + UNROLLED_LOOP_INDEX] + sampled / layerSizes[ i ];
-    displacement += textureLod(tLayerDisplacement[ i ], vLayerUv[ i ], point.lod + layerLodBias[ i ]).xyz;
+    displacement += textureLod(tLayerDisplacement[ i ], vLayerUv[ i ], point.lod + layerLodBias[ i ]);
   }
   #pragma unroll_loop_end
-  displacement.xz *= choppiness;
-  vec3 world = vec3(point.world.x, 0.0, point.world.y) + displacement;
+  displacement.xzw *= choppiness;
+  vCrossDerivative = displacement.w;
+  vec3 world = vec3(point.world.x, 0.0, point.world.y) + displacement.xyz;
   vWorldPosition = world;
   vRestPosition = point.world;
   vRing = point.ring;
