@@ -87,6 +87,11 @@ test('bad parameters raise errors naming them, and the simulation keeps its last
   expect(nonFinite).toBe(0);
 });
 
+test('a shader-only parameter (choppiness) rebuilds nothing; a spectrum parameter (wind) rebuilds the cascades', async ({ page }) => {
+  const result = await page.evaluate(() => window.harness.layersKeptAcross());
+  expect(result).toEqual({ choppiness: true, windSpeed: false, choppinessApplied: 2.5 });
+});
+
 test('every GPU resource a simulation makes is freed by dispose (memory back to its baseline)', async ({ page }) => {
   const { before, during, after } = await page.evaluate(() => window.harness.memoryAfterCycles(12));
   // The GPU path's framebuffers (three.js's and the FFT's own layered ones) exist while it runs…

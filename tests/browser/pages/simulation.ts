@@ -192,6 +192,24 @@ const harness = {
    * renderer.info.memory and the live framebuffers before and after creating, running and
    * disposing simulations on both paths, and the framebuffers while one was alive.
    */
+  /**
+   * Which layer objects survive a change of each parameter: a shader-only one (choppiness) keeps
+   * every cascade and its textures; a spectrum one (wind) builds new ones.
+   */
+  layersKeptAcross(): { choppiness: boolean; windSpeed: boolean; choppinessApplied: number } {
+    const simulation = new OceanSimulation(renderer, { resolution: 32 }, { path: 'gpu', worker: false });
+    const same = (before: readonly object[]) => simulation.layers.every((layer, i) => layer === before[i]);
+    let before = [...simulation.layers];
+    simulation.setParameters({ choppiness: 2.5 });
+    const choppiness = same(before);
+    const choppinessApplied = simulation.parameters.choppiness;
+    before = [...simulation.layers];
+    simulation.setParameters({ windSpeed: 17 });
+    const windSpeed = same(before);
+    simulation.dispose();
+    return { choppiness, windSpeed, choppinessApplied };
+  },
+
   memoryAfterCycles(cycles: number): { before: object; during: number; after: object } {
     const memory = () => ({ ...renderer.info.memory, framebuffers: liveFramebuffers.size });
     const before = memory();
