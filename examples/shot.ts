@@ -40,7 +40,7 @@ import {
   simulationParameters,
   type AppState,
 } from '../src/app/urlState';
-import { formatOptionText, parseDecimal, ParameterError, parseOptionText, type OptionRule } from '../src/parameters/options';
+import { formatOptionText, nearestName, parseDecimal, ParameterError, parseOptionText, type OptionRule } from '../src/parameters/options';
 import { SIMULATION_OPTIONS, validateParameters } from '../src/parameters/parameters';
 import { SHADING_OPTIONS, SUN_OPTIONS } from '../src/parameters/sceneOptions';
 
@@ -98,30 +98,6 @@ function optionNamed(name: string): ShotOption | undefined {
   return OPTIONS.get(Object.hasOwn(ALIASES, name) ? ALIASES[name] : name);
 }
 
-/** Levenshtein distance, for "did you mean". */
-function distance(a: string, b: string): number {
-  let previous = Array.from({ length: b.length + 1 }, (_, j) => j);
-  for (let i = 1; i <= a.length; i++) {
-    const current = [i];
-    for (let j = 1; j <= b.length; j++) {
-      current[j] = Math.min(previous[j] + 1, current[j - 1] + 1, previous[j - 1] + (a[i - 1] === b[j - 1] ? 0 : 1));
-    }
-    previous = current;
-  }
-  return previous[b.length];
-}
-
-/** The known name nearest to `name` (a name that contains it, or it contains, counts as near). */
-function nearest(name: string, known: readonly string[]): string {
-  let best = known[0];
-  let bestScore = Infinity;
-  for (const candidate of known) {
-    const score = candidate.includes(name) || name.includes(candidate) ? Math.abs(candidate.length - name.length) / 4 : distance(name, candidate);
-    if (score < bestScore) [best, bestScore] = [candidate, score];
-  }
-  return best;
-}
-
 /** The value of --name (written `text`), or a UsageError that names it. */
 function readOption(name: string, option: ShotOption, text: string): unknown {
   const rename = (message: string, key: string) => (message.startsWith(key) ? `--${name}${message.slice(key.length)}` : `--${name}: ${message}`);
@@ -149,7 +125,7 @@ function stateFromOptions(query: URLSearchParams): AppState {
     const name = parameter.slice(2);
     const option = optionNamed(name);
     if (!option) {
-      throw new UsageError(`unknown option --${name}; did you mean --${nearest(name, known)}? (--help lists them all)`);
+      throw new UsageError(`unknown option --${name}; did you mean --${nearestName(name, known)}? (--help lists them all)`);
     }
     const earlier = given.get(option.stateKey);
     if (earlier !== undefined) throw new UsageError(`--${name} is given twice${earlier === name ? '' : ` (also as --${earlier})`}`);

@@ -17,7 +17,9 @@ import { SkyBackground } from './render/skyBackground';
 import { SkyEnvironment } from './render/skyEnvironment';
 import { OceanSimulation, type SimulationOptions } from './layers/oceanSimulation';
 import { heightAt } from './layers/surfaceQuery';
+import { unknownOption } from './parameters/options';
 import { ParameterError, SIMULATION_OPTIONS, type SimulationParameters } from './parameters/parameters';
+import { SHADING_OPTIONS, SUN_OPTIONS, type ShadingOptions } from './parameters/sceneOptions';
 import type { InitialSpectrum } from './spectrum/initialSpectrum';
 import { spectralMoments } from './spectrum/seaState';
 
@@ -28,8 +30,10 @@ export interface OceanOptions extends Partial<SimulationParameters>, OceanShadin
   sunAzimuth?: number;
 }
 
-const SHADING_KEYS = ['ior', 'absorption', 'scatterColour', 'causticPower', 'causticColour', 'shadingMode'] as const;
+const SHADING_KEYS = Object.keys(SHADING_OPTIONS) as (keyof ShadingOptions)[];
 const SIMULATION_KEYS = Object.keys(SIMULATION_OPTIONS) as (keyof SimulationParameters)[];
+/** Every option the constructor takes: a misspelt one is an error, not silently ignored. */
+const OCEAN_OPTION_KEYS: readonly string[] = [...SIMULATION_KEYS, ...SHADING_KEYS, ...Object.keys(SUN_OPTIONS), 'path', 'worker'];
 
 /** Significant wave height (m) and peak period (s) of a sea state. */
 export interface SeaStateSummary {
@@ -50,6 +54,9 @@ export class Ocean extends Object3D {
   constructor(renderer: WebGLRenderer, options: OceanOptions = {}) {
     super();
     this.name = 'Ocean';
+    for (const [key, value] of Object.entries(options)) {
+      if (!OCEAN_OPTION_KEYS.includes(key)) throw unknownOption(key, value, OCEAN_OPTION_KEYS);
+    }
     const simulationParameters = pick(options, SIMULATION_KEYS);
     const shading = pick(options, SHADING_KEYS);
     this.simulation = new OceanSimulation(renderer, simulationParameters, { path: options.path, worker: options.worker });

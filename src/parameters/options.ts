@@ -45,8 +45,39 @@ function describeValue(value: unknown): string {
 }
 
 function ruleOf<T>(table: OptionTable<T>, key: string, value: unknown): OptionRule {
-  if (!Object.hasOwn(table, key)) throw new ParameterError(key, value, `one of ${Object.keys(table).join(', ')}`);
+  if (!Object.hasOwn(table, key)) throw unknownOption(key, value, Object.keys(table));
   return table[key as keyof T];
+}
+
+/** The error for an option name that is not one of `known`: it lists them and suggests the nearest. */
+export function unknownOption(name: string, value: unknown, known: readonly string[]): ParameterError {
+  return new ParameterError(name, value, `one of ${known.join(', ')} (did you mean ${nearestName(name, known)}?)`);
+}
+
+/** Levenshtein distance, for "did you mean". */
+function editDistance(a: string, b: string): number {
+  let previous = Array.from({ length: b.length + 1 }, (_, j) => j);
+  for (let i = 1; i <= a.length; i++) {
+    const current = [i];
+    for (let j = 1; j <= b.length; j++) {
+      current[j] = Math.min(previous[j] + 1, current[j - 1] + 1, previous[j - 1] + (a[i - 1] === b[j - 1] ? 0 : 1));
+    }
+    previous = current;
+  }
+  return previous[b.length];
+}
+
+/** The known name nearest to `name`, case aside (a name that contains it, or it contains, counts as near). */
+export function nearestName(name: string, known: readonly string[]): string {
+  const lower = name.toLowerCase();
+  let best = known[0];
+  let bestScore = Infinity;
+  for (const candidate of known) {
+    const other = candidate.toLowerCase();
+    const score = other.includes(lower) || lower.includes(other) ? Math.abs(other.length - lower.length) / 4 : editDistance(lower, other);
+    if (score < bestScore) [best, bestScore] = [candidate, score];
+  }
+  return best;
 }
 
 /** Throws a ParameterError naming `key` unless `value` is allowed for it. */
