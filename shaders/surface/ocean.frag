@@ -24,6 +24,8 @@ uniform float heightScale;     // metres shown as full white in the height mode
 
 varying vec2 vLayerUv[LAYER_COUNT];
 varying float vCrossDerivative;  // λ·Σ ∂Dx/∂z, see ocean.vert
+varying vec2 vBlend;             // the largest layer's two copies' weights, see ocean.vert
+varying vec2 vBlendSlope;
 varying vec3 vWorldPosition;
 centroid varying vec2 vRestPosition;  // see ocean.vert
 flat varying float vRing;
@@ -54,10 +56,15 @@ void main() {
 
   vec4 derivatives = vec4(0.0);  // Σ (∂h/∂x, ∂h/∂z, ∂Dx/∂x, ∂Dz/∂z)
   #pragma unroll_loop_start
-  for (int i = 0; i < LAYER_COUNT; i++) {
+  for (int i = 0; i < LAYER_COUNT - 1; i++) {
     derivatives += texture(tLayerDerivatives[ i ], vLayerUv[ i ]);
   }
   #pragma unroll_loop_end
+  // The largest layer, blended from its two copies (src/layers/patchBlend.ts).
+  vec2 largestUv = vLayerUv[LAYER_COUNT - 1];
+  derivatives += vBlend.x * texture(tLayerDerivatives[LAYER_COUNT - 1], largestUv) +
+                 vBlend.y * texture(tLayerDerivatives[LAYER_COUNT - 1], largestUv + copyOffset);
+  derivatives.xy += vBlendSlope;
   derivatives.zw *= choppiness;
   float dxDz = vCrossDerivative;
   vec3 normal = choppyNormal(derivatives, dxDz);

@@ -1,6 +1,6 @@
 // Ocean surface, vertex stage: a horizon-grid vertex displaced by the sum of the wave layers,
-// P = x0 + Σ (λ·Dx, h, λ·Dz) sampled at the rest point x0 (src/fft/waveFieldLayout.ts), moved by
-// the slow surface warp w(x0) (src/layers/surfaceWarp.ts).
+// P = x0 + Σ (λ·Dx, h, λ·Dz) sampled at the rest point x0 (src/fft/waveFieldLayout.ts), the
+// largest cascade as a blend of two copies (src/layers/patchBlend.ts).
 #include "surface/horizonGrid.glsl"
 #include "surface/waveLayers.glsl"
 
@@ -14,6 +14,11 @@ varying vec2 vLayerUv[LAYER_COUNT];  // each layer's coordinates of the rest poi
 // texture per layer instead of two. It is a second-order correction of the normal; its value at
 // the vertex's mip level is all the detail it needs.
 varying float vCrossDerivative;
+// The blend's weights (cos θ, sin θ), and the part of the height's slope that comes from their
+// change, (−sin θ·h1 + cos θ·h2)·∇θ (h1, h2 the two copies' heights): both vary over hundreds of
+// metres and are interpolated.
+varying vec2 vBlend;
+varying vec2 vBlendSlope;
 varying vec3 vWorldPosition;
 // centroid: with multisampling, a pixel only partly covered by a triangle must not evaluate the
 // rest point outside it (the ring-overlap test in ocean.frag would then keep a dropped triangle).
@@ -31,14 +36,21 @@ uniform float captureHeight;
 
 void main() {
   GridPoint point = horizonGridPoint();
-  vec2 sampled = point.fromCentre + surfaceWarpOffset(point.world);  // from the ring centre, metres
+  vec4 blend = blendWeights(point.world);
   vec4 displacement = vec4(0.0);
   #pragma unroll_loop_start
   for (int i = 0; i < LAYER_COUNT; i++) {
-    vLayerUv[ i ] = ringLayerUvOrigins[point.frameRing * LAYER_COUNT + UNROLLED_LOOP_INDEX] + sampled / layerSizes[ i ];
+    vLayerUv[ i ] = ringLayerUvOrigins[point.frameRing * LAYER_COUNT + UNROLLED_LOOP_INDEX] + point.fromCentre / layerSizes[ i ];
     displacement += textureLod(tLayerDisplacement[ i ], vLayerUv[ i ], point.lod + layerLodBias[ i ]);
   }
   #pragma unroll_loop_end
+  // The largest layer went in once with weight 1: make it cos θ·P(x) + sin θ·P(x + o).
+  float largestLod = point.lod + layerLodBias[LAYER_COUNT - 1];
+  vec4 first = textureLod(tLayerDisplacement[LAYER_COUNT - 1], vLayerUv[LAYER_COUNT - 1], largestLod);
+  vec4 copy = textureLod(tLayerDisplacement[LAYER_COUNT - 1], vLayerUv[LAYER_COUNT - 1] + copyOffset, largestLod);
+  displacement += (blend.x - 1.0) * first + blend.y * copy;
+  vBlend = blend.xy;
+  vBlendSlope = (blend.x * copy.y - blend.y * first.y) * blend.zw;
   displacement.xzw *= choppiness;
   vCrossDerivative = displacement.w;
   vec3 world = vec3(point.world.x, 0.0, point.world.y) + displacement.xyz;

@@ -11,15 +11,20 @@ uniform float layerSizes[LAYER_COUNT];              // metres
 uniform float layerLodBias[LAYER_COUNT];            // log2(finest texel / this layer's texel)
 uniform float choppiness;                           // λ
 
-// The slow warp of where the cascades are sampled, w(x) = Σ a_j·d_j·sin(k_j·x + φ_j)
-// (src/layers/surfaceWarp.ts, which says why and fills surfaceWarp: per component
-// (kx, kz, φ, a) then (dx, dz, 0, 0)). Returns w at the rest point, metres.
-uniform vec4 surfaceWarp[6];
+// The largest cascade is drawn twice and blended (src/layers/patchBlend.ts says why and fills
+// these): cos θ·P(x) + sin θ·P(x + o), θ(x) = Σ a_j·sin(k_j·x + φ_j), patchBlend[j] = (kx, kz, φ, a),
+// copyOffset = o in the largest layer's texture coordinates.
+uniform vec4 patchBlend[3];
+uniform vec2 copyOffset;
 
-vec2 surfaceWarpOffset(vec2 world) {
-  vec2 offset = vec2(0.0);
-  for (int j = 0; j < 6; j += 2) {
-    offset += surfaceWarp[j].w * sin(dot(surfaceWarp[j].xy, world) + surfaceWarp[j].z) * surfaceWarp[j + 1].xy;
+// (cos θ, sin θ, ∂θ/∂x, ∂θ/∂z) at the rest point `world`.
+vec4 blendWeights(vec2 world) {
+  float theta = 0.0;
+  vec2 gradient = vec2(0.0);
+  for (int j = 0; j < 3; j++) {
+    float phase = dot(patchBlend[j].xy, world) + patchBlend[j].z;
+    theta += patchBlend[j].w * sin(phase);
+    gradient += patchBlend[j].w * cos(phase) * patchBlend[j].xy;
   }
-  return offset;
+  return vec4(cos(theta), sin(theta), gradient);
 }

@@ -1,12 +1,13 @@
 /**
  * Questions about the sea surface answered on the CPU from the same layers the surface draws:
  * the sum of every layer's fields (waveLayer.ts), with the horizontal parts scaled by the
- * choppiness λ, sampled bilinearly as the GPU samples them at mip level 0, periodic layers at the
- * warped point x + w(x) (surfaceWarp.ts). Newton's Jacobian leaves out the warp's own gradient
- * (at most WARP_MAX_STRAIN): the steps are a little off, the converged point is not.
+ * choppiness λ, sampled bilinearly as the GPU samples them at mip level 0, the largest periodic
+ * layer as the blend of its two copies cos θ·P(x) + sin θ·P(x + o) (patchBlend.ts). Newton's
+ * Jacobian leaves out the blend weights' own slow gradient: the steps are a little off, the
+ * converged point is not.
  */
-import { surfaceWarp } from './surfaceWarp';
-import type { WaveLayer } from './waveLayer';
+import { blendAngle, COPY_OFFSET, patchBlendUniforms } from './patchBlend';
+import type { LayerFieldsOnCpu, WaveLayer } from './waveLayer';
 
 /** The summed fields at one rest point: displacement and the Jacobian terms of the choppy map. */
 interface SurfaceSample {
@@ -51,25 +52,46 @@ export function heightAt(layers: readonly WaveLayer[], choppiness: number, t: nu
   return sample.height;
 }
 
-const warp: [number, number] = [0, 0];
+const blendUniforms = new Float32Array(12);
 
 /** Sums every layer's fields at the rest point (x, z) into `out`. */
 function sampleLayers(layers: readonly WaveLayer[], t: number, x: number, z: number, out: SurfaceSample): void {
   out.dx = out.height = out.dz = out.dxdx = out.dzdz = out.dxdz = 0;
-  const [warpX, warpZ] = surfaceWarp(x, z, warp);
-  for (const layer of layers) {
+  const blended = largestPeriodicLayer(layers);
+  layers.forEach((layer, i) => {
     const { size, origin, resolution, periodic } = layer.frame;
-    const u = ((periodic ? x + warpX : x) - origin[0]) / size * resolution;
-    const v = ((periodic ? z + warpZ : z) - origin[1]) / size * resolution;
-    if (!periodic && (u < 0 || v < 0 || u > resolution - 1 || v > resolution - 1)) continue;
-    const { displacement, derivatives } = layer.fieldsOnCpu(t);
-    out.dx += bilinear(displacement, resolution, u, v, 0);
-    out.height += bilinear(displacement, resolution, u, v, 1);
-    out.dz += bilinear(displacement, resolution, u, v, 2);
-    out.dxdz += bilinear(displacement, resolution, u, v, 3);
-    out.dxdx += bilinear(derivatives, resolution, u, v, 2);
-    out.dzdz += bilinear(derivatives, resolution, u, v, 3);
-  }
+    const u = ((x - origin[0]) / size) * resolution;
+    const v = ((z - origin[1]) / size) * resolution;
+    if (!periodic && (u < 0 || v < 0 || u > resolution - 1 || v > resolution - 1)) return;
+    const fields = layer.fieldsOnCpu(t);
+    if (i !== blended) {
+      addSample(fields, resolution, u, v, 1, out);
+      return;
+    }
+    const theta = blendAngle(patchBlendUniforms(size, blendUniforms), x, z);
+    addSample(fields, resolution, u, v, Math.cos(theta), out);
+    addSample(fields, resolution, u + COPY_OFFSET[0] * resolution, v + COPY_OFFSET[1] * resolution, Math.sin(theta), out);
+  });
+}
+
+/** Index of the largest periodic layer, the one drawn as a blend of two copies (−1 if none). */
+export function largestPeriodicLayer(layers: readonly WaveLayer[]): number {
+  let largest = -1;
+  layers.forEach((layer, i) => {
+    if (layer.frame.periodic && (largest < 0 || layer.frame.size > layers[largest].frame.size)) largest = i;
+  });
+  return largest;
+}
+
+/** Adds `weight` × the fields at texel coordinates (u, v) into `out`. */
+function addSample(fields: LayerFieldsOnCpu, n: number, u: number, v: number, weight: number, out: SurfaceSample): void {
+  const { displacement, derivatives } = fields;
+  out.dx += weight * bilinear(displacement, n, u, v, 0);
+  out.height += weight * bilinear(displacement, n, u, v, 1);
+  out.dz += weight * bilinear(displacement, n, u, v, 2);
+  out.dxdz += weight * bilinear(displacement, n, u, v, 3);
+  out.dxdx += weight * bilinear(derivatives, n, u, v, 2);
+  out.dzdz += weight * bilinear(derivatives, n, u, v, 3);
 }
 
 /**

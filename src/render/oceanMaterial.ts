@@ -4,8 +4,9 @@
  * absorption, Guardado caustics) plus a sun glint, and debug modes that reproduce the report's
  * figures. Typed setters check their values and keep the last good one when a value is bad.
  */
-import { Color, DoubleSide, ShaderMaterial, UniformsLib, UniformsUtils, Vector3, type Texture } from 'three';
-import { SURFACE_WARP_UNIFORMS } from '../layers/surfaceWarp';
+import { Color, DoubleSide, ShaderMaterial, UniformsLib, UniformsUtils, Vector2, Vector3, type Texture } from 'three';
+import { COPY_OFFSET, patchBlendUniforms } from '../layers/patchBlend';
+import { largestPeriodicLayer } from '../layers/surfaceQuery';
 import type { WaveLayer } from '../layers/waveLayer';
 import { mergeOptions } from '../parameters/options';
 import { DEFAULT_SHADING, SHADING_MODES, SHADING_OPTIONS, type ShadingOptions } from '../parameters/sceneOptions';
@@ -42,7 +43,8 @@ export class OceanMaterial extends ShaderMaterial {
           layerSizes: { value: [] as number[] },
           layerLodBias: { value: [] as number[] },
           choppiness: { value: 1 },
-          surfaceWarp: { value: SURFACE_WARP_UNIFORMS },
+          patchBlend: { value: new Float32Array(12) },
+          copyOffset: { value: new Vector2(...COPY_OFFSET) },
           ringOffsets: { value: new Float32Array(2 * (RING_COUNT + 1)) },
           halfRingCells: { value: 32 },
           sunColour: { value: new Color(12, 11, 9.5) },
@@ -92,6 +94,12 @@ export class OceanMaterial extends ShaderMaterial {
       u.layerLodBias.value[i] = Math.round(Math.log2(finest / (layer.frame.size / layer.frame.resolution)));
     });
     u.choppiness.value = choppiness;
+    // The shaders blend two copies of the last layer (src/layers/patchBlend.ts), as the queries do
+    // for the largest periodic one: they must be the same layer.
+    if (largestPeriodicLayer(layers) !== layers.length - 1) {
+      throw new Error('OceanMaterial.bindLayers: the last layer must be the largest periodic one (it is drawn blended)');
+    }
+    patchBlendUniforms(layers[layers.length - 1].frame.size, u.patchBlend.value);
   }
 
   /** Changes shading options; throws a ParameterError naming the first bad one and changes nothing. */
@@ -122,7 +130,7 @@ export class OceanMaterial extends ShaderMaterial {
     };
   }
 }
-/** The source with LAYER_COUNT's value as the bound of its unrolled loops (see shaders/surface/waveLayers.glsl). */
+/** The source with LAYER_COUNT's value in the bounds of its unrolled loops (see shaders/surface/waveLayers.glsl). */
 function withLayerCount(source: string, layerCount: number): string {
-  return source.replaceAll('i < LAYER_COUNT', `i < ${layerCount}`);
+  return source.replaceAll('i < LAYER_COUNT - 1', `i < ${layerCount - 1}`).replaceAll('i < LAYER_COUNT', `i < ${layerCount}`);
 }

@@ -6,10 +6,10 @@
  * by the number of overlapping pixels (the unbiased estimate). A sea made of copies of one patch
  * has R ≈ 1 at the patch's period. The default sea sums three cascades whose sizes are not whole
  * ratios of each other (13.7, 79.3, 457 m), but from a few km up only the largest one is resolved
- * and its period showed (R = 0.63 at 457 m from 4 km); the slow surface warp (src/layers/
- * surfaceWarp.ts) decorrelates its copies, and R at each period must stay below 0.4. A control
- * renders a single 250 m patch without the warp and must show R above 0.4 at its period: the
- * measurement can fail.
+ * and its period showed (R = 0.63 at 457 m from 4 km); drawing it as a slowly varying blend of two
+ * shifted copies (src/layers/patchBlend.ts) decorrelates its repeats, and R at each period must
+ * stay below 0.4. A control renders a single 250 m patch without the blend and must show R above
+ * 0.4 at its period: the measurement can fail.
  *
  * The frames are written to test-results-<port>/tiling/ (PNG) for a person to look at.
  */
@@ -298,7 +298,7 @@ test.describe('from altitude no tiling is visible', () => {
     });
   }
 
-  test('control: one 250 m patch without the surface warp tiles visibly, and the measurement sees it', async ({ page }) => {
+  test('control: one 250 m patch without the blend tiles visibly, and the measurement sees it', async ({ page }) => {
     await openPage(page);
     await page.evaluate(() => window.tiling.setup({ patchSizes: [250] }, false));
     for (const view of [

@@ -7,12 +7,14 @@
  * wave: with h = A·cos θ, θ = k·x0 + φ, the λ = 1 displacement is D = −k̂·A·sin θ (Tessendorf 2001,
  * eq. 29), and the surface point over the rest point x0 is (x0 + λ·D(x0), h(x0)). Along k̂ the rest
  * coordinate s0 of the point that lands on s solves s0 − λ·A·sin(|k|s0 + φ) = s, a monotone scalar
- * equation when λ·A·|k| < 1. Periodic layers are sampled through the slow surface warp w
- * (surfaceWarp.ts), so the reference solves x0 + λ·D(x0 + w(x0)) = x instead.
+ * equation when λ·A·|k| < 1, solved here by bisection; across k̂ nothing moves. The last layer
+ * is drawn as cos θ·P(x) + sin θ·P(x + o) (patchBlend.ts): where that layer holds part of the wave,
+ * the reference below writes the blended field out and solves for the rest point by fixed-point
+ * iteration instead.
  */
 import { describe, expect, it } from 'vitest';
+import { blendAngle, COPY_OFFSET, patchBlendUniforms } from '../../src/layers/patchBlend';
 import { heightAt } from '../../src/layers/surfaceQuery';
-import { surfaceWarp, WARP_MAX_STRAIN } from '../../src/layers/surfaceWarp';
 import type { LayerFrame, WaveLayer } from '../../src/layers/waveLayer';
 
 /** A layer with fixed fields (the same at every t), recording the times it was asked for. */
@@ -66,30 +68,27 @@ function waveLayer(wave: Wave, share: number, frame: LayerFrame): FakeLayer {
   return fakeLayer(frame, displacement, derivatives);
 }
 
-/** w(x, z), the surface warp the periodic layers are sampled through (surfaceWarp.ts). */
-function warp(x: number, z: number): [number, number] {
-  return surfaceWarp(x, z, [0, 0]);
-}
-
 /**
- * Height of the Gerstner surface of `wave` with choppiness λ at the world point (x, z), the layers
- * sampled through the warp: the rest point x0 with x0 + λ·D(x0 + w(x0)) = (x, z), found here by
- * plain fixed-point iteration (a contraction: λ·A·|k|·(1 + WARP_MAX_STRAIN) < 1), independent of
- * heightAt's Newton steps; the height is H(x0 + w(x0)).
+ * Height at (x, z) of the surface made of `fineShare` of the wave on a plain layer and the rest on a
+ * blended last layer of side `lastSize`: h(x0) = A·(f·cos ψ + (1 − f)·(cos θ·cos ψ + sin θ·cos(ψ + k·o))),
+ * ψ = k·x0 + φ, θ the blend angle at x0, o the copy's shift; D likewise with sin for cos and −k̂.
+ * The rest point x0 with x0 + λ·D(x0) = (x, z) is found by fixed-point iteration.
  */
-function gerstnerHeight(wave: Wave, lambda: number, x: number, z: number): number {
+function blendedHeight(wave: Wave, fineShare: number, lastSize: number, lambda: number, x: number, z: number): number {
   const k = Math.hypot(wave.kx, wave.kz);
-  const a = wave.amplitude;
-  expect(lambda * a * k * (1 + WARP_MAX_STRAIN)).toBeLessThan(1); // no folds: one rest point per surface point
+  const blend = patchBlendUniforms(lastSize);
+  const shift = wave.kx * COPY_OFFSET[0] * lastSize + wave.kz * COPY_OFFSET[1] * lastSize;
+  const field = (x0: number, z0: number, f: (angle: number) => number) => {
+    const psi = wave.kx * x0 + wave.kz * z0 + wave.phase;
+    const theta = blendAngle(blend, x0, z0);
+    return wave.amplitude * (fineShare * f(psi) + (1 - fineShare) * (Math.cos(theta) * f(psi) + Math.sin(theta) * f(psi + shift)));
+  };
   let [x0, z0] = [x, z];
   for (let step = 0; step < 20_000; step++) {
-    const [wx, wz] = warp(x0, z0);
-    const s = a * Math.sin(wave.kx * (x0 + wx) + wave.kz * (z0 + wz) + wave.phase);
-    // D = −k̂·A·sin θ, so x0 = (x, z) − λ·D = (x, z) + λ·k̂·A·sin θ.
+    const s = field(x0, z0, Math.sin); // D = −k̂·s, so x0 = (x, z) + λ·k̂·s
     [x0, z0] = [x + (lambda * wave.kx * s) / k, z + (lambda * wave.kz * s) / k];
   }
-  const [wx, wz] = warp(x0, z0);
-  return a * Math.cos(wave.kx * (x0 + wx) + wave.kz * (z0 + wz) + wave.phase);
+  return field(x0, z0, Math.cos);
 }
 
 describe('heightAt over two periodic layers that split one cosine wave', () => {
@@ -115,53 +114,29 @@ describe('heightAt over two periodic layers that split one cosine wave', () => {
   ];
 
   for (const lambda of [0.7, 1.5, 3]) {
-    it(`equals the Gerstner wave’s height within 1e-4 m with choppiness ${lambda}`, () => {
+    it(`equals the choppy surface’s height within 1e-4 m with choppiness ${lambda}`, () => {
       let worst = 0;
       let moved = 0;
       for (const [x, z] of points) {
-        const want = gerstnerHeight(wave, lambda, x, z);
+        const want = blendedHeight(wave, 0.7, 20, lambda, x, z);
         worst = Math.max(worst, Math.abs(heightAt(layers, lambda, 12.5, x, z) - want));
         // The choppy height differs from the plain cosine at (x, z): the test sees the displacement.
-        const [wx, wz] = warp(x, z);
-        moved = Math.max(moved, Math.abs(want - wave.amplitude * Math.cos(wave.kx * (x + wx) + wave.kz * (z + wz) + wave.phase)));
+        moved = Math.max(moved, Math.abs(want - wave.amplitude * Math.cos(wave.kx * x + wave.kz * z + wave.phase)));
       }
       expect(worst).toBeLessThan(1e-4);
       expect(moved).toBeGreaterThan(0.05);
     });
   }
 
-  it('with choppiness 0 is the plain sum of the layers’ heights', () => {
-    // At points whose warped position lies on both grids' texels, bilinear interpolation returns
-    // the texels themselves: the sum of the two float32 values (1e-9 for the rounding of the
-    // texel coordinates and of the point found by iteration).
-    for (const [i, j] of [
-      [0, 0],
-      [17, 300],
-      [511, 5],
-      [-40, 1000],
-    ]) {
-      const [targetX, targetZ] = [(i * 10) / 512, (j * 10) / 512];
-      // The point (x, z) with (x, z) + w(x, z) on that texel.
-      let [x, z] = [targetX, targetZ];
-      for (let step = 0; step < 100; step++) {
-        const [wx, wz] = warp(x, z);
-        [x, z] = [targetX - wx, targetZ - wz];
-      }
-      const texel = (layer: FakeLayer, x0: number, z0: number) => {
-        const { size, origin, resolution: n } = layer.frame;
-        const u = (((Math.round(((x0 - origin[0]) / size) * n) % n) + n) % n) as number;
-        const v = (((Math.round(((z0 - origin[1]) / size) * n) % n) + n) % n) as number;
-        return layer.fieldsOnCpu(0).displacement[4 * (v * n + u) + 1];
-      };
-      const sum = texel(fine, targetX, targetZ) + texel(coarse, targetX, targetZ);
-      expect(Math.abs(heightAt(layers, 0, 0, x, z) - sum)).toBeLessThan(1e-9);
-    }
-    // Anywhere: the cosine at the warped point, within the interpolation error.
+  it('with choppiness 0 is the blended field at the point itself, not the plain sum', () => {
+    let blendShows = 0;
     for (const [x, z] of points) {
-      const [wx, wz] = warp(x, z);
-      const want = wave.amplitude * Math.cos(wave.kx * (x + wx) + wave.kz * (z + wz) + wave.phase);
+      const want = blendedHeight(wave, 0.7, 20, 0, x, z);
       expect(Math.abs(heightAt(layers, 0, 0, x, z) - want)).toBeLessThan(1e-4);
+      blendShows = Math.max(blendShows, Math.abs(want - wave.amplitude * Math.cos(wave.kx * x + wave.kz * z + wave.phase)));
     }
+    // The copies differ from the plain wave by a good part of the coarse layer's 0.09 m.
+    expect(blendShows).toBeGreaterThan(0.03);
   });
 
   it('asks every layer for its fields at the time it was given', () => {
@@ -184,7 +159,8 @@ describe('heightAt with a non-periodic layer', () => {
 
   it('contributes nothing outside its square, and its fields inside', () => {
     for (const lambda of [0, 1.2]) {
-      // At least λ·A = 0.24 m inside its texels' span [100, 109.69] (see below).
+      // At least λ·A = 0.24 m inside its texels' span [100, 109.69]: the choppy background moves
+      // the rest point by up to that (see below).
       const inside: [number, number][] = [
         [100.3, 200.3],
         [104.2, 203.7],

@@ -24,7 +24,7 @@ import { OceanMaterial, type OceanShadingOptions } from '../../../src/render/oce
 import { OceanSurface } from '../../../src/render/oceanSurface';
 import { CpuWaveFields } from '../../../src/fft/cpuWaveFields';
 import { OceanSimulation } from '../../../src/layers/oceanSimulation';
-import { surfaceWarp } from '../../../src/layers/surfaceWarp';
+import { blendAngle, COPY_OFFSET, patchBlendUniforms } from '../../../src/layers/patchBlend';
 import type { SimulationParameters } from '../../../src/parameters/parameters';
 
 const query = new URLSearchParams(location.search);
@@ -237,15 +237,22 @@ function geometryCheck(t: number, withRestPoints = false) {
     }
   }
   const rms = Math.sqrt(sumSquares / (n * n));
-  /** Σ over layers of the field sampled at rest point (x, z) moved by the surface warp, each at its own mip level. */
+  const blend = patchBlendUniforms(largest.size);
+  /**
+   * Σ over layers of the field sampled at rest point (x, z), each at its own mip level, the
+   * largest as cos θ·P(x) + sin θ·P(x + o) (src/layers/patchBlend.ts).
+   */
   const summed = (x: number, z: number, lod: number, pick: (layer: (typeof layers)[number], level: number) => Float32Array): number[] => {
     const total = [0, 0, 0, 0];
-    const [wx, wz] = surfaceWarp(x, z, [0, 0]);
-    for (const layer of layers) {
+    const theta = blendAngle(blend, x, z);
+    layers.forEach((layer, i) => {
       const level = Math.min(Math.max(0, Math.round(lod) + layer.lodBias), layer.mips.length - 1); // GL clamps
-      const value = sampleBilinear(pick(layer, level), n >> level, (x + wx) / layer.size + 0.5 / n, (z + wz) / layer.size + 0.5 / n);
-      for (let c = 0; c < 4; c++) total[c] += value[c];
-    }
+      const at = (u: number, v: number) => sampleBilinear(pick(layer, level), n >> level, u + 0.5 / n, v + 0.5 / n);
+      const [u, v] = [x / layer.size, z / layer.size];
+      const copies: [number, number[]][] =
+        i === layers.length - 1 ? [[Math.cos(theta), at(u, v)], [Math.sin(theta), at(u + COPY_OFFSET[0], v + COPY_OFFSET[1])]] : [[1, at(u, v)]];
+      for (const [weight, value] of copies) for (let c = 0; c < 4; c++) total[c] += weight * value[c];
+    });
     return total;
   };
   const byLevel: Record<string, { count: number; maxError: number }> = {};

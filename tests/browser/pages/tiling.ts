@@ -6,7 +6,6 @@
  */
 import { ACESFilmicToneMapping, PerspectiveCamera, Scene, SRGBColorSpace, Vector3, WebGLRenderer } from 'three';
 import { Ocean, type OceanOptions } from '../../../src/ocean';
-import { SURFACE_WARP_UNIFORMS } from '../../../src/layers/surfaceWarp';
 
 const query = new URLSearchParams(location.search);
 const size = Number(query.get('size') ?? 512);
@@ -26,16 +25,25 @@ let scene = new Scene();
 const harness = {
   fov: FOV,
   /**
-   * Replaces the sea with a new Ocean of these options; `warp: false` switches the surface warp off
-   * (src/layers/surfaceWarp.ts), for the control that shows what the measurement sees without it.
+   * Replaces the sea with a new Ocean of these options; `blend: false` draws the largest cascade
+   * once (θ = 0 in src/layers/patchBlend.ts), for the control that shows what the measurement sees
+   * without the blend.
    */
-  setup(options: OceanOptions, warp = true): void {
+  setup(options: OceanOptions, blend = true): void {
     if (ocean) {
       ocean.removeFromParent();
       ocean.dispose();
     }
     ocean = new Ocean(renderer, { path: 'gpu', worker: false, ...options });
-    if (!warp) ocean.surface.material.uniforms.surfaceWarp.value = new Float32Array(SURFACE_WARP_UNIFORMS.length);
+    if (!blend) {
+      // bindLayers sets the blend from the largest layer's size before each draw: amplitudes 0 keep θ = 0.
+      const material = ocean.surface.material;
+      const bind = material.bindLayers.bind(material);
+      material.bindLayers = (layers, choppiness) => {
+        bind(layers, choppiness);
+        for (let j = 3; j < 12; j += 4) material.uniforms.patchBlend.value[j] = 0;
+      };
+    }
     scene = new Scene().add(ocean);
   },
   /**
