@@ -21,6 +21,8 @@
  * patchBlendUniforms) and in the queries (surfaceQuery.ts); the geometry test checks they agree.
  */
 
+import type { WaveLayer } from './waveLayer';
+
 interface BlendComponent {
   /** Wavelength of θ's component in patch sizes of the largest cascade. */
   wavelength: number;
@@ -46,12 +48,25 @@ export const COPY_OFFSET: readonly [number, number] = [0.381966, 0.618034];
  * patchBlend[3] of waveLayers.glsl, and what blendAngle reads.
  */
 export function patchBlendUniforms(size: number, out = new Float32Array(4 * COMPONENTS.length)): Float32Array {
-  COMPONENTS.forEach((c, j) => {
+  for (let j = 0; j < COMPONENTS.length; j++) {
+    const c = COMPONENTS[j];
     const k = (2 * Math.PI) / (c.wavelength * size);
     const angle = (c.direction * Math.PI) / 180;
-    out.set([k * Math.cos(angle), k * Math.sin(angle), c.phase, c.amplitude], 4 * j);
-  });
+    out[4 * j] = k * Math.cos(angle);
+    out[4 * j + 1] = k * Math.sin(angle);
+    out[4 * j + 2] = c.phase;
+    out[4 * j + 3] = c.amplitude;
+  }
   return out;
+}
+
+/** Index of the largest periodic layer, the one drawn as a blend of two copies (−1 if none). */
+export function largestPeriodicLayer(layers: readonly WaveLayer[]): number {
+  let largest = -1;
+  layers.forEach((layer, i) => {
+    if (layer.frame.periodic && (largest < 0 || layer.frame.size > layers[largest].frame.size)) largest = i;
+  });
+  return largest;
 }
 
 /** θ(x, z) for the given uniforms (patchBlendUniforms), radians. */

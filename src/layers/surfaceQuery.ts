@@ -6,7 +6,7 @@
  * Jacobian leaves out the blend weights' own slow gradient: the steps are a little off, the
  * converged point is not.
  */
-import { blendAngle, COPY_OFFSET, patchBlendUniforms } from './patchBlend';
+import { blendAngle, COPY_OFFSET, largestPeriodicLayer, patchBlendUniforms } from './patchBlend';
 import type { LayerFieldsOnCpu, WaveLayer } from './waveLayer';
 
 /** The summed fields at one rest point: displacement and the Jacobian terms of the choppy map. */
@@ -28,10 +28,11 @@ interface SurfaceSample {
  */
 export function heightAt(layers: readonly WaveLayer[], choppiness: number, t: number, x: number, z: number): number {
   const sample: SurfaceSample = { dx: 0, height: 0, dz: 0, dxdx: 0, dzdz: 0, dxdz: 0 };
+  const blended = prepareBlend(layers);
   let restX = x;
   let restZ = z;
   for (let iteration = 0; iteration < 20; iteration++) {
-    sampleLayers(layers, t, restX, restZ, sample);
+    sampleLayers(layers, blended, t, restX, restZ, sample);
     const residualX = restX + choppiness * sample.dx - x;
     const residualZ = restZ + choppiness * sample.dz - z;
     if (Math.abs(residualX) + Math.abs(residualZ) < 1e-7) break;
@@ -48,16 +49,22 @@ export function heightAt(layers: readonly WaveLayer[], choppiness: number, t: nu
       restZ -= 0.5 * residualZ;
     }
   }
-  sampleLayers(layers, t, restX, restZ, sample);
+  sampleLayers(layers, blended, t, restX, restZ, sample);
   return sample.height;
 }
 
 const blendUniforms = new Float32Array(12);
 
-/** Sums every layer's fields at the rest point (x, z) into `out`. */
-function sampleLayers(layers: readonly WaveLayer[], t: number, x: number, z: number, out: SurfaceSample): void {
-  out.dx = out.height = out.dz = out.dxdx = out.dzdz = out.dxdz = 0;
+/** Which layer is drawn blended, and its blend's uniforms (patchBlend.ts); set once per query. */
+function prepareBlend(layers: readonly WaveLayer[]): number {
   const blended = largestPeriodicLayer(layers);
+  if (blended >= 0) patchBlendUniforms(layers[blended].frame.size, blendUniforms);
+  return blended;
+}
+
+/** Sums every layer's fields at the rest point (x, z) into `out`; `blended` from prepareBlend. */
+function sampleLayers(layers: readonly WaveLayer[], blended: number, t: number, x: number, z: number, out: SurfaceSample): void {
+  out.dx = out.height = out.dz = out.dxdx = out.dzdz = out.dxdz = 0;
   layers.forEach((layer, i) => {
     const { size, origin, resolution, periodic } = layer.frame;
     const u = ((x - origin[0]) / size) * resolution;
@@ -68,19 +75,10 @@ function sampleLayers(layers: readonly WaveLayer[], t: number, x: number, z: num
       addSample(fields, resolution, u, v, 1, out);
       return;
     }
-    const theta = blendAngle(patchBlendUniforms(size, blendUniforms), x, z);
+    const theta = blendAngle(blendUniforms, x, z);
     addSample(fields, resolution, u, v, Math.cos(theta), out);
     addSample(fields, resolution, u + COPY_OFFSET[0] * resolution, v + COPY_OFFSET[1] * resolution, Math.sin(theta), out);
   });
-}
-
-/** Index of the largest periodic layer, the one drawn as a blend of two copies (−1 if none). */
-export function largestPeriodicLayer(layers: readonly WaveLayer[]): number {
-  let largest = -1;
-  layers.forEach((layer, i) => {
-    if (layer.frame.periodic && (largest < 0 || layer.frame.size > layers[largest].frame.size)) largest = i;
-  });
-  return largest;
 }
 
 /** Adds `weight` × the fields at texel coordinates (u, v) into `out`. */

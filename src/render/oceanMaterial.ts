@@ -5,8 +5,7 @@
  * figures. Typed setters check their values and keep the last good one when a value is bad.
  */
 import { Color, DoubleSide, ShaderMaterial, UniformsLib, UniformsUtils, Vector2, Vector3, type Texture } from 'three';
-import { COPY_OFFSET, patchBlendUniforms } from '../layers/patchBlend';
-import { largestPeriodicLayer } from '../layers/surfaceQuery';
+import { COPY_OFFSET, largestPeriodicLayer, patchBlendUniforms } from '../layers/patchBlend';
 import type { WaveLayer } from '../layers/waveLayer';
 import { mergeOptions } from '../parameters/options';
 import { DEFAULT_SHADING, SHADING_MODES, SHADING_OPTIONS, type ShadingOptions } from '../parameters/sceneOptions';
@@ -24,6 +23,9 @@ export interface OceanMaterialInputs {
 }
 
 export class OceanMaterial extends ShaderMaterial {
+  /** The list of layers bound last (bindLayers). */
+  private boundLayers: readonly WaveLayer[] | null = null;
+
   constructor(inputs: OceanMaterialInputs, options: OceanShadingOptions = {}, defines: Record<string, unknown> = {}) {
     super({
       // SHADING_MODE is a define, not a uniform: a mode change recompiles (rare), and the full
@@ -70,11 +72,20 @@ export class OceanMaterial extends ShaderMaterial {
   }
 
   /**
-   * Samples these layers (waveLayer.ts) with this choppiness from the next draw on. Cheap when
-   * nothing changed; a new number of layers recompiles the shaders.
+   * Samples these layers (waveLayer.ts) with this choppiness from the next draw on. Called before
+   * every draw: for the list it bound last it only sets the choppiness; a new list rebinds the
+   * textures and sizes, and a new number of layers recompiles the shaders.
    */
   bindLayers(layers: readonly WaveLayer[], choppiness: number): void {
     const u = this.uniforms;
+    u.choppiness.value = choppiness;
+    if (layers === this.boundLayers) return;
+    // The shaders blend two copies of the last layer (src/layers/patchBlend.ts), as the queries do
+    // for the largest periodic one: they must be the same layer.
+    if (largestPeriodicLayer(layers) !== layers.length - 1) {
+      throw new Error('OceanMaterial.bindLayers: the last layer must be the largest periodic one (it is drawn blended)');
+    }
+    this.boundLayers = layers;
     if (layers.length !== this.defines.LAYER_COUNT) {
       this.defines.LAYER_COUNT = layers.length;
       this.vertexShader = withLayerCount(shaderSource('surface/ocean.vert'), layers.length);
@@ -93,12 +104,6 @@ export class OceanMaterial extends ShaderMaterial {
       // Whole mip levels: the vertex stage then filters each layer bilinearly within one level.
       u.layerLodBias.value[i] = Math.round(Math.log2(finest / (layer.frame.size / layer.frame.resolution)));
     });
-    u.choppiness.value = choppiness;
-    // The shaders blend two copies of the last layer (src/layers/patchBlend.ts), as the queries do
-    // for the largest periodic one: they must be the same layer.
-    if (largestPeriodicLayer(layers) !== layers.length - 1) {
-      throw new Error('OceanMaterial.bindLayers: the last layer must be the largest periodic one (it is drawn blended)');
-    }
     patchBlendUniforms(layers[layers.length - 1].frame.size, u.patchBlend.value);
   }
 
