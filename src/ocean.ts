@@ -64,7 +64,7 @@ export class Ocean extends Object3D {
     const sim = this.simulation;
     this.surface = new OceanSurface(
       { environment: this.sky.environment, sunDirection: this.sky.skyUniforms.skySunDirection },
-      () => ({ layers: sim.layers, choppiness: sim.parameters.choppiness }),
+      () => ({ layers: sim.layers, choppiness: sim.parameters.choppiness, foam: sim.foam.texture }),
       shading,
     );
     this.skyBackground = new SkyBackground(this.sky);

@@ -19,3 +19,11 @@ export function shaderSource(path: string, included = new Set<string>()): string
     included.has(name) ? '' : `// ---- ${name}\n${shaderSource(name, included)}// ---- end ${name}`,
   );
 }
+
+/**
+ * The source with LAYER_COUNT's value in the bounds of its loops over layers: three.js unrolls a
+ * loop only when its bound is a number (see shaders/surface/waveLayers.glsl).
+ */
+export function withLayerCount(source: string, layerCount: number): string {
+  return source.replaceAll('i < LAYER_COUNT - 1', `i < ${layerCount - 1}`).replaceAll('i < LAYER_COUNT', `i < ${layerCount}`);
+}

@@ -2,13 +2,14 @@
 //   c = R·c_reflected + T·c_refracted + K·c_caustic  (+ the sun's specular glint),
 // with R the exact Fresnel reflectance, c_reflected / c_refracted sampled from the environment
 // cubemap along reflect() / refract(), the refracted light attenuated in the water volume, and K
-// Guardado's caustic term.
+// Guardado's caustic term; then whitecap foam over it (foam.glsl).
 #include "common/fresnel.glsl"
 #include "surface/choppyNormal.glsl"
 #include "surface/caustics.glsl"
 #include "surface/absorption.glsl"
 #include "sky/environmentLookup.glsl"
 #include "surface/waveLayers.glsl"
+#include "surface/foam.glsl"
 
 uniform vec3 sunDirection;     // towards the sun
 uniform vec3 sunColour;        // radiance of the glint
@@ -98,6 +99,10 @@ void main() {
   vec3 water = throughWater(environmentRadiance(refracted), refracted, absorption, scatterColour, viewDepth);
   vec3 glint = sunColour * reflectance * pow(max(dot(reflected, sunDirection), 0.0), sunShininess);
   vec3 colour = reflectance * sky + (1.0 - reflectance) * water + caustic * causticColour + glint;
+  // The foam field is drawn like the largest layer: two copies, here with weights cos²θ + sin²θ = 1.
+  float coverage = vBlend.x * vBlend.x * texture(tFoam, largestUv).r + vBlend.y * vBlend.y * texture(tFoam, largestUv + copyOffset).r;
+  vec3 foam = foamRadiance(normal, sunDirection, sunColour, environmentRadiance(normal));
+  colour = mix(colour, foam, foamOpacity(coverage, vRestPosition));
   #endif
   gl_FragColor = vec4(colour, 1.0);
   #include <tonemapping_fragment>

@@ -2,8 +2,8 @@
  * The inspector: live tiles of what the course report's figures show, drawn from the real
  * textures into a strip at the bottom of the canvas, with a label and a scale on each —
  * P(k) (Figure 1), h̃0 real and imaginary (Figure 2), the height (Figure 3), the slopes in x and z
- * (Figure 5), the horizontal displacement and the Jacobian — and, last, a plot of the sea state's
- * frequency spectrum S(ω) with Hs and Tp (spectrumPlot.ts).
+ * (Figure 5), the horizontal displacement, the Jacobian and the whitecap foam — and, last, a plot
+ * of the sea state's frequency spectrum S(ω) with Hs and Tp (spectrumPlot.ts).
  *
  * The tiles show one wave layer (an FFT cascade, `cascade`, the largest by default). The spectrum
  * tiles read its CPU-side spectrum through DataTextures the inspector owns (rebuilt, with the
@@ -43,6 +43,7 @@ export class Inspector {
   private readonly density = { value: null as DataTexture | null };
   private readonly fields = { tDisplacement: { value: null as Texture | null }, tDerivatives: { value: null as Texture | null } };
   private readonly amplitudes = { value: null as DataTexture | null };
+  private readonly foam = { value: null as Texture | null };
   private readonly viewport = new Vector4();
   private readonly plot = new SpectrumPlot();
 
@@ -95,6 +96,8 @@ export class Inspector {
         offset: 1,
         text: '0…2 (blue < 1)',
       })),
+      // The foam lies over the largest patch (whitecapFoam.ts), whichever cascade the others show.
+      tile('foam, largest patch', this.foam, { channel: 0 }, () => ({ scale: 0.5, offset: 0.5, text: '0…100 % covered' })),
     ];
     this.labels.appendChild(this.plot.canvas);
     container.appendChild(this.labels);
@@ -102,7 +105,7 @@ export class Inspector {
   }
 
   /** Squares along the bottom: the tiles and the spectrum plot. */
-  static readonly CELL_COUNT = 10;
+  static readonly CELL_COUNT = 11;
 
   /** Size of one square cell in CSS pixels, for a canvas of the given width. */
   static tileSize(canvasWidth: number): number {
@@ -115,6 +118,7 @@ export class Inspector {
     if (layer.spectrum !== this.spectrum) this.refreshSpectrum();
     this.fields.tDisplacement.value = layer.textures.displacement.value;
     this.fields.tDerivatives.value = layer.textures.derivatives.value;
+    this.foam.value = this.ocean.simulation.foam.texture.value;
     const canvas = renderer.domElement;
     const width = canvas.clientWidth;
     const size = Inspector.tileSize(width);

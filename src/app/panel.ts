@@ -88,6 +88,8 @@ export class Panel {
     amplitude.onChange(() => this.change('amplitude', this.amplitudeProxy.micro * 1e-6));
     this.register('amplitude', amplitude);
     this.number(sea, 'choppiness', 'choppiness λ', 0, 4, 0.01);
+    this.number(sea, 'foamAmount', 'whitecap foam (× physical)', 0, 10, 0.05);
+    this.number(sea, 'foamPersistence', 'foam persistence τ (s)', 0.1, 30, 0.1);
 
     const sim = gui.addFolder('Simulation');
     this.bind(sim.add(state, 'resolution', RESOLUTIONS).name('resolution N'), 'resolution');

@@ -66,13 +66,15 @@ export class CpuFieldTextures {
   private receive(reply: WorkerReply): void {
     this.inFlight = false;
     // Swap: the finished arrays go into the textures, the ones they held go back out next time.
-    this.spare = {
-      displacement: this.displacement.image.data as Float32Array,
-      derivatives: this.derivatives.image.data as Float32Array,
-    };
+    this.spare = this.shownFields;
     this.displacement.image.data = reply.displacement;
     this.derivatives.image.data = reply.derivatives;
     this.markUpdated();
+  }
+
+  /** The arrays the textures show (the latest finished time). */
+  get shownFields(): { displacement: Float32Array; derivatives: Float32Array } {
+    return { displacement: this.displacement.image.data as Float32Array, derivatives: this.derivatives.image.data as Float32Array };
   }
 
   private markUpdated(): void {

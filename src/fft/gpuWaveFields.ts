@@ -27,21 +27,16 @@
  * This object owns all of them and frees them in dispose().
  */
 import {
-  BufferAttribute,
-  BufferGeometry,
-  Camera,
   DataTexture,
   FloatType,
-  GLSL3,
   HalfFloatType,
   LinearFilter,
   LinearMipmapLinearFilter,
-  Mesh,
   NearestFilter,
   RepeatWrapping,
   RGBAFormat,
   RGFormat,
-  ShaderMaterial,
+  type ShaderMaterial,
   WebGLRenderTarget,
   type PixelFormat,
   type Texture,
@@ -52,6 +47,7 @@ import {
 import { shaderSource } from '../shaderSource';
 import { fillPhaseTable, PHASE_TABLE_SIZE } from '../spectrum/dispersion';
 import type { InitialSpectrum } from '../spectrum/initialSpectrum';
+import { FullscreenPass, fullscreenMaterial, runPasses } from './fullscreenPass';
 import { checkThreeInternals, glTextureOf, useExternalFramebuffer } from './threeInternals';
 import { FIELD_TEXTURES } from './waveFieldLayout';
 
@@ -98,8 +94,7 @@ export class GpuWaveFields {
   /** Along x, then along z. */
   private readonly fftPasses: FftPass[] = [];
   private readonly unpackMaterial: ShaderMaterial;
-  private readonly quad: Mesh;
-  private readonly camera = new Camera();
+  private readonly pass = new FullscreenPass();
   private readonly repeatPeriod: number;
 
   constructor(
@@ -139,17 +134,8 @@ export class GpuWaveFields {
     [this.displacement, this.derivatives] = this.output.textures;
     this.output.textures.forEach((texture, i) => (texture.name = FIELD_TEXTURES[i]));
 
-    const vertexShader = shaderSource('fft/fullscreen.vert');
     const material = (fragmentShader: string, uniforms: Record<string, { value: unknown }>, defines = {}) =>
-      new ShaderMaterial({
-        glslVersion: GLSL3,
-        defines,
-        vertexShader,
-        fragmentShader: shaderSource(fragmentShader),
-        uniforms: { sizeLog2: { value: sizeLog2 }, ...uniforms },
-        depthTest: false,
-        depthWrite: false,
-      });
+      fullscreenMaterial(shaderSource(fragmentShader), { sizeLog2: { value: sizeLog2 }, ...uniforms }, defines);
     const firstRadix2 = sizeLog2 % 2 === 1;
     this.evolveMaterial = material(
       'fft/evolveSpectrum.frag',
@@ -192,43 +178,27 @@ export class GpuWaveFields {
     const [result0, result1] = source.textures;
     this.unpackMaterial = material('fft/unpackFields.frag', { tSpectra0: { value: result0 }, tSpectra1: { value: result1 } });
     this.passCount = 2 + this.fftPasses.length;
-
-    const geometry = new BufferGeometry();
-    geometry.setAttribute('position', new BufferAttribute(new Float32Array([-1, -1, 0, 3, -1, 0, -1, 3, 0]), 3));
-    this.quad = new Mesh(geometry, this.evolveMaterial);
-    this.quad.frustumCulled = false;
   }
 
   /** Computes every field at time t (seconds) into `displacement` and `derivatives`. */
   update(t: number): void {
     fillPhaseTable(this.phases.image.data as Float32Array, t, this.repeatPeriod);
     this.phases.needsUpdate = true;
-
     const renderer = this.renderer;
-    const previousTarget = renderer.getRenderTarget();
-    const previousXr = renderer.xr.enabled;
-    renderer.xr.enabled = false;
-
-    this.working[0].bind(renderer);
-    this.draw(this.evolveMaterial);
-    for (const { material, source, target, subtransformLog2 } of this.fftPasses) {
-      const uniforms = material.uniforms;
-      uniforms.tSpectra0.value = source.textures[0];
-      uniforms.tSpectra1.value = source.textures[1];
-      uniforms.subtransformLog2.value = subtransformLog2;
-      target.bind(renderer);
-      this.draw(material);
-    }
-    renderer.setRenderTarget(this.output);
-    this.draw(this.unpackMaterial);
-
-    renderer.xr.enabled = previousXr;
-    renderer.setRenderTarget(previousTarget);
-  }
-
-  private draw(material: ShaderMaterial): void {
-    this.quad.material = material;
-    this.renderer.render(this.quad, this.camera);
+    runPasses(renderer, () => {
+      this.working[0].bind(renderer);
+      this.pass.draw(renderer, this.evolveMaterial);
+      for (const { material, source, target, subtransformLog2 } of this.fftPasses) {
+        const uniforms = material.uniforms;
+        uniforms.tSpectra0.value = source.textures[0];
+        uniforms.tSpectra1.value = source.textures[1];
+        uniforms.subtransformLog2.value = subtransformLog2;
+        target.bind(renderer);
+        this.pass.draw(renderer, material);
+      }
+      renderer.setRenderTarget(this.output);
+      this.pass.draw(renderer, this.unpackMaterial);
+    });
   }
 
   dispose(): void {
@@ -236,7 +206,7 @@ export class GpuWaveFields {
     for (const spectra of this.working) spectra.dispose(this.renderer);
     this.output.dispose();
     for (const material of [this.evolveMaterial, ...this.fftMaterials.values(), this.unpackMaterial]) material.dispose();
-    this.quad.geometry.dispose();
+    this.pass.dispose();
   }
 }
 

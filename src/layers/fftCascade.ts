@@ -51,6 +51,12 @@ export class FftCascade implements WaveLayer {
     return this.query.fields;
   }
 
+  /** The fields the textures show now, on the JS path (no computation); the GPU path keeps none. */
+  shownFieldsOnCpu(): LayerFieldsOnCpu {
+    if (this.backend instanceof GpuWaveFields) throw new Error('FftCascade.shownFieldsOnCpu: the GPU path keeps its fields on the GPU');
+    return this.backend.shownFields;
+  }
+
   dispose(): void {
     this.backend.dispose();
     this.query = null;

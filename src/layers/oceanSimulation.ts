@@ -5,13 +5,14 @@
  *
  *   parameters ──► src/spectrum (Ψ(k) of the sea state, split into cascade bands, h̃0 per cascade)
  *   time t ──────► layers: FftCascade × patchSizes.length (evolve + FFT on the GPU or in JS)
+ *              ──► whitecap foam from their summed Jacobian, with its history (whitecapFoam.ts)
  *              ──► the surface, the queries and the inspector sum `layers` (waveLayer.ts)
  *
  * Bad parameters throw a ParameterError and change nothing, so the scene goes on with the last
  * good values. A change of a shader-only parameter (choppiness) rebuilds nothing. Owns the layers
  * and frees them in dispose().
  */
-import type { WebGLRenderer } from 'three';
+import { FloatType, HalfFloatType, type WebGLRenderer } from 'three';
 import { supportedGpuPrecision } from '../fft/gpuWaveFields';
 import {
   ParameterError,
@@ -22,6 +23,7 @@ import {
 import { createCascadeSpectra, type InitialSpectrum } from '../spectrum/initialSpectrum';
 import { FftCascade, type FftBackend } from './fftCascade';
 import type { WaveLayer } from './waveLayer';
+import { WhitecapFoam } from './whitecapFoam';
 
 /** Which implementation computes the fields. */
 export type SimulationPath = 'gpu-rgba32f' | 'gpu-rgba16f' | 'js' | 'js-worker';
@@ -37,6 +39,7 @@ export interface SimulationOptions {
 export class OceanSimulation {
   private currentParameters: SimulationParameters;
   private currentLayers: FftCascade[] = [];
+  private currentFoam: WhitecapFoam | null = null;
   private currentPath!: SimulationPath;
   private preference: PathPreference;
   private readonly useWorker: boolean;
@@ -60,6 +63,11 @@ export class OceanSimulation {
   /** The FFT cascades, finest first: what the surface and the queries sum. */
   get layers(): readonly FftCascade[] {
     return this.currentLayers;
+  }
+
+  /** The whitecap foam over the largest cascade's patch (whitecapFoam.ts). */
+  get foam(): WhitecapFoam {
+    return this.currentFoam!;
   }
 
   /** The initial spectrum of each cascade, finest first. */
@@ -106,11 +114,15 @@ export class OceanSimulation {
     const dt = Number.isNaN(this.lastTime) ? 0 : t - this.lastTime;
     for (const layer of this.currentLayers as readonly WaveLayer[]) layer.update(t, dt);
     this.lastTime = t;
+    const { choppiness, windSpeed, foamAmount, foamPersistence } = this.currentParameters;
+    this.currentFoam!.update(t, { choppiness, windSpeed, amount: foamAmount, persistence: foamPersistence });
   }
 
   dispose(): void {
     for (const layer of this.currentLayers) layer.dispose();
     this.currentLayers = [];
+    this.currentFoam?.dispose();
+    this.currentFoam = null;
   }
 
   private rebuild(newSpectra: boolean): void {
@@ -126,6 +138,8 @@ export class OceanSimulation {
     const previous = this.currentLayers;
     this.currentLayers = spectra.map((spectrum) => new FftCascade(this.renderer, spectrum, backend));
     for (const layer of previous) layer.dispose();
+    this.currentFoam?.dispose();
+    this.currentFoam = new WhitecapFoam(this.renderer, this.currentLayers, precision === null ? null : precision === 'float32' ? FloatType : HalfFloatType);
     this.lastTime = NaN;
   }
 }

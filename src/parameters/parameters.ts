@@ -80,6 +80,14 @@ export interface SimulationParameters {
   choppiness: number;
   /** Seed of the random initial spectrum, an integer in [0, 2³² − 1]. @defaultValue 1 */
   seed: number;
+  /**
+   * Whitecap foam made where crests fold, as a multiple of the physical amount (src/layers/foamModel.ts:
+   * none below Beaufort 3, then the coverage of Monahan & O'Muircheartaigh 1980), [0, 10]; 0 is none.
+   * @defaultValue 1
+   */
+  foamAmount: number;
+  /** Seconds over which whitecap foam fades to 1/e, [0.1, 30]. @defaultValue 3 */
+  foamPersistence: number;
 }
 
 export function isPowerOfTwo(n: number): boolean {
@@ -121,6 +129,8 @@ export const SIMULATION_OPTIONS: { readonly [K in keyof SimulationParameters]: O
   repeatPeriod: { type: 'number', unit: 's', allowed: 'a number of seconds > 0 and at most 100000', check: (v) => isNumber(v) && v > 0 && v <= 1e5 },
   choppiness: { type: 'number', unit: '', allowed: 'a number from 0 to 4', check: between(0, 4) },
   seed: { type: 'number', unit: '', allowed: 'an integer from 0 to 4294967295', check: (v) => isNumber(v) && Number.isInteger(v) && v >= 0 && v <= 0xffffffff },
+  foamAmount: { type: 'number', unit: '', allowed: 'a number from 0 to 10 (0 turns foam off)', check: between(0, 10) },
+  foamPersistence: { type: 'number', unit: 's', allowed: 'a number of seconds from 0.1 to 30', check: between(0.1, 30) },
 };
 
 export const DEFAULT_PARAMETERS: Readonly<SimulationParameters> = Object.freeze({
@@ -145,10 +155,12 @@ export const DEFAULT_PARAMETERS: Readonly<SimulationParameters> = Object.freeze(
   repeatPeriod: 200,
   choppiness: 1,
   seed: 1,
+  foamAmount: 1,
+  foamPersistence: 3,
 } satisfies SimulationParameters);
 
-/** Parameters that only the surface's shader uses: changing them rebuilds nothing. */
-export const SHADER_ONLY_PARAMETERS: readonly (keyof SimulationParameters)[] = ['choppiness'];
+/** Parameters that the cascades' spectra do not depend on (the surface's shader, the foam): changing them rebuilds nothing. */
+export const SHADER_ONLY_PARAMETERS: readonly (keyof SimulationParameters)[] = ['choppiness', 'foamAmount', 'foamPersistence'];
 
 /**
  * Merges `changes` over `base` and checks every value; throws a ParameterError naming the first bad

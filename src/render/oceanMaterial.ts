@@ -9,7 +9,7 @@ import { COPY_OFFSET, largestPeriodicLayer, patchBlendUniforms } from '../layers
 import type { WaveLayer } from '../layers/waveLayer';
 import { mergeOptions } from '../parameters/options';
 import { DEFAULT_SHADING, SHADING_MODES, SHADING_OPTIONS, type ShadingOptions } from '../parameters/sceneOptions';
-import { shaderSource } from '../shaderSource';
+import { shaderSource, withLayerCount } from '../shaderSource';
 import { finestTexel, RING_COUNT } from './horizonGrid';
 
 /** Shading options as the Ocean takes them: any subset of ShadingOptions (src/parameters/sceneOptions.ts). */
@@ -45,6 +45,7 @@ export class OceanMaterial extends ShaderMaterial {
           layerSizes: { value: [] as number[] },
           layerLodBias: { value: [] as number[] },
           choppiness: { value: 1 },
+          tFoam: { value: null },
           patchBlend: { value: new Float32Array(12) },
           copyOffset: { value: new Vector2(...COPY_OFFSET) },
           ringOffsets: { value: new Float32Array(2 * (RING_COUNT + 1)) },
@@ -72,13 +73,15 @@ export class OceanMaterial extends ShaderMaterial {
   }
 
   /**
-   * Samples these layers (waveLayer.ts) with this choppiness from the next draw on. Called before
-   * every draw: for the list it bound last it only sets the choppiness; a new list rebinds the
-   * textures and sizes, and a new number of layers recompiles the shaders.
+   * Samples these layers (waveLayer.ts) with this choppiness, and this whitecap foam field (over the
+   * last layer's patch, whitecapFoam.ts), from the next draw on. Called before every draw: for the
+   * list it bound last it only sets the choppiness and the foam; a new list rebinds the textures
+   * and sizes, and a new number of layers recompiles the shaders.
    */
-  bindLayers(layers: readonly WaveLayer[], choppiness: number): void {
+  bindLayers(layers: readonly WaveLayer[], choppiness: number, foam: { value: Texture | null }): void {
     const u = this.uniforms;
     u.choppiness.value = choppiness;
+    u.tFoam = foam;
     if (layers === this.boundLayers) return;
     // The shaders blend two copies of the last layer (src/layers/patchBlend.ts), as the queries do
     // for the largest periodic one: they must be the same layer.
@@ -134,8 +137,4 @@ export class OceanMaterial extends ShaderMaterial {
       shadingMode: SHADING_MODES[this.defines.SHADING_MODE as number],
     };
   }
-}
-/** The source with LAYER_COUNT's value in the bounds of its unrolled loops (see shaders/surface/waveLayers.glsl). */
-function withLayerCount(source: string, layerCount: number): string {
-  return source.replaceAll('i < LAYER_COUNT - 1', `i < ${layerCount - 1}`).replaceAll('i < LAYER_COUNT', `i < ${layerCount}`);
 }

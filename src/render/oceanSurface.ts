@@ -4,7 +4,7 @@
  * places its rings around the rendering camera. The sea is the plane y = 0 of world space (the
  * mesh's own transform is not used). Owns its geometry and material.
  */
-import { Mesh, Vector2, Vector3, type Camera, type Scene, type WebGLRenderer } from 'three';
+import { Mesh, Vector2, Vector3, type Camera, type Scene, type Texture, type WebGLRenderer } from 'three';
 import type { WaveLayer } from '../layers/waveLayer';
 import { cellsPerRingForViewport, createHorizonGridGeometry, RingFrames } from './horizonGrid';
 import { OceanMaterial, type OceanMaterialInputs, type OceanShadingOptions } from './oceanMaterial';
@@ -21,7 +21,7 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
    */
   constructor(
     inputs: OceanMaterialInputs,
-    private readonly waves: () => { layers: readonly WaveLayer[]; choppiness: number },
+    private readonly waves: () => { layers: readonly WaveLayer[]; choppiness: number; foam: { value: Texture | null } },
     shading: OceanShadingOptions = {},
   ) {
     super(createHorizonGridGeometry(32), new OceanMaterial(inputs, shading));
@@ -50,8 +50,8 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
   placeRings(camera: Camera): void {
     const position = camera.getWorldPosition(this.cameraPosition);
     const u = this.material.uniforms;
-    const { layers, choppiness } = this.waves();
-    this.material.bindLayers(layers, choppiness);
+    const { layers, choppiness, foam } = this.waves();
+    this.material.bindLayers(layers, choppiness, foam);
     this.rings.update(position.x, position.z, position.y, layers, this.cellsPerRing);
     u.ringFrames.value = this.rings.frames;
     u.ringLayerUvOrigins.value = this.rings.uvOrigins;

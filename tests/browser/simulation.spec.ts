@@ -58,6 +58,20 @@ for (const [name, changes] of [
   });
 }
 
+test('the whitecap foam on the GPU equals the JS foam, through a warm-up and frame steps', async ({ page }) => {
+  // 20 m/s at N = 128: coverage of a few per cent. The first time is a jump (warm-up from nothing
+  // over 3τ, twelve FFT updates), the next three are frame steps, the last a jump back in time.
+  const results = await page.evaluate(() =>
+    window.harness.compareFoamGpuWithJs({ windSpeed: 20, resolution: 128, seed: 3 }, [30, 30.05, 30.1, 30.4, 12]),
+  );
+  for (const { meanCoverage, maxDifference } of results) {
+    expect(meanCoverage).toBeGreaterThan(0.01);
+    // Both paths sum float32 fields in the same order and step the same model (measured: at most
+    // 5e-5 apart). A wrong texel index, threshold or step gives differences of order the coverage.
+    expect(maxDifference).toBeLessThan(1e-4);
+  }
+});
+
 test('the JS path in a Web Worker uploads the same fields as CpuWaveFields', async ({ page }) => {
   const result = await page.evaluate(() => window.harness.workerAgainstDirect({ resolution: 64, seed: 5 }, 42.5));
   expect(result.path).toBe('js-worker');

@@ -64,13 +64,15 @@ describe('OceanMaterial shading options', () => {
 
 describe('OceanMaterial.bindLayers', () => {
   const layers = [fakeLayer(13.7, 256), fakeLayer(79.3, 256), fakeLayer(457, 128)];
+  const foam = { value: null };
 
-  it('binds each layer’s textures, size and LOD bias, and the choppiness', () => {
+  it('binds each layer’s textures, size and LOD bias, the choppiness and the foam', () => {
     const m = material();
-    m.bindLayers(layers, 1.5);
+    m.bindLayers(layers, 1.5, foam);
     const u = m.uniforms;
     expect(m.defines.LAYER_COUNT).toBe(3);
     expect(u.choppiness.value).toBe(1.5);
+    expect(u.tFoam).toBe(foam);
     layers.forEach((layer, i) => {
       expect(u.tLayerDisplacement.value[i]).toBe(layer.textures.displacement.value);
       expect(u.tLayerDerivatives.value[i]).toBe(layer.textures.derivatives.value);
@@ -87,7 +89,7 @@ describe('OceanMaterial.bindLayers', () => {
   it('unrolls the shaders’ loops over the layers: every “i < LAYER_COUNT” becomes the count', () => {
     const m = material();
     expect(m.vertexShader).toContain('i < 1');
-    m.bindLayers(layers, 1);
+    m.bindLayers(layers, 1, foam);
     for (const source of [m.vertexShader, m.fragmentShader]) {
       expect(source).not.toContain('i < LAYER_COUNT');
     }
@@ -96,16 +98,16 @@ describe('OceanMaterial.bindLayers', () => {
 
   it('recompiles only when the number of layers changes; a new choppiness or texture is a uniform change', () => {
     const m = material();
-    m.bindLayers(layers, 1);
+    m.bindLayers(layers, 1, foam);
     const version = m.version;
-    m.bindLayers(layers, 2.5);
+    m.bindLayers(layers, 2.5, foam);
     expect(m.version).toBe(version);
     expect(m.uniforms.choppiness.value).toBe(2.5);
     const replaced = [layers[0], fakeLayer(79.3, 256), layers[2]];
-    m.bindLayers(replaced, 2.5);
+    m.bindLayers(replaced, 2.5, foam);
     expect(m.version).toBe(version);
     expect(m.uniforms.tLayerDisplacement.value[1]).toBe(replaced[1].textures.displacement.value);
-    m.bindLayers(layers.slice(0, 2), 2.5);
+    m.bindLayers(layers.slice(0, 2), 2.5, foam);
     expect(m.version).toBeGreaterThan(version);
     expect(m.defines.LAYER_COUNT).toBe(2);
     expect(m.uniforms.tLayerDisplacement.value).toHaveLength(2);

@@ -298,6 +298,8 @@ describe('validateParameters merging', () => {
       repeatPeriod: 500,
       choppiness: 0.5,
       seed: 99,
+      foamAmount: 2,
+      foamPersistence: 5,
     };
     const snapshot = structuredClone(base);
     const result = validateParameters({ windSpeed: 5, seed: 3 }, base);
@@ -418,6 +420,8 @@ describe('parseParameterText / formatOptionText (the text form)', () => {
       repeatPeriod: 123.25,
       choppiness: 1.75,
       seed: 4294967295,
+      foamAmount: 0.25,
+      foamPersistence: 1.5,
     };
     for (const values of [DEFAULT_PARAMETERS, changed]) {
       for (const key of Object.keys(SIMULATION_OPTIONS) as (keyof SimulationParameters)[]) {

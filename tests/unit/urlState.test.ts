@@ -35,6 +35,8 @@ function changed(): AppState {
     depth: 35,
     repeatPeriod: 120,
     seed: 4294967295,
+    foamAmount: 2.5,
+    foamPersistence: 6,
     sunElevation: 12.5,
     sunAzimuth: -100,
     ior: 1.34,

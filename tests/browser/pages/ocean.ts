@@ -67,7 +67,7 @@ function setup(parameters: Partial<SimulationParameters>, shading: OceanShadingO
   const sim = simulation;
   surface = new OceanSurface(
     { environment, sunDirection: { value: sunDirection } },
-    () => ({ layers: sim.layers, choppiness: sim.parameters.choppiness }),
+    () => ({ layers: sim.layers, choppiness: sim.parameters.choppiness, foam: sim.foam.texture }),
     shading,
   );
   scene.add(surface);
@@ -191,7 +191,7 @@ function geometryCheck(t: number, withRestPoints = false) {
   const captureHeight = Math.ceil(count / captureWidth);
   const material = new OceanMaterial({ environment, sunDirection: { value: sunDirection } }, {}, { CAPTURE_POSITIONS: 1 });
   const { choppiness } = sim.parameters;
-  material.bindLayers(sim.layers, choppiness);
+  material.bindLayers(sim.layers, choppiness, sim.foam.texture);
   for (const name of ['ringFrames', 'ringLayerUvOrigins', 'ringOffsets', 'halfRingCells']) {
     material.uniforms[name].value = mesh.material.uniforms[name].value;
   }

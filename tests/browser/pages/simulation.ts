@@ -101,6 +101,32 @@ const harness = {
     return { passCount: gpu.passCount, results };
   },
 
+  /**
+   * The whitecap foam on the GPU path against the JS path (CpuFoamField, the fields computed here)
+   * after each time in turn (the first a jump, so a warm-up): the mean JS coverage and the largest
+   * difference.
+   */
+  compareFoamGpuWithJs(changes: Partial<SimulationParameters>, times: number[]): { meanCoverage: number; maxDifference: number }[] {
+    const gpu = new OceanSimulation(renderer, changes, { path: 'gpu', worker: false });
+    const js = new OceanSimulation(renderer, changes, { path: 'js', worker: false });
+    const results = times.map((t) => {
+      gpu.update(t);
+      js.update(t);
+      const [onGpu, inJs] = [gpu.foam.coverageOnCpu(), js.foam.coverageOnCpu()];
+      let maxDifference = 0;
+      let sum = 0;
+      inJs.forEach((value, i) => {
+        const difference = Math.abs(value - onGpu[i]);
+        maxDifference = Number.isNaN(difference) ? Infinity : Math.max(maxDifference, difference);
+        sum += value;
+      });
+      return { meanCoverage: sum / inJs.length, maxDifference };
+    });
+    gpu.dispose();
+    js.dispose();
+    return results;
+  },
+
   /** Counts of non-finite values in the GPU fields (both textures) at time t. */
   gpuNonFiniteCount(changes: Partial<SimulationParameters>, t: number): number {
     const params = validateParameters(changes);
@@ -179,7 +205,7 @@ const harness = {
     }
     simulation.update(4);
     const unchanged = JSON.stringify(before) === JSON.stringify(simulation.parameters);
-    let nonFinite = 0;
+    let nonFinite = simulation.foam.coverageOnCpu().filter((v) => !Number.isFinite(v)).length;
     for (const layer of simulation.layers) {
       const { output } = (layer as unknown as { backend: GpuWaveFields }).backend;
       for (const index of [0, 1]) for (const v of readTarget(output, index, 64, 'float32')) if (!Number.isFinite(v)) nonFinite++;

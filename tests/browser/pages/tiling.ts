@@ -39,8 +39,8 @@ const harness = {
       // bindLayers sets the blend from the largest layer's size before each draw: amplitudes 0 keep θ = 0.
       const material = ocean.surface.material;
       const bind = material.bindLayers.bind(material);
-      material.bindLayers = (layers, choppiness) => {
-        bind(layers, choppiness);
+      material.bindLayers = (layers, choppiness, foam) => {
+        bind(layers, choppiness, foam);
         for (let j = 3; j < 12; j += 4) material.uniforms.patchBlend.value[j] = 0;
       };
     }

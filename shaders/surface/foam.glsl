@@ -1,0 +1,55 @@
+// Whitecap foam on the surface: the foam field (src/layers/whitecapFoam.ts) gives the fraction of
+// the surface covered near a point; this draws it as patches of white water with that coverage.
+//
+// Detail: a fixed pattern p(x) in rest-point coordinates (so it travels with the water), roughly
+// uniform in [0, 1]; the pixel is foam where p < coverage, so on average a fraction `coverage` of
+// the area is white, in patches whose number and size grow with the coverage (sparse flecks on a
+// young whitecap, solid white water on a broken crest). The edge is softened by the pattern's own
+// change across the pixel, so far away, where a pixel spans many patches, opacity tends to the
+// coverage itself and nothing shimmers.
+
+uniform sampler2D tFoam;  // coverage in .r, over the largest layer's patch
+
+uint foamHash(uvec2 cell) {
+  // A 2D integer hash (PCG-style mixing): no sin(), so no loss of precision far from the origin.
+  uint h = cell.x * 747796405u + cell.y * 2891336453u;
+  h = ((h >> ((h >> 28u) + 4u)) ^ h) * 277803737u;
+  return (h >> 22u) ^ h;
+}
+
+// Value noise in [0, 1], smooth between the corners of unit cells.
+float foamValueNoise(vec2 p) {
+  vec2 cell = floor(p);
+  vec2 f = p - cell;
+  vec2 w = f * f * (3.0 - 2.0 * f);
+  uvec2 c = uvec2(ivec2(cell) + 65536);  // cells at negative coordinates hash alike
+  float a = float(foamHash(c)) / 4294967295.0;
+  float b = float(foamHash(c + uvec2(1u, 0u))) / 4294967295.0;
+  float d = float(foamHash(c + uvec2(0u, 1u))) / 4294967295.0;
+  float e = float(foamHash(c + uvec2(1u, 1u))) / 4294967295.0;
+  return mix(mix(a, b, w.x), mix(d, e, w.x), w.y);
+}
+
+// The pattern: three octaves (cells of 2.5 m, 0.9 m and 0.3 m), their sum's near-normal spread
+// (mean ½, deviation ≈ 0.13) stretched back over [0, 1] so that p < c covers about a fraction c.
+float foamPattern(vec2 restPoint) {
+  float sum = 0.55 * foamValueNoise(restPoint * 0.4) + 0.3 * foamValueNoise(restPoint * 1.1 + 17.0) +
+              0.15 * foamValueNoise(restPoint * 3.3 - 31.0);
+  return smoothstep(0.5 - 0.3, 0.5 + 0.3, sum);
+}
+
+// Opacity of the foam at a rest point, for a coverage in [0, 1]: inside a patch, thinner and
+// thicker bubbles (cells of 15 cm) let some water through.
+float foamOpacity(float coverage, vec2 restPoint) {
+  float pattern = foamPattern(restPoint);
+  float softness = max(fwidth(pattern), 0.04);
+  float bubbles = mix(0.65, 1.0, foamValueNoise(restPoint * 6.7 + 5.0));
+  return coverage <= 0.0 ? 0.0 : bubbles * smoothstep(pattern - softness, pattern + softness, coverage);
+}
+
+// Light leaving the foam: a white diffuse (Lambertian) surface of albedo 0.8 under the sky's light
+// from above and the sun's; skyLight is the sky radiance seen along the normal.
+vec3 foamRadiance(vec3 normal, vec3 sunDirection, vec3 sunRadiance, vec3 skyLight) {
+  const float albedo = 0.8;
+  return albedo * (skyLight + 0.08 * sunRadiance * max(dot(normal, sunDirection), 0.0));
+}

@@ -1,0 +1,243 @@
+/**
+ * The whitecap foam field (model and sources: foamModel.ts): coverage in [0, 1] per texel of the
+ * largest FFT cascade's patch, kept from frame to frame, on the GPU (shaders/foam/whitecapFoam.frag,
+ * ping-pong between two float targets) or in JS (CpuFoamField, uploaded as a DataTexture), the
+ * same path as the cascades.
+ *
+ * Why in the largest cascade's patch: foam must keep its history where the water carries it, so in
+ * rest-point coordinates, and over a domain that repeats like the sea so that it covers the whole
+ * plane. The cascades do not repeat together (their sizes are not multiples, on purpose), so no
+ * square holds the total Jacobian exactly; the largest patch is where the foam of the largest waves
+ * (the whitecaps one sees) stays on their crests. The finer cascades are sampled at the points of
+ * the first patch: elsewhere their share of the folding lands on the same crests, statistically
+ * right but not on their own small folds. The surface draws the foam like the largest cascade,
+ * blended from two copies (patchBlend.ts), with the same texture coordinates.
+ *
+ * Time: a step of dt in (0, WARM_UP_WINDOW·τ] advances the foam; any other change of time (the
+ * first update, time going back, a long jump) rebuilds it from nothing over the warm-up window,
+ * which recomputes the cascades at the warm-up's times (GPU), or their CPU fields (JS).
+ */
+import {
+  DataTexture,
+  DataUtils,
+  FloatType,
+  HalfFloatType,
+  LinearFilter,
+  LinearMipmapLinearFilter,
+  NearestFilter,
+  RedFormat,
+  RepeatWrapping,
+  RGBAFormat,
+  WebGLRenderTarget,
+  type ShaderMaterial,
+  type Texture,
+  type WebGLRenderer,
+} from 'three';
+import { FullscreenPass, fullscreenMaterial, runPasses } from '../fft/fullscreenPass';
+import { shaderSource, withLayerCount } from '../shaderSource';
+import type { FftCascade } from './fftCascade';
+import {
+  CpuFoamField,
+  FOAM_J_FULL,
+  FOAM_J_START,
+  foamCreationRate,
+  foamSchedule,
+  foamStep,
+  type CascadeOnCpu,
+} from './foamModel';
+import type { LayerFrame } from './waveLayer';
+
+/** What the foam depends on besides the cascades. */
+export interface FoamSettings {
+  /** λ of the choppy map whose Jacobian makes foam. */
+  choppiness: number;
+  /** U10, m/s: no foam below Beaufort 3 (foamModel.ts). */
+  windSpeed: number;
+  /** Multiplies the foam made; 1 is the physical amount, 0 none. */
+  amount: number;
+  /** τ, s. */
+  persistence: number;
+}
+
+export class WhitecapFoam {
+  /** Coverage in the red channel, sampled like the largest cascade's fields. */
+  readonly texture: { value: Texture | null };
+  readonly frame: LayerFrame;
+  private readonly producer: GpuFoam | JsFoam;
+  private lastTime = NaN;
+  /** True while the field is all zero (cleared, and no foam made since). */
+  private empty = true;
+
+  constructor(
+    renderer: WebGLRenderer,
+    private readonly cascades: readonly FftCascade[],
+    gpuType: typeof FloatType | typeof HalfFloatType | null,
+  ) {
+    const largest = cascades[cascades.length - 1].frame;
+    this.frame = { size: largest.size, origin: [0, 0], periodic: true, resolution: largest.resolution };
+    this.producer = gpuType === null ? new JsFoam(renderer, this.frame) : new GpuFoam(renderer, cascades, this.frame, gpuType);
+    this.texture = this.producer.texture;
+  }
+
+  /**
+   * Brings the foam to time t, after the cascades were updated to t. On a jump (see the header)
+   * the GPU path recomputes the cascades at the warm-up's times, ending at t.
+   */
+  update(t: number, settings: FoamSettings): void {
+    const rate = settings.amount * foamCreationRate(settings.windSpeed);
+    const { clear, steps } = foamSchedule(this.lastTime, t, settings.persistence);
+    this.lastTime = t;
+    if (clear) {
+      this.producer.clear();
+      this.empty = true;
+    }
+    if (this.empty && rate === 0) return; // no foam, and none made: nothing to draw
+    this.empty = false;
+    for (const { time, dt } of steps) {
+      // A warm-up step recomputes the cascades at its time; a step to t uses them as they are.
+      this.producer.step(this.cascades, clear ? time : null, settings.choppiness, rate, settings.persistence, dt);
+    }
+  }
+
+  /** The coverage per texel, row by row (a read-back on the GPU path: it waits for the GPU). */
+  coverageOnCpu(): Float32Array {
+    return this.producer.coverageOnCpu();
+  }
+
+  dispose(): void {
+    this.producer.dispose();
+  }
+}
+
+/** The foam passes on the GPU: ping-pong between two targets of the cascades' float type. */
+class GpuFoam {
+  readonly texture: { value: Texture | null };
+  private readonly targets: [WebGLRenderTarget, WebGLRenderTarget];
+  private readonly material: ShaderMaterial;
+  private readonly pass = new FullscreenPass();
+
+  constructor(
+    private readonly renderer: WebGLRenderer,
+    cascades: readonly FftCascade[],
+    frame: LayerFrame,
+    type: typeof FloatType | typeof HalfFloatType,
+  ) {
+    const m = frame.resolution;
+    // Float32 textures filter linearly only with OES_texture_float_linear; half floats always do.
+    const filterable = type === HalfFloatType || renderer.extensions.has('OES_texture_float_linear');
+    const target = () =>
+      new WebGLRenderTarget(m, m, {
+        type,
+        format: RGBAFormat,
+        depthBuffer: false,
+        wrapS: RepeatWrapping,
+        wrapT: RepeatWrapping,
+        magFilter: filterable ? LinearFilter : NearestFilter,
+        minFilter: filterable ? LinearMipmapLinearFilter : NearestFilter,
+        generateMipmaps: filterable,
+      });
+    this.targets = [target(), target()];
+    this.targets.forEach((t) => (t.texture.name = 'foam'));
+    this.texture = { value: this.targets[0].texture };
+    this.material = fullscreenMaterial(withLayerCount(shaderSource('foam/whitecapFoam.frag'), cascades.length), {
+      tPreviousFoam: { value: null },
+      tLayerDisplacement: { value: cascades.map((c) => c.textures.displacement.value) },
+      tLayerDerivatives: { value: cascades.map((c) => c.textures.derivatives.value) },
+      layerTexelScale: { value: cascades.map((c) => (frame.size * c.frame.resolution) / (m * c.frame.size)) },
+      layerResolution: { value: cascades.map((c) => c.frame.resolution) },
+      choppiness: { value: 1 },
+      jacobianStart: { value: FOAM_J_START },
+      jacobianFull: { value: FOAM_J_FULL },
+      decay: { value: 1 },
+      gain: { value: 0 },
+    }, { LAYER_COUNT: cascades.length });
+  }
+
+  clear(): void {
+    this.draw(1, 0, 0);
+  }
+
+  /** One step; at `time` the cascades are first recomputed (warm-up), null: they are current. */
+  step(cascades: readonly FftCascade[], time: number | null, choppiness: number, rate: number, persistence: number, dt: number): void {
+    if (time !== null) for (const cascade of cascades) cascade.update(time);
+    const { decay, gain } = foamStep(rate, persistence, dt);
+    this.draw(choppiness, decay, gain);
+  }
+
+  coverageOnCpu(): Float32Array {
+    const target = this.targets.find((t) => t.texture === this.texture.value)!;
+    const m = target.width;
+    const texels = target.texture.type === HalfFloatType ? new Uint16Array(4 * m * m) : new Float32Array(4 * m * m);
+    this.renderer.readRenderTargetPixels(target, 0, 0, m, m, texels);
+    const toFloat = texels instanceof Uint16Array ? DataUtils.fromHalfFloat : (v: number) => v;
+    return Float32Array.from({ length: m * m }, (_, i) => toFloat(texels[4 * i]));
+  }
+
+  /** The pass, from the target shown to the other one, which is then shown. */
+  private draw(choppiness: number, decay: number, gain: number): void {
+    const [read, write] = this.texture.value === this.targets[0].texture ? this.targets : [this.targets[1], this.targets[0]];
+    const u = this.material.uniforms;
+    u.tPreviousFoam.value = read.texture;
+    u.choppiness.value = choppiness;
+    u.decay.value = decay;
+    u.gain.value = gain;
+    runPasses(this.renderer, () => {
+      this.renderer.setRenderTarget(write);
+      this.pass.draw(this.renderer, this.material);
+    });
+    this.texture.value = write.texture;
+  }
+
+  dispose(): void {
+    for (const target of this.targets) target.dispose();
+    this.material.dispose();
+    this.pass.dispose();
+  }
+}
+
+/** The foam in JS (CpuFoamField) on the JS path, shown through a DataTexture. */
+class JsFoam {
+  readonly texture: { value: Texture | null };
+  private readonly field: CpuFoamField;
+  private readonly dataTexture: DataTexture;
+
+  constructor(renderer: WebGLRenderer, frame: LayerFrame) {
+    this.field = new CpuFoamField(frame.size, frame.resolution);
+    const texture = new DataTexture(this.field.coverage, frame.resolution, frame.resolution, RedFormat, FloatType);
+    const filterable = renderer.extensions.has('OES_texture_float_linear');
+    // Mipmaps are made by rendering: only for a format that is both filterable and renderable.
+    const mipmapped = filterable && renderer.extensions.has('EXT_color_buffer_float');
+    texture.name = 'foam';
+    texture.wrapS = texture.wrapT = RepeatWrapping;
+    texture.magFilter = filterable ? LinearFilter : NearestFilter;
+    texture.minFilter = mipmapped ? LinearMipmapLinearFilter : texture.magFilter;
+    texture.generateMipmaps = mipmapped;
+    texture.needsUpdate = true;
+    this.dataTexture = texture;
+    this.texture = { value: texture };
+  }
+
+  coverageOnCpu(): Float32Array {
+    return this.field.coverage.slice();
+  }
+
+  clear(): void {
+    this.field.clear();
+    this.dataTexture.needsUpdate = true;
+  }
+
+  /** One step; with `time` from the cascades' fields computed at that time, else from those shown. */
+  step(cascades: readonly FftCascade[], time: number | null, choppiness: number, rate: number, persistence: number, dt: number): void {
+    const onCpu: CascadeOnCpu[] = cascades.map((cascade) => ({
+      fields: time === null ? cascade.shownFieldsOnCpu() : cascade.fieldsOnCpu(time),
+      size: cascade.frame.size,
+      resolution: cascade.frame.resolution,
+    }));
+    this.field.step(onCpu, choppiness, rate, persistence, dt);
+    this.dataTexture.needsUpdate = true;
+  }
+
+  dispose(): void {
+    this.dataTexture.dispose();
+  }
+}
