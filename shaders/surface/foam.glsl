@@ -4,9 +4,9 @@
 // Detail: a fixed pattern p(x) in rest-point coordinates (so it travels with the water), roughly
 // uniform in [0, 1]; the pixel is foam where p < coverage, so on average a fraction `coverage` of
 // the area is white, in patches whose number and size grow with the coverage (sparse flecks on a
-// young whitecap, solid white water on a broken crest). The edge is softened by the pattern's own
-// change across the pixel, so far away, where a pixel spans many patches, opacity tends to the
-// coverage itself and nothing shimmers.
+// young whitecap, solid white water on a broken crest). Far away, where a pixel spans many
+// patches, the opacity is the coverage itself (the foam field's mip levels average it), so nothing
+// shimmers.
 
 uniform sampler2D tFoam;  // coverage in .r, over the largest layer's patch
 
@@ -39,12 +39,20 @@ float foamPattern(vec2 restPoint) {
 }
 
 // Opacity of the foam at a rest point, for a coverage in [0, 1]: inside a patch, thinner and
-// thicker bubbles (cells of 15 cm) let some water through.
+// thicker bubbles (cells of 15 cm) let some water through. Where a pixel spans more than the
+// pattern's finest cells the pattern would alias into speckle: it fades into its average there,
+// the coverage times the bubbles' mean opacity.
 float foamOpacity(float coverage, vec2 restPoint) {
+  if (coverage <= 0.0) return 0.0;
+  const float meanBubbles = 0.825;
+  vec2 footprint = fwidth(restPoint);  // metres per pixel on the sea
+  float detail = 1.0 - smoothstep(0.15, 0.6, max(footprint.x, footprint.y));
+  if (detail <= 0.0) return meanBubbles * coverage;
   float pattern = foamPattern(restPoint);
-  float softness = max(fwidth(pattern), 0.04);
+  float softness = clamp(fwidth(pattern), 0.04, 0.2);
   float bubbles = mix(0.65, 1.0, foamValueNoise(restPoint * 6.7 + 5.0));
-  return coverage <= 0.0 ? 0.0 : bubbles * smoothstep(pattern - softness, pattern + softness, coverage);
+  float detailed = bubbles * smoothstep(pattern - softness, pattern + softness, coverage);
+  return mix(meanBubbles * coverage, detailed, detail);
 }
 
 // Light leaving the foam: a white diffuse (Lambertian) surface of albedo 0.8 under the sky's light

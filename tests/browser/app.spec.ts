@@ -457,7 +457,7 @@ test.describe('the app', () => {
 
   test('?inspector=1 shows the inspector tiles and the panel toggles them', async ({ page }) => {
     await openApp(page, 'resolution=32&inspector=1');
-    await expect(page.locator('.inspector-labels > div')).toHaveCount(9);
+    await expect(page.locator('.inspector-labels > div')).toHaveCount(10);
     expect(await page.evaluate(() => window.oceanApp.inspector !== null)).toBe(true);
     await page.locator('[data-key="inspector"] input').uncheck();
     await expect(page.locator('.inspector-labels')).toHaveCount(0);
@@ -525,7 +525,7 @@ test('the inspector draws the real height field: a tile matches the texture it s
   // By default the tiles show the largest cascade.
   const largest = await compareHeightTile(page);
   expect(largest.cascade).toBe(cascades - 1);
-  expect(largest.cells).toBe(10); // nine field tiles and the S(ω) plot
+  expect(largest.cells).toBe(11); // ten field tiles and the S(ω) plot
   expect(largest.spread).toBeGreaterThan(0.03); // not a blank or uniform tile
   expect(largest.worst).toBeLessThan(0.03); // 8-bit output and float32 filtering: ~0.005
 

@@ -132,6 +132,21 @@ test.describe('the sea reaches the horizon', () => {
   }
 });
 
+test('whitecaps show as white water in a strong wind, and not at all in a calm', async ({ page }) => {
+  await openOcean(page);
+  const brightened = await page.evaluate(() =>
+    [20, 3].map((windSpeed) => {
+      window.ocean.view([0, 12, 0], [60, 0, -80]);
+      return window.ocean.foamBrightened({ seed: 11, windSpeed }, 30);
+    }),
+  );
+  console.log(`canvas brightened by foam: ${brightened.map((f) => (100 * f).toFixed(2)).join(' % at 20 m/s, ')} % at 3 m/s`);
+  // 20 m/s: about 5 % of the sea is covered (tests/unit/whitecapFoam.test.ts), below the horizon.
+  expect(brightened[0]).toBeGreaterThan(0.005);
+  expect(brightened[0]).toBeLessThan(0.2);
+  expect(brightened[1]).toBe(0); // Beaufort 2: no foam at all
+});
+
 test('heightAt(x, z) is the height of the rendered surface over (x, z), choppy displacement inverted', async ({ page }) => {
   // Two cascades whose finest texel (40 m / 256) is coarse enough for the rings nearest a camera
   // 2 m up to sample every cascade at mip 0 (128 cells a ring at 1000 px): heightAt is the

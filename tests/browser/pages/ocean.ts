@@ -98,6 +98,24 @@ const harness = {
   },
   geometryCheck,
   /**
+   * The fraction of the canvas that whitecap foam brightens: the picture at time t with these
+   * parameters against the same sea with foamAmount 0, pixels whose luminance rose by over 16/255 (under this page's uniform pale sky water and foam differ less than under a real sky).
+   */
+  foamBrightened(parameters: Partial<SimulationParameters>, t: number): number {
+    const gl = renderer.getContext();
+    const pictures = [0, 1].map((foamAmount) => {
+      setup({ ...parameters, foamAmount: foamAmount * (parameters.foamAmount ?? 1) });
+      harness.render(t);
+      const pixels = new Uint8Array(4 * width * height);
+      gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+      return pixels;
+    });
+    let brightened = 0;
+    const luminance = (p: Uint8Array, i: number) => 0.2126 * p[i] + 0.7152 * p[i + 1] + 0.0722 * p[i + 2];
+    for (let i = 0; i < pictures[0].length; i += 4) if (luminance(pictures[1], i) - luminance(pictures[0], i) > 16) brightened++;
+    return brightened / (width * height);
+  },
+  /**
    * heightAt against the rendered surface: an Ocean's own surface is read back from the vertex
    * shader (geometryCheck); a vertex displaced to (px, py, pz) is the surface point that lands on
    * (px, pz), so heightAt(px, pz) must be py.

@@ -27,14 +27,15 @@ const harness = {
   /**
    * Replaces the sea with a new Ocean of these options; `blend: false` draws the largest cascade
    * once (θ = 0 in src/layers/patchBlend.ts), for the control that shows what the measurement sees
-   * without the blend.
+   * without the blend. Without foam: it is drawn with a pattern that does not repeat
+   * (shaders/surface/foam.glsl), which would hide the waves' own period from the measurement.
    */
   setup(options: OceanOptions, blend = true): void {
     if (ocean) {
       ocean.removeFromParent();
       ocean.dispose();
     }
-    ocean = new Ocean(renderer, { path: 'gpu', worker: false, ...options });
+    ocean = new Ocean(renderer, { path: 'gpu', worker: false, foamAmount: 0, ...options });
     if (!blend) {
       // bindLayers sets the blend from the largest layer's size before each draw: amplitudes 0 keep θ = 0.
       const material = ocean.surface.material;
