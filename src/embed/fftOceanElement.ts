@@ -123,6 +123,29 @@ const STYLE = `
              font: 15px/1.45 system-ui, sans-serif; background: linear-gradient(#5d86a8, #17324a 55%, #0b1620); }
 `;
 
+/** STYLE as a stylesheet, shared by every element of the page; made on first use (only browsers have it). */
+let sharedSheet: CSSStyleSheet | null = null;
+
+/**
+ * Gives a shadow root STYLE. A constructed stylesheet (adoptedStyleSheets) is allowed by a strict
+ * Content-Security-Policy (style-src 'self', no 'unsafe-inline'), which blocks a <style> element;
+ * browsers without constructable stylesheets (Safari 15 to 16.3, which have WebGL 2) get the
+ * <style> element instead.
+ */
+function adoptStyle(root: ShadowRoot): void {
+  if ('adoptedStyleSheets' in root && 'replaceSync' in CSSStyleSheet.prototype) {
+    if (!sharedSheet) {
+      sharedSheet = new CSSStyleSheet();
+      sharedSheet.replaceSync(STYLE);
+    }
+    root.adoptedStyleSheets = [sharedSheet];
+  } else {
+    const style = document.createElement('style');
+    style.textContent = STYLE;
+    root.append(style);
+  }
+}
+
 // Defined also where there is no DOM (server-side rendering, Node tests), so importing the
 // library there does not throw; the element only works in a browser.
 const ElementBase: typeof HTMLElement =
@@ -148,11 +171,10 @@ export class FftOceanElement extends ElementBase {
   constructor() {
     super();
     this.root = this.attachShadow({ mode: 'open' });
-    const style = document.createElement('style');
-    style.textContent = STYLE;
+    adoptStyle(this.root);
     const sizer = document.createElement('div');
     sizer.className = 'sizer';
-    this.root.append(style, sizer);
+    this.root.append(sizer);
   }
 
   /** The Ocean while the element is on the page (null before, after removal or without WebGL 2). */

@@ -45,6 +45,21 @@ test('with no attributes and no size it fills its container at 16:9 and draws th
   expect(errors).toEqual([]);
 });
 
+test('its shadow root is styled by a constructed stylesheet, or by a <style> where there is none (Safari before 16.4)', async ({ page }) => {
+  const styling = () =>
+    page.evaluate(() => {
+      const el = window.embed.create({ resolution: '64', paused: '' });
+      const box = el.getBoundingClientRect();
+      return { box: [box.width, box.height], adopted: el.shadowRoot!.adoptedStyleSheets.length, styleElements: el.shadowRoot!.querySelectorAll('style').length };
+    });
+  await openPage(page);
+  // A constructed stylesheet is what a strict CSP allows (style-src 'self' blocks <style>: csp.spec.ts).
+  expect(await styling()).toEqual({ box: [480, 270], adopted: 1, styleElements: 0 });
+  await page.addInitScript(() => delete (CSSStyleSheet.prototype as Partial<CSSStyleSheet>).replaceSync);
+  await openPage(page);
+  expect(await styling()).toEqual({ box: [480, 270], adopted: 0, styleElements: 1 });
+});
+
 test('it follows its box: a page-given height, then a resize', async ({ page }) => {
   await openPage(page);
   const sizes = await page.evaluate(async () => {
