@@ -22,9 +22,9 @@ test.beforeAll(async () => {
 test.afterAll(() => server?.close());
 
 /**
- * Opens `path` of the build; returns what went wrong so far and later: CSP violations (the
- * securitypolicyviolation events, recorded from before the page's first byte is parsed),
- * console errors (where Chromium reports a blocked style, font or script) and page errors.
+ * Opens `path` of the build. Returns a function that lists what has gone wrong on the page since:
+ * CSP violations (securitypolicyviolation events, listened to before the page's first byte is
+ * parsed), console errors (where Chromium reports a blocked style, font or script) and page errors.
  */
 async function open(page: Page, path: string): Promise<() => Promise<string[]>> {
   const problems: string[] = [];
