@@ -1,7 +1,34 @@
-import { defineConfig } from 'vite';
-import { resolve } from 'node:path';
+import { defineConfig, type Plugin } from 'vite';
+import { createRequire } from 'node:module';
+import { dirname, resolve } from 'node:path';
 
 const root = import.meta.dirname;
+/**
+ * lil-gui's stylesheet, which the app loads as a file (src/app/panel.ts imports it; the <style>
+ * lil-gui would inject breaks under a strict CSP). lil-gui's package.json exports only its
+ * scripts, so the file is found next to its main script.
+ */
+const lilGuiCss = resolve(dirname(createRequire(import.meta.url).resolve('lil-gui')), 'lil-gui.css');
+
+/**
+ * lil-gui's stylesheet without its icon font. The font is a data: URL, which a strict CSP refuses
+ * (font-src falls back to default-src 'self'), and Chromium loads a data: font as soon as it
+ * parses the rule, used or not. Its icons (↕ ▾ ▸ ✓) are ordinary characters, drawn here in
+ * lil-gui's text font. Fails the build if lil-gui's CSS no longer looks as expected.
+ */
+function lilGuiWithoutIconFont(): Plugin {
+  return {
+    name: 'lil-gui-without-icon-font',
+    enforce: 'pre',
+    transform(code, id) {
+      if (id !== lilGuiCss) return null;
+      const withoutFont = code.replace(/@font-face\s*{[^}]*font-family:\s*"lil-gui";[^}]*}/, '');
+      const restyled = withoutFont.replaceAll('font-family: "lil-gui";', 'font-family: var(--font-family);');
+      if (withoutFont === code || restyled === withoutFont) this.error(`${id}: its icon font is no longer where this plugin removes it`);
+      return { code: restyled, map: null };
+    },
+  };
+}
 
 /**
  * Two builds from one config (`npm run build` runs both):
@@ -48,6 +75,8 @@ export default defineConfig(({ mode }) => ({
         },
       }
     : {
+        resolve: { alias: { 'lil-gui/dist/lil-gui.css': lilGuiCss } },
+        plugins: [lilGuiWithoutIconFont()],
         build: {
           target: 'es2022',
           outDir: 'dist/app',

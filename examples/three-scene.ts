@@ -104,4 +104,11 @@ renderer.setAnimationLoop(() => {
 });
 
 // For the console and the browser tests.
-Object.assign(window, { example: { renderer, scene, camera, ocean, crate, frames: () => frames } });
+const example = { renderer, scene, camera, ocean, crate, frames: () => frames };
+Object.assign(window, { example });
+
+declare global {
+  interface Window {
+    example: typeof example;
+  }
+}

@@ -1,4 +1,4 @@
 export declare function serveDirectory(
   root: string,
-  options?: { host?: string; port?: number },
+  options?: { host?: string; port?: number; headers?: Record<string, string> },
 ): Promise<{ url: string; close: () => Promise<void> }>;

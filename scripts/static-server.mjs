@@ -21,10 +21,11 @@ const TYPES = {
 };
 
 /**
- * Serves the files under `root` on http://host:port (port 0: a free one). Resolves to
- * { url, close } once listening; url has no trailing slash.
+ * Serves the files under `root` on http://host:port (port 0: a free one), adding `headers` to
+ * every file it sends (e.g. a Content-Security-Policy). Resolves to { url, close } once
+ * listening; url has no trailing slash.
  */
-export function serveDirectory(root, { host = '127.0.0.1', port = 0 } = {}) {
+export function serveDirectory(root, { host = '127.0.0.1', port = 0, headers = {} } = {}) {
   const base = resolve(root);
   const server = createServer(async (request, response) => {
     try {
@@ -51,6 +52,7 @@ export function serveDirectory(root, { host = '127.0.0.1', port = 0 } = {}) {
         'content-type': TYPES[extname(file).toLowerCase()] ?? 'application/octet-stream',
         'content-length': info.size,
         'cache-control': 'no-store',
+        ...headers,
       });
       if (request.method === 'HEAD') response.end();
       else createReadStream(file).pipe(response);

@@ -5,19 +5,18 @@
  * (statusOverlay.ts). ?inspector=1 (or the panel) adds the
  * inspector's tiles along the bottom.
  *
- * Time: the simulation advances by min(real frame time, 0.1 s) × time scale per frame, so a
- * hidden tab or a stalled frame never makes the sea jump; paused keeps t fixed.
+ * Time: the simulation advances by the real frame time × time scale (SimulationClock, shared with
+ * <fft-ocean>), so the sea moves at its real speed however slow the frames; a hidden tab or a
+ * stall longer than a second does not make it jump; paused keeps t fixed.
  */
 import { Scene } from 'three';
+import { SimulationClock } from '../timing/simulationClock';
 import { createAppCamera, createAppOcean, createAppRenderer, loadAppSkybox, prepareAppFrame } from './appView';
 import { CONTROLS_HELP, FlyControls } from './flyControls';
 import { Inspector } from './inspector';
 import { Panel } from './panel';
 import { describeSeaState, PATH_LABELS, StatusOverlay, TimingAverager } from './statusOverlay';
 import { parseState, roundTime, serializeState, type AppState } from './urlState';
-
-/** Longest step of simulation time per frame, seconds (before the time scale). */
-const MAX_SIMULATION_STEP = 0.1;
 
 const container = document.querySelector<HTMLElement>('#app')!;
 const overlay = new StatusOverlay(document.querySelector<HTMLElement>('#status')!, CONTROLS_HELP);
@@ -184,17 +183,13 @@ function readCanvas(): { width: number; height: number; data: Uint8Array } {
 }
 
 const averager = new TimingAverager(500);
-let lastFrame: number | null = null;
+const clock = new SimulationClock();
 let lastStatus = 0;
-document.addEventListener('visibilitychange', () => {
-  lastFrame = null; // the first frame back advances nothing
-});
+document.addEventListener('visibilitychange', () => clock.restart()); // the first frame back advances nothing
 
 renderer.setAnimationLoop((now: number) => {
-  const dt = lastFrame === null ? 0 : Math.max(0, (now - lastFrame) / 1000);
-  lastFrame = now;
-  if (!state.paused) state.t += Math.min(dt, MAX_SIMULATION_STEP) * state.timeScale;
-  controls.update(dt);
+  state.t += clock.advance(now, state.paused ? 0 : state.timeScale);
+  controls.update(clock.realStep);
 
   const start = performance.now();
   prepareAppFrame(ocean, camera, state.t); // the sea at t, the eye above the crest, the far plane
@@ -210,7 +205,8 @@ renderer.setAnimationLoop((now: number) => {
 
   averager.add(rendered, simulated - start, rendered - simulated);
   if (rendered - lastStatus > 250) {
-    overlay.show(describeSeaState(ocean), ocean.simulation.path, averager.latest, state.t, state.paused, controls.speed);
+    const time = { t: state.t, paused: state.paused, timeScale: state.timeScale, ratio: clock.timeRatio };
+    overlay.show(describeSeaState(ocean), ocean.simulation.path, averager.latest, time, controls.speed);
     lastStatus = rendered;
   }
   panel.update();

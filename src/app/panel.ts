@@ -8,6 +8,7 @@
  * data-key="absorption.0" etc.), for the browser tests.
  */
 import GUI, { type Controller } from 'lil-gui';
+import 'lil-gui/dist/lil-gui.css'; // as a file (see vite.config.ts): GUI's injected <style> breaks under a strict CSP
 import { Color } from 'three';
 import { SHADING_MODES } from '../parameters/sceneOptions';
 import { ParameterError, SPECTRUM_MODELS, SPREADING_MODELS, type SimulationParameters } from '../parameters/parameters';
@@ -65,7 +66,7 @@ export class Panel {
     this.amplitudeProxy.micro = state.amplitude * 1e6;
     this.patchSizesProxy.text = state.patchSizes.join(',');
 
-    const gui = (this.gui = new GUI({ title: 'Ocean', width: 280 }));
+    const gui = (this.gui = new GUI({ title: 'Ocean', width: 280, injectStyles: false }));
     gui.domElement.classList.add('ocean-panel');
 
     const sea = gui.addFolder('Sea state');

@@ -1,7 +1,7 @@
 /**
  * What the app shows on top of the canvas, top left: the sea state (Hs, Tp), the FFT path, frame rate and CPU timings
  * (ocean.update and renderer.render as measured on the main thread — GPU work is not included),
- * the time, a help line for the keys, and below them notices — warnings about bad values (each names its
+ * the time (and how fast it runs, when slower than asked: frames over a second apart), a help line for the keys, and below them notices — warnings about bad values (each names its
  * parameter and stays until dismissed or fixed) and the "copy link" field.
  */
 import type { SimulationPath } from '../layers/oceanSimulation';
@@ -67,6 +67,15 @@ export class TimingAverager {
   }
 }
 
+/** The simulated time as the status line shows it. */
+export interface TimeStatus {
+  t: number;
+  paused: boolean;
+  timeScale: number;
+  /** Simulated seconds per real second when not what the time scale asks for (SimulationClock.timeRatio), else null. */
+  ratio: number | null;
+}
+
 export class StatusOverlay {
   readonly root: HTMLElement;
   readonly status: HTMLElement;
@@ -93,7 +102,7 @@ export class StatusOverlay {
   }
 
   /** The status: FFT path, frame rate and CPU timings on one line; time and camera speed on the next. */
-  show(seaState: string, path: SimulationPath, timings: FrameTimings | null, t: number, paused: boolean, speed: number): void {
+  show(seaState: string, path: SimulationPath, timings: FrameTimings | null, time: TimeStatus, speed: number): void {
     const parts = [seaState, `FFT: ${PATH_LABELS[path] ?? path}`];
     if (timings) {
       parts.push(
@@ -102,7 +111,9 @@ export class StatusOverlay {
       );
     }
     this.status.textContent = parts.join(' · ');
-    this.time.textContent = `t = ${t.toFixed(2)} s${paused ? ' (paused)' : ''} · camera speed ${formatSpeed(speed)} m/s`;
+    const clock = [`t = ${time.t.toFixed(2)} s${time.paused ? ' (paused)' : ''}`];
+    if (time.ratio !== null) clock.push(`time ×${time.ratio.toPrecision(2)}${time.timeScale === 1 ? '' : ` (time scale ${time.timeScale})`}`);
+    this.time.textContent = [...clock, `camera speed ${formatSpeed(speed)} m/s`].join(' · ');
   }
 
   /** Shows (or replaces) the warning for `parameter`. */

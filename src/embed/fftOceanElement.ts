@@ -24,7 +24,9 @@
  * Sizing: display:block, as wide as its container and 16:9 (at least 150 px high) unless the page
  * gives it a height; the drawing buffer follows the box (ResizeObserver). It renders only while it is on screen
  * (IntersectionObserver) and its tab is visible; simulated time stands still while it does not
- * render, so nothing jumps when it comes back. A lost WebGL context is waited out and the same
+ * render, so nothing jumps when it comes back. While it renders, time follows the real time ×
+ * time-scale however slow the frames (SimulationClock; a frame over a second late counts as an
+ * ordinary one). A lost WebGL context is waited out and the same
  * scene is drawn again at the same time once the browser restores it. Without WebGL 2 the box
  * shows a short message instead of staying blank.
  *
@@ -36,6 +38,7 @@
  */
 import { ACESFilmicToneMapping, PerspectiveCamera, Scene, WebGLRenderer } from 'three';
 import { Ocean } from '../ocean';
+import { SimulationClock } from '../timing/simulationClock';
 import { parseOptionText } from '../parameters/options';
 import { DEFAULT_SHADING, DEFAULT_SUN, SHADING_MODES, SUN_OPTIONS, type ShadingMode } from '../parameters/sceneOptions';
 import type { PathPreference } from '../layers/oceanSimulation';
@@ -48,8 +51,6 @@ import {
   type SimulationParameters,
 } from '../parameters/parameters';
 
-/** Longest step of simulated time per frame (s, before time-scale): a stalled tab does not jump. */
-const MAX_FRAME_STEP = 0.1;
 const PATHS: readonly PathPreference[] = ['auto', 'gpu', 'js'];
 
 /** Attributes that map onto simulation parameters: each parameter's name in kebab case. */
@@ -123,6 +124,29 @@ const STYLE = `
              font: 15px/1.45 system-ui, sans-serif; background: linear-gradient(#5d86a8, #17324a 55%, #0b1620); }
 `;
 
+/** STYLE as a stylesheet, shared by every element of the page; made on first use (only browsers have it). */
+let sharedSheet: CSSStyleSheet | null = null;
+
+/**
+ * Gives a shadow root STYLE. A constructed stylesheet (adoptedStyleSheets) is allowed by a strict
+ * Content-Security-Policy (style-src 'self', no 'unsafe-inline'), which blocks a <style> element;
+ * browsers without constructable stylesheets (Safari 15 to 16.3, which have WebGL 2) get the
+ * <style> element instead.
+ */
+function adoptStyle(root: ShadowRoot): void {
+  if ('adoptedStyleSheets' in root && 'replaceSync' in CSSStyleSheet.prototype) {
+    if (!sharedSheet) {
+      sharedSheet = new CSSStyleSheet();
+      sharedSheet.replaceSync(STYLE);
+    }
+    root.adoptedStyleSheets = [sharedSheet];
+  } else {
+    const style = document.createElement('style');
+    style.textContent = STYLE;
+    root.append(style);
+  }
+}
+
 // Defined also where there is no DOM (server-side rendering, Node tests), so importing the
 // library there does not throw; the element only works in a browser.
 const ElementBase: typeof HTMLElement =
@@ -138,8 +162,8 @@ export class FftOceanElement extends ElementBase {
   private live: Live | null = null;
   private message: HTMLElement | null = null;
   private simulatedTime = 0;
-  /** rAF timestamp of the last animated frame, or null when the next frame must not advance time. */
-  private lastFrameAt: number | null = null;
+  /** Real frame time × time-scale per animated frame; restarted whenever drawing stops or pauses. */
+  private readonly clock = new SimulationClock();
   private frameRequest = 0;
   private needsDraw = true;
   private framesDrawn = 0;
@@ -148,11 +172,10 @@ export class FftOceanElement extends ElementBase {
   constructor() {
     super();
     this.root = this.attachShadow({ mode: 'open' });
-    const style = document.createElement('style');
-    style.textContent = STYLE;
+    adoptStyle(this.root);
     const sizer = document.createElement('div');
     sizer.className = 'sizer';
-    this.root.append(style, sizer);
+    this.root.append(sizer);
   }
 
   /** The Ocean while the element is on the page (null before, after removal or without WebGL 2). */
@@ -294,7 +317,7 @@ export class FftOceanElement extends ElementBase {
       const paused = raw !== null && raw.trim().toLowerCase() !== 'false';
       if (paused !== s.paused) {
         s.paused = paused;
-        this.lastFrameAt = null;
+        this.clock.restart();
       }
     }
     this.invalidate();
@@ -378,7 +401,7 @@ export class FftOceanElement extends ElementBase {
       },
     };
     this.live = live;
-    this.lastFrameAt = null;
+    this.clock.restart();
     this.resize();
     resizeObserver.observe(this);
     intersectionObserver.observe(this);
@@ -402,7 +425,7 @@ export class FftOceanElement extends ElementBase {
     }
     this.message?.remove();
     this.message = null;
-    this.lastFrameAt = null;
+    this.clock.restart();
     this.needsDraw = true;
   }
 
@@ -427,7 +450,7 @@ export class FftOceanElement extends ElementBase {
 
   /** Something changed that affects whether frames are drawn. */
   private activityChanged(): void {
-    this.lastFrameAt = null; // the time that passed while inactive is not simulated
+    this.clock.restart(); // the time that passed while inactive is not simulated
     this.invalidate();
   }
 
@@ -445,17 +468,11 @@ export class FftOceanElement extends ElementBase {
     this.frameRequest = 0;
     const live = this.live;
     if (!live || !this.isActive()) {
-      this.lastFrameAt = null;
+      this.clock.restart();
       return;
     }
     const animating = !this.settings.paused;
-    if (animating) {
-      if (this.lastFrameAt !== null) {
-        const step = Math.min(Math.max(0, (now - this.lastFrameAt) / 1000), MAX_FRAME_STEP);
-        this.simulatedTime += step * this.settings.timeScale;
-      }
-      this.lastFrameAt = now;
-    }
+    if (animating) this.simulatedTime += this.clock.advance(now, this.settings.timeScale);
     if (animating || this.needsDraw) {
       try {
         this.draw(live);

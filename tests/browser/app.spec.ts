@@ -7,6 +7,7 @@ import { expect, test, type Page } from '@playwright/test';
 import { DEFAULT_PARAMETERS } from '../../src/parameters/parameters';
 import { beaufortPreset, SEA_PRESETS } from '../../src/spectrum/presets';
 import { seaState } from '../../src/spectrum/seaState';
+import { slowFrames } from './slowFrames';
 import { withoutWebGL2 } from './withoutWebGL2';
 
 type Vec3 = [number, number, number];
@@ -408,24 +409,34 @@ test.describe('the app', () => {
     await expect(hint).toHaveCount(0); // only in the caustics mode
   });
 
-  test('time: paused keeps t; a stalled frame advances t by at most 0.1 s × time scale', async ({ page }) => {
+  test('time: paused keeps t; slow frames advance t by real time × time scale; a stall over a second counts as one frame and the status shows the ratio', async ({ page }) => {
     await openApp(page, 'resolution=32&paused=1&t=5', { width: 320, height: 180 });
     await page.waitForTimeout(300);
     expect(await page.evaluate(() => window.oceanApp.state.t)).toBe(5);
-    const step = await page.evaluate(async () => {
+    const timeLine = page.locator('#status .status-time');
+    await page.evaluate(() => window.oceanApp.set({ paused: false, timeScale: 2 }));
+    const { simulated, real } = await slowFrames(page, 'app'); // the old clock, at most 0.1 s a frame, ran at 0.4×
+    expect(real).toBeGreaterThan(1);
+    expect(simulated / real).toBeCloseTo(2, 1);
+    await expect(timeLine).not.toContainText('time ×'); // time runs as asked
+
+    const stalled = await page.evaluate(async () => {
       const app = window.oceanApp;
-      app.set({ paused: false, timeScale: 2 });
-      await new Promise((resolve) => requestAnimationFrame(resolve));
+      await app.capturePixels();
       const before = app.state.t;
       const end = performance.now() + 1500; // the main thread stalls for 1.5 s
       while (performance.now() < end) {
         // busy
       }
-      await new Promise((resolve) => requestAnimationFrame(resolve)); // runs right after the app's frame
+      await app.capturePixels();
       return app.state.t - before;
     });
-    expect(step).toBeGreaterThan(0);
-    expect(step).toBeLessThanOrEqual(0.2 + 1e-9);
+    // One ordinary frame (plus at most the one before the stall) at 2×, not the 3 s of the stall.
+    expect(stalled).toBeGreaterThan(0);
+    expect(stalled).toBeLessThan(1);
+    // The second that held the stall ran slower than asked, and the status says so, then not.
+    await expect(timeLine).toHaveText(/^t = \d+\.\d\d s · time ×0\.\d+ \(time scale 2\) · camera speed /, { timeout: 5000 });
+    await expect(timeLine).not.toContainText('time ×', { timeout: 5000 });
   });
 
   test('resizing the viewport resizes the canvas and the camera aspect', async ({ page }) => {

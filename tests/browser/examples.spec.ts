@@ -2,7 +2,7 @@ import { expect, test, type Page } from '@playwright/test';
 import { spawnSync } from 'node:child_process';
 import { existsSync, readdirSync, readFileSync, statSync } from 'node:fs';
 import { join, resolve } from 'node:path';
-import type { DataTexture, Mesh, PerspectiveCamera, Scene, WebGLRenderer } from 'three';
+import type { DataTexture, WebGLRenderer } from 'three';
 import type { FftOceanElement } from '../../src/embed/fftOceanElement';
 import type { Ocean } from '../../src/ocean';
 import { DEFAULT_PARAMETERS } from '../../src/parameters/parameters';
@@ -13,7 +13,6 @@ import { serveDirectory } from '../../scripts/static-server.mjs';
 
 declare global {
   interface Window {
-    example: { renderer: WebGLRenderer; scene: Scene; camera: PerspectiveCamera; ocean: Ocean; crate: Mesh; frames: () => number };
     lib: { Ocean: typeof Ocean; FftOceanElement: typeof FftOceanElement; WebGLRenderer: typeof WebGLRenderer; defined: boolean };
   }
 }

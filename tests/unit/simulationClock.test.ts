@@ -1,0 +1,110 @@
+import { describe, expect, it } from 'vitest';
+import { LONG_GAP, RATIO_INTERVAL, SimulationClock } from '../../src/timing/simulationClock';
+
+/** Runs frames at these timestamps (ms) at `rate`; returns each frame's simulated step. */
+function run(clock: SimulationClock, timestamps: number[], rate = 1): number[] {
+  return timestamps.map((now) => clock.advance(now, rate));
+}
+
+/** Timestamps (ms) every `frameMs` from `startMs` for `seconds`, both ends included. */
+function frames(startMs: number, frameMs: number, seconds: number): number[] {
+  return Array.from({ length: Math.round((seconds * 1000) / frameMs) + 1 }, (_, i) => startMs + i * frameMs);
+}
+
+const sum = (values: number[]) => values.reduce((a, b) => a + b, 0);
+
+describe('SimulationClock: simulated time follows real time', () => {
+  it('the first frame adds nothing; each later one the real time since the previous × the rate', () => {
+    const clock = new SimulationClock();
+    run(clock, [5000, 5016, 5266, 6166], 2).forEach((step, i) => expect(step).toBeCloseTo([0, 0.032, 0.5, 1.8][i], 12));
+    expect(clock.realStep).toBeCloseTo(0.9, 12);
+  });
+
+  it('at 60, 5 or 2 frames per second ten real seconds are ten × the rate simulated seconds', () => {
+    for (const frameMs of [1000 / 60, 200, 500]) {
+      const clock = new SimulationClock();
+      expect(sum(run(clock, frames(1234, frameMs, 10), 1.5))).toBeCloseTo(15, 9);
+      expect(clock.timeRatio, `${frameMs} ms frames`).toBeNull();
+    }
+  });
+
+  it('a paused clock (rate 0) adds nothing, and a negative rate runs time backwards', () => {
+    const clock = new SimulationClock();
+    expect(sum(run(clock, frames(0, 100, 3), 0))).toBe(0);
+    expect(sum(run(clock, [3100, 3200], -1))).toBeCloseTo(-0.2, 12);
+  });
+
+  it('a timestamp earlier than the previous one adds nothing', () => {
+    const clock = new SimulationClock();
+    expect(run(clock, [1000, 900, 1000])).toEqual([0, 0, 0.1]);
+  });
+});
+
+describe('SimulationClock: long gaps', () => {
+  it(`a gap longer than ${LONG_GAP} s counts as one ordinary frame, the last one that was not a gap`, () => {
+    const clock = new SimulationClock();
+    run(clock, [0, 16, 66]); // the last ordinary frame took 50 ms
+    expect(clock.advance(66 + 30_000, 2)).toBeCloseTo(0.1, 12);
+    expect(clock.realStep).toBe(30); // what moves in real time still sees the gap
+    expect(clock.advance(66 + 60_000, 2)).toBeCloseTo(0.1, 12); // a gap does not become the ordinary frame
+    expect(clock.advance(66 + 60_250, 2)).toBeCloseTo(0.5, 12); // and time follows real time again
+  });
+
+  it(`a gap of exactly ${LONG_GAP} s is simulated as it is; a little more is not`, () => {
+    const clock = new SimulationClock();
+    expect(run(clock, [0, 20, 20 + LONG_GAP * 1000])).toEqual([0, 0.02, LONG_GAP]);
+    expect(clock.advance(20 + LONG_GAP * 2000 + 1, 1)).toBeCloseTo(LONG_GAP, 12); // the 1 s frame was ordinary
+    expect(clock.advance(20 + LONG_GAP * 3000 + 2, 1)).toBeCloseTo(LONG_GAP, 12);
+  });
+
+  it('before any ordinary frame a gap counts as a 60 Hz frame; frames with one timestamp do not make the ordinary frame 0', () => {
+    const clock = new SimulationClock();
+    expect(run(clock, [0, 5000])).toEqual([0, 1 / 60]);
+    expect(run(clock, [5100, 5100, 9000])).toEqual([0.1, 0, 0.1]);
+  });
+
+  it('restart(): the next frame adds nothing, however long ago the previous one was, and then time runs on', () => {
+    const clock = new SimulationClock();
+    run(clock, [0, 100, 200]);
+    clock.restart();
+    expect(clock.advance(700, 1)).toBe(0); // half a second later: not simulated
+    expect(clock.realStep).toBe(0);
+    expect(clock.advance(800, 1)).toBeCloseTo(0.1, 12);
+  });
+});
+
+describe('SimulationClock: the time ratio', () => {
+  it(`is null until ${RATIO_INTERVAL} s of frames were measured, and while time runs at the rate asked for`, () => {
+    const clock = new SimulationClock();
+    run(clock, frames(0, 100, RATIO_INTERVAL - 0.1), 2);
+    expect(clock.timeRatio).toBeNull();
+    run(clock, frames(RATIO_INTERVAL * 1000, 37, 30), 2);
+    expect(clock.timeRatio).toBeNull();
+  });
+
+  it('reports the simulated seconds per real second over an interval with a gap cut short, then null again', () => {
+    const clock = new SimulationClock();
+    run(clock, frames(0, 100, 0.5), 2); // 0.5 s at 100 ms frames: 1 simulated second
+    clock.advance(500 + 3000, 2); // a 3 s stall counts as 100 ms: 0.2 more
+    expect(clock.timeRatio).toBeCloseTo(1.2 / 3.5, 12); // 1.2 simulated seconds in 3.5 real ones
+    run(clock, frames(3600, 100, 1), 2); // a little over a second of ordinary frames
+    expect(clock.timeRatio).toBeNull();
+  });
+
+  it('stays null while paused, and after restart() the pause is not part of the measurement', () => {
+    const clock = new SimulationClock();
+    run(clock, frames(0, 100, 3), 0);
+    expect(clock.timeRatio).toBeNull();
+    run(clock, frames(3100, 100, 0.5), 1);
+    clock.restart(); // a hidden tab for a minute
+    run(clock, frames(63_600, 100, 0.5), 1);
+    expect(clock.timeRatio).toBeNull();
+  });
+
+  it('a clock that is slow at every frame (each over the long gap) says how slow', () => {
+    const clock = new SimulationClock();
+    run(clock, [0, 100]); // one ordinary 100 ms frame
+    run(clock, frames(100, 2000, 10)); // then 2 s frames
+    expect(clock.timeRatio).toBeCloseTo(0.1 / 2, 12);
+  });
+});
