@@ -10,13 +10,13 @@
  * ocean.horizonDistance (about 4000 camera heights) so the surface reaches the horizon. Owns everything it creates and frees it
  * in dispose().
  */
-import { Object3D, type WebGLRenderer } from 'three';
+import { Object3D, Vector3, type WebGLRenderer } from 'three';
 import { OceanSurface } from './render/oceanSurface';
 import type { OceanShadingOptions } from './render/oceanMaterial';
 import { SkyBackground } from './render/skyBackground';
 import { SkyEnvironment } from './render/skyEnvironment';
 import { OceanSimulation, type SimulationOptions } from './layers/oceanSimulation';
-import { heightAt } from './layers/surfaceQuery';
+import { heightAt, normalAt } from './layers/surfaceQuery';
 import { unknownOption } from './parameters/options';
 import { ParameterError, SIMULATION_OPTIONS, type SimulationParameters } from './parameters/parameters';
 import { SHADING_OPTIONS, SUN_OPTIONS, type ShadingOptions } from './parameters/sceneOptions';
@@ -152,6 +152,16 @@ export class Ocean extends Object3D {
   heightAt(x: number, z: number): number {
     if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError('heightAt(x, z)', `${x}, ${z}`, 'finite coordinates');
     return heightAt(this.simulation.layers, this.simulation.parameters.choppiness, this.currentTime, x, z);
+  }
+
+  /**
+   * Upward unit normal of the water surface over the world point (x, z) at the current time, in
+   * `target` (surfaceQuery.ts: the normal of the choppy surface at the point heightAt finds). For
+   * a buoy's tilt, a boat's pitch and roll.
+   */
+  normalAt(x: number, z: number, target = new Vector3()): Vector3 {
+    if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError('normalAt(x, z)', `${x}, ${z}`, 'finite coordinates');
+    return normalAt(this.simulation.layers, this.simulation.parameters.choppiness, this.currentTime, x, z, target);
   }
 
   dispose(): void {

@@ -9,15 +9,19 @@
 import { blendAngle, COPY_OFFSET, largestPeriodicLayer, patchBlendUniforms } from './patchBlend';
 import type { LayerFieldsOnCpu, WaveLayer } from './waveLayer';
 
-/** The summed fields at one rest point: displacement and the Jacobian terms of the choppy map. */
+/** The summed fields at one rest point: displacement, slopes and the Jacobian terms of the choppy map. */
 interface SurfaceSample {
   dx: number;
   height: number;
   dz: number;
-  /** ∂Dx/∂x, ∂Dz/∂z, ∂Dx/∂z (= ∂Dz/∂x) */
+  /** ∂h/∂x, ∂h/∂z, with the blend weights' own change (see sampleLayers) */
+  slopeX: number;
+  slopeZ: number;
+  /** ∂Dx/∂x, ∂Dz/∂z, ∂Dx/∂z; ∂Dz/∂x (the fields' ∂Dx/∂z, plus the blend's own change) */
   dxdx: number;
   dzdz: number;
   dxdz: number;
+  dzdx: number;
 }
 
 /**
@@ -27,7 +31,44 @@ interface SurfaceSample {
  * breaking crests) several points land on (x, z) and the one nearest the start is returned.
  */
 export function heightAt(layers: readonly WaveLayer[], choppiness: number, t: number, x: number, z: number): number {
-  const sample: SurfaceSample = { dx: 0, height: 0, dz: 0, dxdx: 0, dzdz: 0, dxdz: 0 };
+  return surfacePointOver(layers, choppiness, t, x, z).height;
+}
+
+/**
+ * Upward unit normal of the water surface over the world point (x, z) at time t, written into
+ * `out`: at the rest point x0 that heightAt finds, the surface P(x0) = (x0 + λ·Dx, h, z0 + λ·Dz)
+ * has the tangents ∂P/∂x0 = (1 + λ·Dx,x, h,x, λ·Dx,z) and ∂P/∂z0 = (λ·Dx,z, h,z, 1 + λ·Dz,z), and
+ * the normal ∂P/∂z0 × ∂P/∂x0 (shaders/surface/choppyNormal.glsl draws the same one, without the
+ * small part that comes from the blend's turning weights, patchBlend.ts).
+ */
+export function normalAt<T extends { x: number; y: number; z: number }>(
+  layers: readonly WaveLayer[],
+  choppiness: number,
+  t: number,
+  x: number,
+  z: number,
+  out: T,
+): T {
+  const s = surfacePointOver(layers, choppiness, t, x, z);
+  const [ax, ay, az] = [1 + choppiness * s.dxdx, s.slopeX, choppiness * s.dzdx]; // ∂P/∂x0
+  const [bx, by, bz] = [choppiness * s.dxdz, s.slopeZ, 1 + choppiness * s.dzdz]; // ∂P/∂z0
+  const [nx, ny, nz] = [by * az - bz * ay, bz * ax - bx * az, bx * ay - by * ax];
+  const length = Math.hypot(nx, ny, nz);
+  out.x = nx / length;
+  out.y = ny / length;
+  out.z = nz / length;
+  return out;
+}
+
+const sample: SurfaceSample = { dx: 0, height: 0, dz: 0, slopeX: 0, slopeZ: 0, dxdx: 0, dzdz: 0, dxdz: 0, dzdx: 0 };
+
+/**
+ * The summed fields at the rest point x0 that the choppy displacement moves onto (x, z),
+ * x0 + λ·D(x0) = (x, z), found by Newton's method with the Jacobian of that map. Where the surface
+ * folds over itself (Jacobian ≤ 0, breaking crests) several points land on (x, z) and the one
+ * nearest the start is taken. The result is shared: read it before the next query.
+ */
+function surfacePointOver(layers: readonly WaveLayer[], choppiness: number, t: number, x: number, z: number): SurfaceSample {
   const blended = prepareBlend(layers);
   let restX = x;
   let restZ = z;
@@ -50,7 +91,7 @@ export function heightAt(layers: readonly WaveLayer[], choppiness: number, t: nu
     }
   }
   sampleLayers(layers, blended, t, restX, restZ, sample);
-  return sample.height;
+  return sample;
 }
 
 const blendUniforms = new Float32Array(12);
@@ -64,7 +105,7 @@ function prepareBlend(layers: readonly WaveLayer[]): number {
 
 /** Sums every layer's fields at the rest point (x, z) into `out`; `blended` from prepareBlend. */
 function sampleLayers(layers: readonly WaveLayer[], blended: number, t: number, x: number, z: number, out: SurfaceSample): void {
-  out.dx = out.height = out.dz = out.dxdx = out.dzdz = out.dxdz = 0;
+  out.dx = out.height = out.dz = out.slopeX = out.slopeZ = out.dxdx = out.dzdz = out.dxdz = out.dzdx = 0;
   layers.forEach((layer, i) => {
     const { size, origin, resolution, periodic } = layer.frame;
     const u = ((x - origin[0]) / size) * resolution;
@@ -76,8 +117,23 @@ function sampleLayers(layers: readonly WaveLayer[], blended: number, t: number, 
       return;
     }
     const theta = blendAngle(blendUniforms, x, z);
+    const [copyU, copyV] = [u + COPY_OFFSET[0] * resolution, v + COPY_OFFSET[1] * resolution];
     addSample(fields, resolution, u, v, Math.cos(theta), out);
-    addSample(fields, resolution, u + COPY_OFFSET[0] * resolution, v + COPY_OFFSET[1] * resolution, Math.sin(theta), out);
+    addSample(fields, resolution, copyU, copyV, Math.sin(theta), out);
+    // Every field cos θ·f1 + sin θ·f2 also changes with θ: its derivative gains (−sin θ·f1 + cos θ·f2)·∇θ
+    // (for the height's slope, as in ocean.vert). θ turns over hundreds of metres: a central
+    // difference over 1 m is exact enough.
+    const change = (c: number) =>
+      -Math.sin(theta) * bilinear(fields.displacement, resolution, u, v, c) + Math.cos(theta) * bilinear(fields.displacement, resolution, copyU, copyV, c);
+    const thetaX = blendAngle(blendUniforms, x + 0.5, z) - blendAngle(blendUniforms, x - 0.5, z);
+    const thetaZ = blendAngle(blendUniforms, x, z + 0.5) - blendAngle(blendUniforms, x, z - 0.5);
+    const [dx, height, dz] = [change(0), change(1), change(2)];
+    out.slopeX += height * thetaX;
+    out.slopeZ += height * thetaZ;
+    out.dxdx += dx * thetaX;
+    out.dzdz += dz * thetaZ;
+    out.dxdz += dx * thetaZ;
+    out.dzdx += dz * thetaX;
   });
 }
 
@@ -87,7 +143,11 @@ function addSample(fields: LayerFieldsOnCpu, n: number, u: number, v: number, we
   out.dx += weight * bilinear(displacement, n, u, v, 0);
   out.height += weight * bilinear(displacement, n, u, v, 1);
   out.dz += weight * bilinear(displacement, n, u, v, 2);
-  out.dxdz += weight * bilinear(displacement, n, u, v, 3);
+  const crossDerivative = weight * bilinear(displacement, n, u, v, 3);
+  out.dxdz += crossDerivative;
+  out.dzdx += crossDerivative;
+  out.slopeX += weight * bilinear(derivatives, n, u, v, 0);
+  out.slopeZ += weight * bilinear(derivatives, n, u, v, 1);
   out.dxdx += weight * bilinear(derivatives, n, u, v, 2);
   out.dzdz += weight * bilinear(derivatives, n, u, v, 3);
 }

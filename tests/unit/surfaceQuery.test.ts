@@ -14,7 +14,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import { blendAngle, COPY_OFFSET, patchBlendUniforms } from '../../src/layers/patchBlend';
-import { heightAt } from '../../src/layers/surfaceQuery';
+import { heightAt, normalAt } from '../../src/layers/surfaceQuery';
 import type { LayerFrame, WaveLayer } from '../../src/layers/waveLayer';
 
 /** A layer with fixed fields (the same at every t), recording the times it was asked for. */
@@ -138,6 +138,28 @@ describe('heightAt over two periodic layers that split one cosine wave', () => {
     // The copies differ from the plain wave by a good part of the coarse layer's 0.09 m.
     expect(blendShows).toBeGreaterThan(0.03);
   });
+
+  for (const lambda of [0, 1.5]) {
+    it(`normalAt is the normal of the choppy surface’s height field with choppiness ${lambda}`, () => {
+      // The graph y = H(x, z) has the upward normal (−∂H/∂x, 1, −∂H/∂z)/|…|; H here is the
+      // reference above, differentiated by central differences over 1 mm (error ~1e-7); bilinear
+      // interpolation of the slopes errs by ~A·|k|·(|k|Δ)²/8 ≈ 1e-5.
+      const tolerance = 1e-4;
+      const e = 1e-3;
+      let tilted = 0;
+      for (const [x, z] of points) {
+        const h = (px: number, pz: number) => blendedHeight(wave, 0.7, 20, lambda, px, pz);
+        const [gx, gz] = [(h(x + e, z) - h(x - e, z)) / (2 * e), (h(x, z + e) - h(x, z - e)) / (2 * e)];
+        const length = Math.hypot(gx, 1, gz);
+        const got = normalAt(layers, lambda, 12.5, x, z, { x: 0, y: 0, z: 0 });
+        expect(Math.abs(got.x + gx / length), `x at (${x}, ${z})`).toBeLessThan(tolerance);
+        expect(Math.abs(got.y - 1 / length), `y at (${x}, ${z})`).toBeLessThan(tolerance);
+        expect(Math.abs(got.z + gz / length), `z at (${x}, ${z})`).toBeLessThan(tolerance);
+        tilted = Math.max(tilted, Math.hypot(got.x, got.z));
+      }
+      expect(tilted).toBeGreaterThan(0.1); // the slopes are really there (A·|k| = 0.27)
+    });
+  }
 
   it('asks every layer for its fields at the time it was given', () => {
     fine.times.length = 0;
