@@ -20,6 +20,8 @@ export { SEA_PRESETS, beaufortPreset } from './spectrum/presets';
 export { cascadeBands, type CascadeBand } from './spectrum/cascadeBands';
 export type { WaveLayer, LayerFrame, LayerFieldsOnCpu } from './layers/waveLayer';
 export { FftCascade, type FftBackend } from './layers/fftCascade';
+export { FloatingBody, SEA_WATER_DENSITY, type FloatingBodyOptions, type WaterSurface } from './layers/floatingBody';
+export { WhitecapFoam, type FoamSettings } from './layers/whitecapFoam';
 export { CpuWaveFields } from './fft/cpuWaveFields';
 export { GpuWaveFields, supportedGpuPrecision, type GpuPrecision } from './fft/gpuWaveFields';
 export { BatchedInverseFft2D } from './fft/fft';

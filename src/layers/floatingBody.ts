@@ -1,0 +1,146 @@
+/**
+ * A floating box: heave, pitch and roll of a rigid hull from the buoyancy at sample points of its
+ * bottom, for a boat or a buoy on the sea (its horizontal position and heading are the caller's).
+ *
+ * Archimedes' principle per sample column (strip theory, the simplest form of it): the bottom is
+ * split into n×n cells of area A/n²; a cell whose corner point lies d below the water surface
+ * above it (heightAt) is pushed up by ρ·g·(A/n²)·min(d, height), at that point. The body moves
+ * under those forces, its weight m·g and linear damping (a fraction `damping` of critical damping
+ * for heave and for rotation: radiation and viscous losses, which strip theory leaves out):
+ *     m·dv/dt = Σ F_i − m·g − c·v,        I·dω/dt = Σ (p_i − c) × F_i − c_ω·ω
+ * with I the box's inertia tensor in its own axes, stepped by semi-implicit Euler in substeps of at
+ * most MAX_SUBSTEP, much shorter than the heave period 2π·√(draft/g).
+ * On flat water the box settles at the draft m / (ρ·A) (tests/unit/floatingBody.test.ts).
+ */
+import { Quaternion, Vector3 } from 'three';
+import { GRAVITY } from '../spectrum/dispersion';
+
+/** Density of surface sea water, kg/m³ (the EOS-80 equation of state, UNESCO 1981, gives 1024.8 at 35 PSU and 20 °C). */
+export const SEA_WATER_DENSITY = 1025;
+const MAX_SUBSTEP = 1 / 240;
+
+export interface FloatingBodyOptions {
+  /** kg */
+  mass: number;
+  /** Length along x, height, width along z, m (the box in its own axes). */
+  size: [number, number, number];
+  /** Sample points per side of the bottom. @defaultValue 4 */
+  samples?: number;
+  /** Fraction of critical damping, heave and rotation. @defaultValue 0.2 */
+  damping?: number;
+  /** kg/m³. @defaultValue SEA_WATER_DENSITY */
+  density?: number;
+}
+
+/** What the body floats on: any surface with a height at each world point. */
+export interface WaterSurface {
+  heightAt(x: number, z: number): number;
+}
+
+export class FloatingBody {
+  /** Centre of the box, world m; x and z are the caller's to move. */
+  readonly position = new Vector3();
+  readonly orientation = new Quaternion();
+  readonly velocity = new Vector3();
+  /** World frame, rad/s. */
+  readonly angularVelocity = new Vector3();
+  private readonly mass: number;
+  private readonly size: [number, number, number];
+  private readonly cellArea: number;
+  /** Sample points in the box's own axes (bottom corners of the cells' centres). */
+  private readonly points: Vector3[];
+  /** Diagonal inertia in the box's own axes, kg·m². */
+  private readonly inertia: Vector3;
+  private readonly heaveDamping: number;
+  private readonly rotationDamping: Vector3;
+  private readonly density: number;
+  // Scratch, so step() allocates nothing.
+  private readonly force = new Vector3();
+  private readonly torque = new Vector3();
+  private readonly point = new Vector3();
+  private readonly arm = new Vector3();
+  private readonly spin = new Quaternion();
+  private readonly inverse = new Quaternion();
+
+  constructor(options: FloatingBodyOptions) {
+    const { mass, size, samples = 4, damping = 0.2, density = SEA_WATER_DENSITY } = options;
+    const [length, height, width] = size;
+    if (!(mass > 0 && [length, height, width].every((s) => s > 0) && Number.isInteger(samples) && samples >= 1 && damping >= 0 && density > 0)) {
+      throw new RangeError(`FloatingBody: mass, size, density must be > 0, samples a whole number ≥ 1, damping ≥ 0; got ${JSON.stringify(options)}`);
+    }
+    this.mass = mass;
+    this.size = [length, height, width];
+    this.density = density;
+    this.cellArea = (length * width) / samples ** 2;
+    this.points = [];
+    for (let i = 0; i < samples; i++) {
+      for (let j = 0; j < samples; j++) {
+        this.points.push(new Vector3(((i + 0.5) / samples - 0.5) * length, -height / 2, ((j + 0.5) / samples - 0.5) * width));
+      }
+    }
+    this.inertia = new Vector3(height ** 2 + width ** 2, length ** 2 + width ** 2, length ** 2 + height ** 2).multiplyScalar(mass / 12);
+    // Critical damping 2·√(k·m) for the waterplane's stiffness k in heave (ρ·g·A) and in pitch and
+    // roll (ρ·g·A·L²/12, its second moment), each about its own axis.
+    const stiffness = density * GRAVITY * length * width;
+    this.heaveDamping = 2 * damping * Math.sqrt(stiffness * mass);
+    this.rotationDamping = new Vector3(
+      2 * damping * Math.sqrt(((stiffness * width ** 2) / 12) * this.inertia.x),
+      2 * damping * Math.sqrt(((stiffness * (length ** 2 + width ** 2)) / 12) * this.inertia.y),
+      2 * damping * Math.sqrt(((stiffness * length ** 2) / 12) * this.inertia.z),
+    );
+  }
+
+  /** The draft on flat water, m / (ρ·A), m. */
+  get restingDraft(): number {
+    return this.mass / (this.density * this.size[0] * this.size[2]);
+  }
+
+  /** Advances the body by dt seconds on `water`, asking its height at each sample point per substep. */
+  step(dt: number, water: WaterSurface): void {
+    const substeps = Math.max(1, Math.ceil(dt / MAX_SUBSTEP));
+    const h = dt / substeps;
+    for (let s = 0; s < substeps; s++) this.substep(h, water);
+  }
+
+  private substep(h: number, water: WaterSurface): void {
+    const { force, torque, point, arm } = this;
+    force.set(0, -this.mass * GRAVITY, 0);
+    torque.set(0, 0, 0);
+    const height = this.size[1];
+    for (const local of this.points) {
+      point.copy(local).applyQuaternion(this.orientation).add(this.position);
+      const depth = Math.min(water.heightAt(point.x, point.z) - point.y, height);
+      if (depth <= 0) continue;
+      const lift = this.density * GRAVITY * this.cellArea * depth;
+      force.y += lift;
+      arm.subVectors(point, this.position);
+      // (arm × (0, lift, 0))
+      torque.x -= arm.z * lift;
+      torque.z += arm.x * lift;
+    }
+    force.y -= this.heaveDamping * this.velocity.y;
+    this.velocity.y += (force.y / this.mass) * h;
+    this.position.y += this.velocity.y * h;
+
+    // Rotation in the box's own axes: α = I⁻¹·(τ − c_ω·ω).
+    this.inverse.copy(this.orientation).invert();
+    torque.applyQuaternion(this.inverse);
+    arm.copy(this.angularVelocity).applyQuaternion(this.inverse);
+    arm.set(
+      arm.x + ((torque.x - this.rotationDamping.x * arm.x) / this.inertia.x) * h,
+      arm.y + ((torque.y - this.rotationDamping.y * arm.y) / this.inertia.y) * h,
+      arm.z + ((torque.z - this.rotationDamping.z * arm.z) / this.inertia.z) * h,
+    );
+    this.angularVelocity.copy(arm.applyQuaternion(this.orientation));
+    // dq/dt = ½·(0, ω)·q
+    const w = this.angularVelocity;
+    this.spin.set(w.x * h * 0.5, w.y * h * 0.5, w.z * h * 0.5, 0).multiply(this.orientation);
+    this.orientation.set(
+      this.orientation.x + this.spin.x,
+      this.orientation.y + this.spin.y,
+      this.orientation.z + this.spin.z,
+      this.orientation.w + this.spin.w,
+    );
+    this.orientation.normalize();
+  }
+}
