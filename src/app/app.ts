@@ -11,6 +11,7 @@
  */
 import { Scene } from 'three';
 import { SimulationClock } from '../timing/simulationClock';
+import { Buoys } from './buoys';
 import { createAppCamera, createAppOcean, createAppRenderer, loadAppSkybox, prepareAppFrame } from './appView';
 import { CONTROLS_HELP, FlyControls } from './flyControls';
 import { Inspector } from './inspector';
@@ -52,6 +53,22 @@ function showInspector(show: boolean): void {
     inspector = null;
   }
   fitPanel();
+}
+
+let buoys: Buoys | null = null;
+/** Drops buoys ahead of the camera, or takes them away. */
+function showBuoys(show: boolean): void {
+  if (show && !buoys) {
+    buoys = new Buoys(ocean);
+    ocean.update(state.t); // the water they are set down on
+    buoys.dropAhead(camera);
+    scene.add(buoys);
+  }
+  if (!show && buoys) {
+    buoys.removeFromParent();
+    buoys.dispose();
+    buoys = null;
+  }
 }
 
 // --- the URL ---------------------------------------------------------------------------------
@@ -100,6 +117,7 @@ function apply(changes: Partial<AppState>): void {
   if (changes.path !== undefined) ocean.simulation.pathPreference = changes.path;
   if (changes.wireframe !== undefined) ocean.surface.material.wireframe = changes.wireframe;
   if (changes.inspector !== undefined) showInspector(changes.inspector);
+  if (changes.buoys !== undefined) showBuoys(changes.buoys);
   if (changes.paused) changes.t = roundTime(state.t); // a paused t is exactly what the URL holds
   hintCaustics(changes.mode ?? state.mode, changes.sunElevation ?? state.sunElevation);
 }
@@ -155,6 +173,7 @@ function fitPanel(): void {
 }
 
 showInspector(state.inspector);
+showBuoys(state.buoys);
 
 // --- size and frames -------------------------------------------------------------------------
 
@@ -193,6 +212,7 @@ renderer.setAnimationLoop((now: number) => {
 
   const start = performance.now();
   prepareAppFrame(ocean, camera, state.t); // the sea at t, the eye above the crest, the far plane
+  buoys?.update(state.t);
   const simulated = performance.now();
   renderer.render(scene, camera);
   inspector?.render(renderer);
@@ -228,6 +248,9 @@ const oceanApp = {
   overlay,
   get inspector(): Inspector | null {
     return inspector;
+  },
+  get buoys(): Buoys | null {
+    return buoys;
   },
   /** Sets state values as the panel would (warnings included); false if the ocean rejected them. */
   set(changes: Partial<AppState>): boolean {

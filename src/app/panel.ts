@@ -131,6 +131,7 @@ export class Panel {
     this.bind(time.add(state, 'paused').name('pause'), 'paused');
     this.bind(time.add(state, 't').name('time t (s)').step(0.001).decimals(2).listen(), 't');
     this.bind(time.add(state, 'inspector').name('inspector tiles'), 'inspector');
+    this.bind(time.add(state, 'buoys').name('buoys'), 'buoys');
     this.register('copyLink', time.add({ copyLink: () => actions.copyLink() }, 'copyLink').name('copy link'));
 
     this.syncDepthControls();

@@ -11,7 +11,7 @@
  *   ior causticPower causticColour absorption scatterColour   — shading; colours and absorption
  *                                                               are "r,g,b" (linear, ≥ 0)
  *   mode       shading mode (full, fresnel, reflection, refraction, caustics, height)
- *   wireframe  1/0        inspector  1/0        path  auto/gpu/js
+ *   wireframe  1/0        inspector  1/0        path  auto/gpu/js        buoys  1/0
  *   timeScale  ≥ 0        paused     1/0        t     simulation time in seconds
  *   cam        x,y,z,yawDeg,pitchDeg (metres, degrees; see flyControls.ts)
  *   skybox     "generated" (the analytic sky), or the folder URL of six faces px.png … nz.png
@@ -54,6 +54,8 @@ export interface AppState extends SimulationParameters {
   mode: ShadingMode;
   wireframe: boolean;
   inspector: boolean;
+  /** A few floating buoys ahead of the camera (buoys.ts). */
+  buoys: boolean;
   path: PathPreference;
   timeScale: number;
   paused: boolean;
@@ -77,6 +79,7 @@ export const DEFAULT_STATE: Readonly<AppState> = Object.freeze({
   mode: DEFAULT_SHADING.shadingMode,
   wireframe: false,
   inspector: false,
+  buoys: false,
   path: 'auto' as PathPreference,
   timeScale: 1,
   paused: false,
@@ -131,6 +134,7 @@ export const URL_KEYS: readonly (keyof AppState)[] = [
   'mode',
   'wireframe',
   'inspector',
+  'buoys',
   'path',
   'timeScale',
   'paused',
@@ -250,6 +254,7 @@ export function parseValue<K extends keyof AppState>(key: K, text: string): { va
       return (PATH_PREFERENCES as readonly string[]).includes(text) ? ok(text) : bad(PATH_PREFERENCES.join(', '));
     case 'wireframe':
     case 'inspector':
+    case 'buoys':
     case 'paused': {
       const v = parseFlag(text);
       return v === null ? bad('1 or 0') : ok(v);

@@ -3,13 +3,16 @@
  * bottom, for a boat or a buoy on the sea (its horizontal position and heading are the caller's).
  *
  * Archimedes' principle per sample column (strip theory, the simplest form of it): the bottom is
- * split into n×n cells of area A/n²; a cell whose corner point lies d below the water surface
- * above it (heightAt) is pushed up by ρ·g·(A/n²)·min(d, height), at that point. The body moves
+ * split into n×n cells of area A/n²; a cell whose centre point lies d below the water surface
+ * above it (heightAt) is pushed up by ρ·g·(A/n²)·min(d, height), at the middle of its submerged
+ * column (half way up it along the box's own vertical): so the centre of buoyancy moves to the low
+ * side as the box tilts, which is what rights it. The body moves
  * under those forces, its weight m·g and linear damping (a fraction `damping` of critical damping
  * for heave and for rotation: radiation and viscous losses, which strip theory leaves out):
  *     m·dv/dt = Σ F_i − m·g − c·v,        I·dω/dt = Σ (p_i − c) × F_i − c_ω·ω
  * with I the box's inertia tensor in its own axes, stepped by semi-implicit Euler in substeps of at
- * most MAX_SUBSTEP, much shorter than the heave period 2π·√(draft/g).
+ * most MAX_SUBSTEP (1/30 s), well inside the heave period 2π·√(draft/g) for drafts above a few
+ * centimetres (0.4 s at 4 cm; the scheme is stable while a substep is under a third of it).
  * On flat water the box settles at the draft m / (ρ·A) (tests/unit/floatingBody.test.ts).
  */
 import { Quaternion, Vector3 } from 'three';
@@ -17,7 +20,7 @@ import { GRAVITY } from '../spectrum/dispersion';
 
 /** Density of surface sea water, kg/m³ (the EOS-80 equation of state, UNESCO 1981, gives 1024.8 at 35 PSU and 20 °C). */
 export const SEA_WATER_DENSITY = 1025;
-const MAX_SUBSTEP = 1 / 240;
+const MAX_SUBSTEP = 1 / 30;
 
 export interface FloatingBodyOptions {
   /** kg */
@@ -60,6 +63,7 @@ export class FloatingBody {
   private readonly point = new Vector3();
   private readonly arm = new Vector3();
   private readonly spin = new Quaternion();
+  private readonly up = new Vector3();
   private readonly inverse = new Quaternion();
 
   constructor(options: FloatingBodyOptions) {
@@ -107,13 +111,14 @@ export class FloatingBody {
     force.set(0, -this.mass * GRAVITY, 0);
     torque.set(0, 0, 0);
     const height = this.size[1];
+    const up = this.up.set(0, 1, 0).applyQuaternion(this.orientation);
     for (const local of this.points) {
       point.copy(local).applyQuaternion(this.orientation).add(this.position);
       const depth = Math.min(water.heightAt(point.x, point.z) - point.y, height);
       if (depth <= 0) continue;
       const lift = this.density * GRAVITY * this.cellArea * depth;
       force.y += lift;
-      arm.subVectors(point, this.position);
+      arm.subVectors(point, this.position).addScaledVector(up, depth / 2);
       // (arm × (0, lift, 0))
       torque.x -= arm.z * lift;
       torque.z += arm.x * lift;

@@ -90,7 +90,7 @@ function surfacePointOver(layers: readonly WaveLayer[], choppiness: number, t: n
       restZ -= 0.5 * residualZ;
     }
   }
-  sampleLayers(layers, blended, t, restX, restZ, sample);
+  sampleLayers(layers, blended, t, restX, restZ, sample, true);
   return sample;
 }
 
@@ -103,8 +103,11 @@ function prepareBlend(layers: readonly WaveLayer[]): number {
   return blended;
 }
 
-/** Sums every layer's fields at the rest point (x, z) into `out`; `blended` from prepareBlend. */
-function sampleLayers(layers: readonly WaveLayer[], blended: number, t: number, x: number, z: number, out: SurfaceSample): void {
+/**
+ * Sums every layer's fields at the rest point (x, z) into `out`; `blended` from prepareBlend. With
+ * `derivatives`, the slopes and Jacobian terms include the blend's own change too.
+ */
+function sampleLayers(layers: readonly WaveLayer[], blended: number, t: number, x: number, z: number, out: SurfaceSample, derivatives = false): void {
   out.dx = out.height = out.dz = out.slopeX = out.slopeZ = out.dxdx = out.dzdz = out.dxdz = out.dzdx = 0;
   layers.forEach((layer, i) => {
     const { size, origin, resolution, periodic } = layer.frame;
@@ -120,6 +123,7 @@ function sampleLayers(layers: readonly WaveLayer[], blended: number, t: number, 
     const [copyU, copyV] = [u + COPY_OFFSET[0] * resolution, v + COPY_OFFSET[1] * resolution];
     addSample(fields, resolution, u, v, Math.cos(theta), out);
     addSample(fields, resolution, copyU, copyV, Math.sin(theta), out);
+    if (!derivatives) return; // Newton's steps do without them (they converge to the same point)
     // Every field cos θ·f1 + sin θ·f2 also changes with θ: its derivative gains (−sin θ·f1 + cos θ·f2)·∇θ
     // (for the height's slope, as in ocean.vert). θ turns over hundreds of metres: a central
     // difference over 1 m is exact enough.

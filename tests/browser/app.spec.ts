@@ -466,6 +466,30 @@ test.describe('the app', () => {
     expect(page.url()).toContain('seed=12');
   });
 
+  test('?buoys=1 drops floating buoys ahead of the camera; they ride the water, and the panel takes them away', async ({ page }) => {
+    await openApp(page, 'resolution=64&windSpeed=12&buoys=1');
+    const afloat = () =>
+      page.evaluate(async () => {
+        const { buoys, ocean, state } = window.oceanApp;
+        const t0 = state.t;
+        while (window.oceanApp.state.t < t0 + 1) await new Promise((resolve) => requestAnimationFrame(resolve));
+        // Each float is 0.6 m high; its centre is where the water is, give or take the float's motion.
+        return buoys!.children
+          .filter((child) => child.type === 'Mesh')
+          .map((buoy) => ({ y: buoy.position.y, water: ocean.heightAt(buoy.position.x, buoy.position.z), tilt: Math.acos(1 - 2 * (buoy.quaternion.x ** 2 + buoy.quaternion.z ** 2)) })); // the mast's angle from vertical
+      });
+    const first = await afloat();
+    expect(first).toHaveLength(5);
+    for (const { y, water, tilt } of first) {
+      expect(Math.abs(y - water)).toBeLessThan(0.6);
+      expect(tilt).toBeLessThan(0.7); // upright (it is stable), rocking with the waves (a turn about the vertical is free)
+    }
+    const second = await afloat();
+    expect(second.some((buoy, i) => Math.abs(buoy.y - first[i].y) > 1e-3)).toBe(true); // they move
+    await page.locator('[data-key="buoys"] input').uncheck();
+    expect(await page.evaluate(() => window.oceanApp.buoys === null && !window.oceanApp.scene.getObjectByName('buoys'))).toBe(true);
+  });
+
   test('?inspector=1 shows the inspector tiles and the panel toggles them', async ({ page }) => {
     await openApp(page, 'resolution=32&inspector=1');
     await expect(page.locator('.inspector-labels > div')).toHaveCount(10);

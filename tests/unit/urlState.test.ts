@@ -47,6 +47,7 @@ function changed(): AppState {
     mode: 'height',
     wireframe: true,
     inspector: true,
+    buoys: true,
     path: 'js',
     timeScale: 0.5,
     paused: true,
