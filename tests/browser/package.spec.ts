@@ -1,6 +1,6 @@
 import { expect, test, type Page } from '@playwright/test';
 import { execFileSync } from 'node:child_process';
-import { existsSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { dirname, join, relative, resolve } from 'node:path';
 import { PNG } from 'pngjs';
@@ -97,7 +97,7 @@ test.afterAll(() => {
 });
 
 test("the packed library in a new vite project: the README's Quick start shows the app's first view", async ({ page, browser }) => {
-  test.setTimeout(180_000); // pack (builds the library), install, build: about 30 s here, more on a busy machine
+  test.setTimeout(180_000); // pack (builds the library), install, build, two pages: about 60 s here, more on a busy machine
   workDir = mkdtempSync(join(tmpdir(), 'three-fft-ocean-package-'));
   const project = join(workDir, 'project');
 
@@ -109,7 +109,7 @@ test("the packed library in a new vite project: the README's Quick start shows t
   expect(tarball, 'the tarball npm pack wrote').toBeTruthy();
 
   await test.step('install the tarball and three into a new project', () => {
-    run('mkdir', ['-p', project], workDir!);
+    mkdirSync(project);
     writeFileSync(join(project, 'package.json'), JSON.stringify({ name: 'quick-start', private: true, type: 'module' }, null, 2));
     const install = ['install', '--no-audit', '--no-fund', '--no-save', join(workDir!, tarball!), `three@${threeVersion}`];
     try {
