@@ -31,6 +31,33 @@ function lilGuiWithoutIconFont(): Plugin {
 }
 
 /**
+ * The library's worker without a source map. A user's bundler copies the worker file as it is (an
+ * asset found through new URL(..., import.meta.url)) but not a map beside it, so a
+ * `sourceMappingURL` comment in it would name a file missing from their site (a 404 in devtools).
+ * The worker is not minified, so devtools show readable code without one. Fails the build if the
+ * worker is no longer where this expects it.
+ */
+function workerWithoutSourceMap(): Plugin {
+  const isWorker = (fileName: string) => /^assets\/waveFieldWorker-[^/]*\.js$/.test(fileName);
+  return {
+    name: 'worker-without-source-map',
+    generateBundle: {
+      order: 'post',
+      handler(_options, bundle) {
+        const workers = Object.keys(bundle).filter(isWorker);
+        if (workers.length !== 1) this.error(`expected one worker file in the library, found ${workers.length}`);
+        for (const fileName of workers) {
+          const worker = bundle[fileName];
+          if (worker.type !== 'asset' || typeof worker.source !== 'string') this.error(`${fileName} is not a text asset`);
+          worker.source = worker.source.replace(/\n\/\/# sourceMappingURL=\S*\s*$/, '\n');
+          delete bundle[`${fileName}.map`];
+        }
+      },
+    },
+  };
+}
+
+/**
  * Two builds from one config (`npm run build` runs both):
  *
  * - `vite build` (the default mode): the app (index.html) and the example pages into dist/app.
@@ -51,6 +78,7 @@ export default defineConfig(({ mode }) => ({
   ...(mode === 'lib'
     ? {
         publicDir: false,
+        plugins: [workerWithoutSourceMap()],
         // Relative URLs, so the worker file is found next to the library wherever it is served
         // from (new URL('./assets/…', import.meta.url)), not at the site's root.
         base: './',

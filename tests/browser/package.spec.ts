@@ -1,0 +1,216 @@
+import { expect, test, type Page } from '@playwright/test';
+import { execFileSync } from 'node:child_process';
+import { existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { dirname, join, relative, resolve } from 'node:path';
+import { PNG } from 'pngjs';
+import { serveDirectory } from '../../scripts/static-server.mjs';
+
+// What a new user gets (issue 11, "Done when"): the library packed as npm publishes it (`npm pack`,
+// whose prepack builds dist/lib), installed with three into a new project outside the repository,
+// the README's Quick start page and main.js copied into it verbatim, built with vite, served as
+// plain files and opened in headless Chromium. Its picture must be the app's first view: the same
+// camera, renderer settings and sea at the same time give the same pixels.
+
+const repo = resolve(import.meta.dirname, '../..');
+/** The three.js the repository develops against: the one the new project installs. */
+const threeVersion: string = JSON.parse(readFileSync(join(repo, 'package.json'), 'utf8')).devDependencies.three;
+const SIZE = { width: 480, height: 270 }; // small: SwiftShader draws every pixel on the CPU
+/** The simulation time of both pictures, seconds: a whole number of milliseconds, as an app link holds it. */
+const FRAME_MS = 2500;
+
+/** The fenced block of README.md that follows `<!-- quick-start: name -->`, as a user would copy it. */
+function quickStartFile(readme: string, name: string): string {
+  const marker = `<!-- quick-start: ${name} -->`;
+  const match = new RegExp(`${marker.replace(/[.*+?^${}()|[\]\\]/g, '\\$&')}\\n\`\`\`\\w*\\n([\\s\\S]*?)\\n\`\`\`\\n`).exec(readme);
+  if (!match) throw new Error(`README.md has no fenced block after ${marker}`);
+  return `${match[1]}\n`;
+}
+
+function run(command: string, args: string[], cwd: string): string {
+  return execFileSync(command, args, { cwd, encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+}
+
+/** Every file under `dir`, as paths relative to it with '/' separators. */
+function listFiles(dir: string): string[] {
+  return readdirSync(dir, { recursive: true, encoding: 'utf8' })
+    .filter((path) => statSync(join(dir, path)).isFile())
+    .map((path) => path.split('\\').join('/'));
+}
+
+/**
+ * Every `sourceMappingURL=` in the .js files under `dir` whose file is not under `dir` ("file →
+ * map" texts). A map a consumer's site does not have is a 404 in their devtools.
+ */
+function missingSourceMaps(dir: string): string[] {
+  const missing: string[] = [];
+  for (const file of listFiles(dir).filter((path) => path.endsWith('.js'))) {
+    for (const [, url] of readFileSync(join(dir, file), 'utf8').matchAll(/[#@] sourceMappingURL=(\S+)/g)) {
+      if (url.startsWith('data:')) continue;
+      const map = resolve(dirname(join(dir, file)), url);
+      if (relative(dir, map).startsWith('..') || !existsSync(map)) missing.push(`${file} → ${url}`);
+    }
+  }
+  return missing;
+}
+
+interface Picture {
+  width: number;
+  height: number;
+  /** RGBA, top row first. */
+  data: Uint8Array;
+}
+
+async function screenshot(page: Page): Promise<Picture> {
+  const png = PNG.sync.read(await page.locator('canvas').first().screenshot());
+  return { width: png.width, height: png.height, data: new Uint8Array(png.data) };
+}
+
+/** Mean R, G, B of the rows [from, to) of a picture. */
+function meanColour({ width, data }: Picture, from: number, to: number): [number, number, number] {
+  const sum = [0, 0, 0];
+  for (let i = from * width; i < to * width; i++) for (let c = 0; c < 3; c++) sum[c] += data[4 * i + c];
+  return sum.map((value) => value / ((to - from) * width)) as [number, number, number];
+}
+
+/**
+ * Page errors, console errors and failed requests from now on. The browser's own request for
+ * /favicon.ico (the quick start page has none, like most new projects) is not the library's.
+ */
+function watchProblems(page: Page): string[] {
+  const problems: string[] = [];
+  page.on('pageerror', (error) => problems.push(`page error: ${error.message}`));
+  page.on('response', (response) => {
+    const path = new URL(response.url()).pathname;
+    if (response.status() >= 400 && path !== '/favicon.ico') problems.push(`HTTP ${response.status()}: ${path}`);
+  });
+  page.on('console', (message) => {
+    // A failed request's console line has no URL; the response listener names it.
+    if (message.type() === 'error' && !message.text().startsWith('Failed to load resource')) problems.push(`console: ${message.text()}`);
+  });
+  return problems;
+}
+
+let workDir: string | undefined;
+test.afterAll(() => {
+  if (workDir) rmSync(workDir, { recursive: true, force: true });
+});
+
+test("the packed library in a new vite project: the README's Quick start shows the app's first view", async ({ page, browser }) => {
+  test.setTimeout(180_000); // pack (builds the library), install, build, two pages: about 60 s here, more on a busy machine
+  workDir = mkdtempSync(join(tmpdir(), 'three-fft-ocean-package-'));
+  const project = join(workDir, 'project');
+
+  // Pack as npm publishes: prepack builds dist/lib. Only `files` of package.json are in it.
+  await test.step('npm pack', () => {
+    run('npm', ['pack', '--silent', '--pack-destination', workDir!], repo);
+  });
+  const tarball = readdirSync(workDir).find((name) => name.endsWith('.tgz'));
+  expect(tarball, 'the tarball npm pack wrote').toBeTruthy();
+
+  await test.step('install the tarball and three into a new project', () => {
+    mkdirSync(project);
+    writeFileSync(join(project, 'package.json'), JSON.stringify({ name: 'quick-start', private: true, type: 'module' }, null, 2));
+    const install = ['install', '--no-audit', '--no-fund', '--no-save', join(workDir!, tarball!), `three@${threeVersion}`];
+    try {
+      run('npm', [...install, '--offline'], project); // from npm's cache: no network when three is there
+    } catch {
+      // three is not in npm's cache on this machine yet: fetch it from the registry npm is set up with.
+      console.log(`package.spec: three@${threeVersion} is not in npm's cache; installing it from the registry`);
+      run('npm', [...install, '--prefer-offline'], project);
+    }
+    expect(JSON.parse(readFileSync(join(project, 'node_modules/three/package.json'), 'utf8')).version).toBe(threeVersion);
+  });
+
+  // The installed package is the tarball's content: no file in it names a source map it lacks.
+  const installed = join(project, 'node_modules/three-fft-ocean');
+  expect(listFiles(installed).filter((path) => path.endsWith('.js')).length, 'library files in the tarball').toBeGreaterThan(2);
+  expect(missingSourceMaps(installed), 'source maps named in the tarball but not in it').toEqual([]);
+
+  await test.step("build the README's quick start with vite", () => {
+    const readme = readFileSync(join(repo, 'README.md'), 'utf8');
+    writeFileSync(join(project, 'index.html'), quickStartFile(readme, 'index.html'));
+    writeFileSync(join(project, 'main.js'), quickStartFile(readme, 'main.js'));
+    run(join(repo, 'node_modules/.bin/vite'), ['build', project, '--logLevel', 'error'], project);
+  });
+  const site = join(project, 'dist');
+  // The user's build copies the library's worker as it is: it must not name a map left behind.
+  expect(listFiles(site).some((path) => /waveFieldWorker-.*\.js$/.test(path)), "the library's worker in the build").toBe(true);
+  expect(missingSourceMaps(site), "source maps named in the user's build but not in it").toEqual([]);
+
+  const server = await serveDirectory(site);
+  try {
+    // The quick start's clock is Playwright's, stopped: its animation loop draws one frame, at
+    // FRAME_MS (the first time the clock moves), so the time of its picture is known.
+    await page.setViewportSize(SIZE);
+    await page.clock.install({ time: 0 });
+    await page.clock.pauseAt(1000);
+    // Count the animation frames that run and remember the time they are given (that of the
+    // fake performance.now()); this runs after the clock has replaced requestAnimationFrame.
+    await page.addInitScript(() => {
+      const state = { frames: 0, lastMs: -1 };
+      Object.assign(window, { quickStartFrames: state });
+      const original = window.requestAnimationFrame.bind(window);
+      window.requestAnimationFrame = (callback) =>
+        original((ms) => {
+          state.frames++;
+          state.lastMs = ms;
+          callback(ms);
+        });
+    });
+    const problems = watchProblems(page);
+    await page.goto(`${server.url}/`);
+    await page.waitForFunction(() => document.querySelector('canvas') !== null);
+    // Jump to FRAME_MS: the frame the loop waits for is due, and runs once.
+    const now = await page.evaluate(() => performance.now());
+    expect(now).toBeLessThan(FRAME_MS);
+    await page.clock.fastForward(FRAME_MS - now);
+    const frame = await page.evaluate(() => (window as unknown as { quickStartFrames: { frames: number; lastMs: number } }).quickStartFrames);
+    expect(frame, 'the frames the quick start drew').toEqual({ frames: 1, lastMs: FRAME_MS });
+    const t = frame.lastMs / 1000;
+    const quickStart = await screenshot(page);
+    expect(problems, 'errors on the quick start page').toEqual([]);
+
+    // The app's first view (the dev server's index.html, all defaults) at the same time, paused.
+    const appPage = await browser.newPage({ viewport: SIZE });
+    try {
+      const appProblems = watchProblems(appPage);
+      await appPage.goto(`/?t=${t}&paused=1`);
+      await appPage.waitForFunction(() => window.oceanApp !== undefined);
+      // Hide what lies over the canvas (status line, panel) and let two frames draw.
+      await appPage.addStyleTag({ content: 'body > :not(#app), #app > :not(canvas) { display: none !important; }' });
+      await appPage.evaluate(() => window.oceanApp.capturePixels());
+      await appPage.evaluate(() => window.oceanApp.capturePixels());
+      const app = await screenshot(appPage);
+      expect(appProblems, 'errors on the app page').toEqual([]);
+
+      expect([quickStart.width, quickStart.height]).toEqual([app.width, app.height]);
+      const { width, height } = app;
+      // A sea under a sky: bright sky at the top, bluer than red, darker water at the bottom.
+      const sky = meanColour(quickStart, 0, Math.round(height / 10));
+      const sea = meanColour(quickStart, Math.round((height * 3) / 4), height);
+      expect(sky[2], 'the sky at the top').toBeGreaterThan(120);
+      expect(sea[2], 'the sea is blue').toBeGreaterThan(sea[0] + 10);
+      expect(sky[0] + sky[1] + sky[2], 'the sky brighter than the sea').toBeGreaterThan(sea[0] + sea[1] + sea[2] + 30);
+      // The same picture: per pixel and channel, the mean difference and how many differ visibly.
+      let sum = 0;
+      let visible = 0;
+      for (let i = 0; i < width * height; i++) {
+        let largest = 0;
+        for (let c = 0; c < 3; c++) {
+          const difference = Math.abs(quickStart.data[4 * i + c] - app.data[4 * i + c]);
+          sum += difference;
+          largest = Math.max(largest, difference);
+        }
+        if (largest > 16) visible++;
+      }
+      console.log(`package.spec: t = ${t} s; mean |difference| ${(sum / (3 * width * height)).toFixed(3)}, pixels off by > 16: ${visible}`);
+      expect(sum / (3 * width * height), 'mean difference from the app, per channel').toBeLessThan(1);
+      expect(visible / (width * height), 'pixels visibly different from the app').toBeLessThan(0.002); // measured: 23 of 129 600 (0.02 %)
+    } finally {
+      await appPage.close();
+    }
+  } finally {
+    await server.close();
+  }
+});
