@@ -17,9 +17,9 @@ import { SkyBackground } from './render/skyBackground';
 import { SkyEnvironment } from './render/skyEnvironment';
 import { OceanSimulation, type SimulationOptions } from './layers/oceanSimulation';
 import { heightAt } from './layers/surfaceQuery';
-import { unknownOption } from './parameters/options';
+import { optionAliases, unknownOption } from './parameters/options';
 import { ParameterError, SIMULATION_OPTIONS, type SimulationParameters } from './parameters/parameters';
-import { SHADING_OPTIONS, SUN_OPTIONS, type ShadingOptions } from './parameters/sceneOptions';
+import { SHADING_OPTIONS, SUN_OPTIONS, type ShadingChanges, type ShadingOptions } from './parameters/sceneOptions';
 import type { InitialSpectrum } from './spectrum/initialSpectrum';
 import { spectralMoments } from './spectrum/seaState';
 
@@ -30,10 +30,12 @@ export interface OceanOptions extends Partial<SimulationParameters>, OceanShadin
   sunAzimuth?: number;
 }
 
-const SHADING_KEYS = Object.keys(SHADING_OPTIONS) as (keyof ShadingOptions)[];
+const SHADING_ALIASES = optionAliases(SHADING_OPTIONS);
+/** The shading options' names, British aliases included. */
+const SHADING_NAMES = [...Object.keys(SHADING_OPTIONS), ...Object.keys(SHADING_ALIASES)] as (keyof ShadingChanges)[];
 const SIMULATION_KEYS = Object.keys(SIMULATION_OPTIONS) as (keyof SimulationParameters)[];
-/** Every option the constructor takes: a misspelt one is an error, not silently ignored. */
-const OCEAN_OPTION_KEYS: readonly string[] = [...SIMULATION_KEYS, ...SHADING_KEYS, ...Object.keys(SUN_OPTIONS), 'path', 'worker'];
+/** Every option the constructor takes (and the aliases above): a misspelt one is an error, not silently ignored. */
+const OCEAN_OPTION_KEYS: readonly string[] = [...SIMULATION_KEYS, ...Object.keys(SHADING_OPTIONS), ...Object.keys(SUN_OPTIONS), 'path', 'worker'];
 
 /** Significant wave height (m) and peak period (s) of a sea state. */
 export interface SeaStateSummary {
@@ -55,10 +57,10 @@ export class Ocean extends Object3D {
     super();
     this.name = 'Ocean';
     for (const [key, value] of Object.entries(options)) {
-      if (!OCEAN_OPTION_KEYS.includes(key)) throw unknownOption(key, value, OCEAN_OPTION_KEYS);
+      if (!OCEAN_OPTION_KEYS.includes(key) && !Object.hasOwn(SHADING_ALIASES, key)) throw unknownOption(key, value, OCEAN_OPTION_KEYS, SHADING_ALIASES);
     }
     const simulationParameters = pick(options, SIMULATION_KEYS);
-    const shading = pick(options, SHADING_KEYS);
+    const shading = pick(options, SHADING_NAMES);
     this.simulation = new OceanSimulation(renderer, simulationParameters, { path: options.path, worker: options.worker });
     this.sky = new SkyEnvironment(renderer, { sunElevation: options.sunElevation, sunAzimuth: options.sunAzimuth });
     const sim = this.simulation;
@@ -129,11 +131,15 @@ export class Ocean extends Object3D {
     this.simulation.setParameters(changes);
   }
 
-  get shading(): Required<OceanShadingOptions> {
+  /** The shading options in use (colours as linear [r, g, b]). */
+  get shading(): ShadingOptions {
     return this.surface.material.shading;
   }
 
-  /** Changes shading options; a bad one throws a ParameterError and nothing changes. */
+  /**
+   * Changes shading options (colours as a THREE.Color, a hex number, a CSS string or linear
+   * [r, g, b]); a bad one throws a ParameterError and nothing changes.
+   */
   setShading(changes: OceanShadingOptions): void {
     this.surface.material.setShading(changes);
   }

@@ -11,15 +11,15 @@
 #include "surface/waveLayers.glsl"
 
 uniform vec3 sunDirection;     // towards the sun
-uniform vec3 sunColour;        // radiance of the glint
+uniform vec3 sunColor;        // radiance of the glint
 uniform float sunShininess;
 uniform float iorAir;
 uniform float iorWater;
 uniform vec3 absorption;
-uniform vec3 scatterColour;
+uniform vec3 scatterColor;
 uniform float viewDepth;
 uniform float causticPower;
-uniform vec3 causticColour;
+uniform vec3 causticColor;
 uniform float heightScale;     // metres shown as full white in the height mode
 
 varying vec2 vLayerUv[LAYER_COUNT];
@@ -92,12 +92,12 @@ void main() {
   #if SHADING_MODE == SHADING_REFLECTION
   vec3 colour = environmentRadiance(reflected);
   #elif SHADING_MODE == SHADING_REFRACTION
-  vec3 colour = throughWater(environmentRadiance(refracted), refracted, absorption, scatterColour, viewDepth);
+  vec3 colour = throughWater(environmentRadiance(refracted), refracted, absorption, scatterColor, viewDepth);
   #else
   vec3 sky = environmentRadiance(reflected);
-  vec3 water = throughWater(environmentRadiance(refracted), refracted, absorption, scatterColour, viewDepth);
-  vec3 glint = sunColour * reflectance * pow(max(dot(reflected, sunDirection), 0.0), sunShininess);
-  vec3 colour = reflectance * sky + (1.0 - reflectance) * water + caustic * causticColour + glint;
+  vec3 water = throughWater(environmentRadiance(refracted), refracted, absorption, scatterColor, viewDepth);
+  vec3 glint = sunColor * reflectance * pow(max(dot(reflected, sunDirection), 0.0), sunShininess);
+  vec3 colour = reflectance * sky + (1.0 - reflectance) * water + caustic * causticColor + glint;
   #endif
   gl_FragColor = vec4(colour, 1.0);
   #include <tonemapping_fragment>

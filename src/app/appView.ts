@@ -32,9 +32,9 @@ export function createAppOcean(renderer: WebGLRenderer, state: Readonly<AppState
     sunAzimuth: state.sunAzimuth,
     ior: state.ior,
     absorption: state.absorption,
-    scatterColour: state.scatterColour,
+    scatterColor: state.scatterColor,
     causticPower: state.causticPower,
-    causticColour: state.causticColour,
+    causticColor: state.causticColor,
     shadingMode: state.mode,
   });
   ocean.surface.material.wireframe = state.wireframe;

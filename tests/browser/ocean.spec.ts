@@ -148,3 +148,40 @@ test('heightAt(x, z) is the height of the rendered surface over (x, z), choppy d
   expect(result.folded).toBeLessThan(result.compared / 10);
   expect(result.maxError / result.rms).toBeLessThan(0.01);
 });
+
+test.describe('the Ocean API', () => {
+  test('colours: a THREE.Color, a hex number, a CSS string or linear [r, g, b]; the British names are aliases', async ({ page }) => {
+    await openOcean(page);
+    const result = await page.evaluate(() => {
+      const { Ocean, Color, ParameterError, renderer } = window.ocean;
+      const ocean = new Ocean(renderer, { resolution: 16, worker: false, scatterColour: '#1a6b80', causticColor: new Color(0x1a6b80) });
+      const uniforms = ocean.surface.material.uniforms;
+      const teal = new Color(0x1a6b80).toArray();
+      const constructed = { scatter: ocean.shading.scatterColor, caustic: ocean.shading.causticColor, uniform: uniforms.scatterColor.value.toArray() };
+      ocean.setShading({ causticColour: 0x1a6b80, scatterColor: [0.1, 0.2, 0.3] });
+      const set = { scatter: ocean.shading.scatterColor, caustic: ocean.shading.causticColor, uniform: uniforms.causticColor.value.toArray() };
+      const errors: string[] = [];
+      for (const bad of [{ scatterColor: 'sea green' }, { causticColor: 0x1000000 }, { scatterColour: [1, 2] }, { scatterColr: 'red' }]) {
+        try {
+          ocean.setShading(bad as never);
+        } catch (error) {
+          errors.push(`${error instanceof ParameterError}: ${(error as Error).message}`);
+        }
+      }
+      const kept = ocean.shading.scatterColor;
+      ocean.dispose();
+      return { teal, constructed, set, errors, kept };
+    });
+    for (const values of [result.constructed.scatter, result.constructed.caustic, result.constructed.uniform, result.set.caustic, result.set.uniform] as number[][]) {
+      values.forEach((value, i) => expect(value).toBeCloseTo(result.teal[i], 6));
+    }
+    expect(result.set.scatter).toEqual([0.1, 0.2, 0.3]);
+    expect(result.errors).toEqual([
+      expect.stringMatching(/^true: scatterColor must be a colour: .*; got "sea green"$/),
+      expect.stringMatching(/^true: causticColor must be a colour: .*; got 16777216$/),
+      expect.stringMatching(/^true: scatterColour must be a colour: .*; got \[1, 2\]$/),
+      expect.stringMatching(/^true: scatterColr must be one of .* \(did you mean scatterColor\?\); got "red"$/),
+    ]);
+    expect(result.kept).toEqual([0.1, 0.2, 0.3]);
+  });
+});

@@ -19,6 +19,7 @@ import {
   WebGLRenderTarget,
 } from 'three';
 import { Ocean } from '../../../src/ocean';
+import { ParameterError } from '../../../src/parameters/options';
 import { shaderSource } from '../../../src/shaderSource';
 import { OceanMaterial, type OceanShadingOptions } from '../../../src/render/oceanMaterial';
 import { OceanSurface } from '../../../src/render/oceanSurface';
@@ -80,6 +81,11 @@ function view(position: [number, number, number], target: [number, number, numbe
 }
 
 const harness = {
+  /** For tests of the Ocean's API. */
+  renderer,
+  Ocean,
+  ParameterError,
+  Color,
   setup,
   view,
   setUniformEnvironment,
