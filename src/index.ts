@@ -1,5 +1,5 @@
 // three-fft-ocean public API: re-exports only.
-export { Ocean, type OceanOptions } from './ocean';
+export { Ocean, DisposedError, type OceanOptions, type SunPosition } from './ocean';
 export { OceanSimulation, type SimulationOptions, type SimulationPath, type PathPreference } from './layers/oceanSimulation';
 export {
   DEFAULT_PARAMETERS,
@@ -38,5 +38,14 @@ export {
   type ShadingOptions,
   type SunOptions,
 } from './parameters/sceneOptions';
-export { SkyEnvironment, skyboxFaceUrls, SHIPPED_SKYBOX, type CubeFaceUrls } from './render/skyEnvironment';
+export {
+  SkyEnvironment,
+  skyboxFaceUrls,
+  sunAnglesFromDirection,
+  sunDirectionFromAngles,
+  SHIPPED_SKYBOX,
+  type CubeFaceUrls,
+  type SunAngles,
+  type SunDirection,
+} from './render/skyEnvironment';
 export { FftOceanElement, defineFftOceanElement, FFT_OCEAN_ATTRIBUTES, type FftOceanAttribute } from './embed/fftOceanElement';

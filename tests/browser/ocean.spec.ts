@@ -184,4 +184,96 @@ test.describe('the Ocean API', () => {
     ]);
     expect(result.kept).toEqual([0.1, 0.2, 0.3]);
   });
+
+  test('the sun by direction: a Vector3 or [x, y, z] becomes elevation and azimuth and back; bad ones throw and keep the sun', async ({ page }) => {
+    await openOcean(page);
+    const result = await page.evaluate(() => {
+      const { Ocean, Vector3, ParameterError, renderer } = window.ocean;
+      const sunOf = (ocean: InstanceType<typeof Ocean>) => ({
+        elevation: ocean.sky.sunElevation,
+        azimuth: ocean.sky.sunAzimuth,
+        direction: ocean.sky.sunDirection.toArray(),
+        // What the sea's glint and caustics read.
+        shaded: (ocean.surface.material.uniforms.sunDirection.value as InstanceType<typeof Vector3>).toArray(),
+      });
+      const ocean = new Ocean(renderer, { resolution: 16, worker: false, sunDirection: [0, 1, 1] });
+      const constructed = sunOf(ocean);
+      const direction = new Vector3(-2, 1, -2);
+      ocean.setSun({ direction });
+      const byVector = sunOf(ocean);
+      ocean.setSun({ elevation: 10 });
+      const elevationOnly = sunOf(ocean);
+      ocean.setSun(25, 60);
+      const errors: string[] = [];
+      for (const bad of [{ direction: [0, 0, 0] }, { direction: [NaN, 1, 0] }, { direction: [1, 1, 1], elevation: 5 }, { elevaton: 5 }]) {
+        try {
+          ocean.setSun(bad as never);
+        } catch (error) {
+          errors.push(`${error instanceof ParameterError}: ${(error as Error).message}`);
+        }
+      }
+      let constructorError = '';
+      try {
+        new Ocean(renderer, { sunDirection: [0, 0, 0] });
+      } catch (error) {
+        constructorError = `${error instanceof ParameterError}: ${(error as Error).message}`;
+      }
+      const kept = sunOf(ocean);
+      ocean.dispose();
+      return { constructed, byVector, elevationOnly, errors, constructorError, kept };
+    });
+    expect(result.constructed.elevation).toBeCloseTo(45, 10);
+    expect(result.constructed.azimuth).toBeCloseTo(90, 10);
+    // (-2, 1, -2): a third of its length up, towards −x and −z.
+    expect(result.byVector.elevation).toBeCloseTo((Math.asin(1 / 3) * 180) / Math.PI, 10);
+    expect(result.byVector.azimuth).toBeCloseTo(-135, 10);
+    [-2 / 3, 1 / 3, -2 / 3].forEach((c, i) => {
+      expect(result.byVector.direction[i]).toBeCloseTo(c, 6);
+      expect(result.byVector.shaded[i]).toBeCloseTo(c, 6);
+    });
+    expect(result.elevationOnly.elevation).toBe(10);
+    expect(result.elevationOnly.azimuth).toBeCloseTo(-135, 10);
+    expect(result.errors).toEqual([
+      'true: direction must be a finite, non-zero direction towards the sun: a Vector3 or [x, y, z], y up; got [0, 0, 0]',
+      'true: direction must be a finite, non-zero direction towards the sun: a Vector3 or [x, y, z], y up; got [NaN, 1, 0]',
+      'true: direction must be given without an elevation or azimuth (it sets both); got [1, 1, 1]',
+      expect.stringMatching(/^true: elevaton must be one of elevation, azimuth, direction \(did you mean elevation\?\)/),
+    ]);
+    expect(result.constructorError).toMatch(/^true: sunDirection must be a finite, non-zero direction/);
+    expect([result.kept.elevation, result.kept.azimuth]).toEqual([25, 60]);
+  });
+
+  test('after dispose() every method throws a DisposedError (a ParameterError); disposing twice is harmless', async ({ page }) => {
+    await openOcean(page);
+    const result = await page.evaluate(() => {
+      const { Ocean, ParameterError, DisposedError, renderer } = window.ocean;
+      const ocean = new Ocean(renderer, { resolution: 16, worker: false });
+      ocean.update(1);
+      ocean.dispose();
+      ocean.dispose();
+      const calls: [string, () => unknown][] = [
+        ['update', () => ocean.update(2)],
+        ['setParameters', () => ocean.setParameters({ windSpeed: 5 })],
+        ['setShading', () => ocean.setShading({ ior: 1.4 })],
+        ['setSun', () => ocean.setSun(10, 20)],
+        ['heightAt', () => ocean.heightAt(0, 0)],
+      ];
+      const errors = calls.map(([name, call]) => {
+        try {
+          call();
+          return `${name}: no error`;
+        } catch (error) {
+          const e = error as InstanceType<typeof DisposedError>;
+          return `${name}: ${e instanceof DisposedError && e instanceof ParameterError} ${e.name} ${e.parameter}: ${e.message}`;
+        }
+      });
+      return { errors, children: ocean.children.length };
+    });
+    expect(result.errors).toEqual(
+      ['update', 'setParameters', 'setShading', 'setSun', 'heightAt'].map(
+        (call) => `${call}: true DisposedError Ocean.${call}: Ocean.${call}: this Ocean has been disposed (its GPU resources are freed); create a new Ocean`,
+      ),
+    );
+    expect(result.children).toBe(0); // left in a scene, it draws nothing
+  });
 });

@@ -18,7 +18,7 @@ import {
   WebGLRenderer,
   WebGLRenderTarget,
 } from 'three';
-import { Ocean } from '../../../src/ocean';
+import { DisposedError, Ocean, type OceanOptions } from '../../../src/ocean';
 import { ParameterError } from '../../../src/parameters/options';
 import { shaderSource } from '../../../src/shaderSource';
 import { OceanMaterial, type OceanShadingOptions } from '../../../src/render/oceanMaterial';
@@ -85,7 +85,9 @@ const harness = {
   renderer,
   Ocean,
   ParameterError,
+  DisposedError,
   Color,
+  Vector3,
   setup,
   view,
   setUniformEnvironment,
@@ -112,24 +114,15 @@ const harness = {
     changes: Partial<SimulationParameters>,
     t: number,
   ): { compared: number; folded: number; maxError: number; rms: number } {
-    surface?.removeFromParent();
-    surface?.dispose();
-    simulation?.dispose();
-    const ocean = new Ocean(renderer, { ...changes, path: 'gpu', worker: false });
-    simulation = ocean.simulation;
-    surface = ocean.surface;
-    ocean.update(t);
-    const { displacedAtMip0, rms } = geometryCheck(t);
-    // Where the surface folds (J ≤ 0.2 at the rest point) more than one point lands on (x, z).
-    const unfolded = displacedAtMip0.filter(([, , , jacobian]) => jacobian > 0.2);
-    let maxError = 0;
-    for (const [x, y, z] of unfolded) maxError = Math.max(maxError, Math.abs(ocean.heightAt(x, z) - y));
-    ocean.sky.dispose();
-    simulation = null;
-    surface.dispose();
-    surface = null;
-    ocean.simulation.dispose();
-    return { compared: unfolded.length, folded: displacedAtMip0.length - unfolded.length, maxError, rms };
+    return withOcean(changes, (ocean) => {
+      ocean.update(t);
+      const { displacedAtMip0, rms } = geometryCheck(t);
+      // Where the surface folds (J ≤ 0.2 at the rest point) more than one point lands on (x, z).
+      const unfolded = displacedAtMip0.filter(([, , , jacobian]) => jacobian > 0.2);
+      let maxError = 0;
+      for (const [x, y, z] of unfolded) maxError = Math.max(maxError, Math.abs(ocean.heightAt(x, z) - y));
+      return { compared: unfolded.length, folded: displacedAtMip0.length - unfolded.length, maxError, rms };
+    });
   },
   /**
    * For each pixel (x, y from the top): its rendered value (red, 0–1) and cos θi of the view ray
@@ -179,6 +172,26 @@ const harness = {
     sunDirection.fromArray(direction).normalize();
   },
 };
+
+/**
+ * Runs `use` with an Ocean (GPU path, no worker) made from `changes` in place of the page's own
+ * simulation and surface (so geometryCheck reads its surface), and frees it after.
+ */
+function withOcean<T>(changes: OceanOptions, use: (ocean: Ocean) => T): T {
+  surface?.removeFromParent();
+  surface?.dispose();
+  simulation?.dispose();
+  const ocean = new Ocean(renderer, { ...changes, path: 'gpu', worker: false });
+  simulation = ocean.simulation;
+  surface = ocean.surface;
+  try {
+    return use(ocean);
+  } finally {
+    simulation = null;
+    surface = null;
+    ocean.dispose();
+  }
+}
 
 /**
  * Draws the horizon grid as points with the real vertex shader (define CAPTURE_POSITIONS), one
