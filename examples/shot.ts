@@ -28,7 +28,7 @@
  * the query or the skybox was bad, 'failure' otherwise, e.g. without WebGL 2).
  */
 import { Scene } from 'three';
-import { createAppCamera, createAppOcean, createAppRenderer, fitFarPlane, loadAppSkybox, prepareAppFrame } from '../src/app/appView';
+import { createAppCamera, createAppOcean, createAppRenderer, loadAppSkybox, prepareAppFrame } from '../src/app/appView';
 import { FlyControls } from '../src/app/flyControls';
 import { Inspector } from '../src/app/inspector';
 import {
@@ -280,15 +280,10 @@ async function start(): Promise<void> {
   const pixel = new Uint8Array(4);
   window.renderFrame = async (t: number) => {
     if (typeof t !== 'number' || !Number.isFinite(t)) throw new Error(`renderFrame: t must be a finite number, got ${t}`);
-    // As the app's frame loop: the far plane comes from the previous render's horizon, so draw
-    // again until it stands still (the camera does not move, so twice at most, on the first frame).
-    const draw = () => {
-      renderer.render(scene, camera);
-      inspector?.render(renderer);
-    };
+    // As the app's frame loop.
     prepareAppFrame(ocean, camera, t);
-    draw();
-    for (let attempt = 0; attempt < 2 && fitFarPlane(ocean, camera); attempt++) draw();
+    renderer.render(scene, camera);
+    inspector?.render(renderer);
     // A one-pixel readback waits for the GPU to finish the frame (gl.finish does not, in Chromium).
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
   };

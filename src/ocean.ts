@@ -7,8 +7,9 @@
  *   renderer.setAnimationLoop((ms) => { ocean.update(ms / 1000); renderer.render(scene, camera); });
  *
  * The sea is the plane y = 0 of world space; give the camera a far plane of at least
- * ocean.horizonDistance (about 4000 camera heights) so the surface reaches the horizon. Owns everything it creates and frees it
- * in dispose().
+ * ocean.horizonDistanceFor(camera's height) (several thousand heights) so the surface reaches the
+ * horizon. Owns everything it creates and frees it in dispose(); after that every method throws a
+ * DisposedError.
  */
 import { Object3D, type WebGLRenderer } from 'three';
 import { OceanSurface } from './render/oceanSurface';
@@ -85,7 +86,10 @@ export class Ocean extends Object3D {
   private rms: { spectra: readonly InitialSpectrum[]; value: number } | null = null;
   private summary: { parameters: Readonly<SimulationParameters>; value: SeaStateSummary } | null = null;
 
-  constructor(renderer: WebGLRenderer, options: OceanOptions = {}) {
+  constructor(
+    private readonly renderer: WebGLRenderer,
+    options: OceanOptions = {},
+  ) {
     super();
     this.name = 'Ocean';
     for (const [key, value] of Object.entries(options)) {
@@ -111,11 +115,25 @@ export class Ocean extends Object3D {
   }
 
   /**
-   * Distance in metres from the camera of the last render to the far edge of the surface (it grows
-   * with the camera's height): set camera.far at least this large to see the sea to the horizon.
+   * Distance in metres from a camera `cameraHeight` metres above the sea to the far edge of the
+   * surface, as it is drawn into the renderer's drawing buffer at its current size (several
+   * thousand heights): set camera.far at least this large to see the sea to the horizon. Valid
+   * from construction; ask again after the size or the patch sizes change.
+   */
+  horizonDistanceFor(cameraHeight: number): number {
+    this.checkAlive('horizonDistanceFor');
+    if (typeof cameraHeight !== 'number' || !Number.isFinite(cameraHeight)) {
+      throw new ParameterError('cameraHeight', cameraHeight, 'a finite height in metres above the sea');
+    }
+    return this.surface.farEdgeDistanceFor(cameraHeight, this.renderer);
+  }
+
+  /**
+   * horizonDistanceFor the height of the camera of the last render; before the first render, for a
+   * camera at sea level (the least it can be).
    */
   get horizonDistance(): number {
-    return this.surface.farEdgeDistance;
+    return this.horizonDistanceFor(this.surface.cameraHeight);
   }
 
   get time(): number {

@@ -495,16 +495,10 @@ export class FftOceanElement extends ElementBase {
     this.needsDraw = false;
     placeCamera(camera, this.simulatedTime, this.settings.cameraHeight, this.optionSetting('sun', 'sunAzimuth') as number);
     ocean.update(this.simulatedTime);
-    // The far plane must reach the horizon, which ocean.horizonDistance reports after a render:
-    // when it grew past the far plane (first frame, camera raised), draw once more.
-    for (let attempt = 0; attempt < 2; attempt++) {
-      renderer.render(scene, camera);
-      const far = Math.max(1e4, 1.5 * ocean.horizonDistance);
-      const tooShort = far > camera.far;
-      camera.far = far;
-      camera.updateProjectionMatrix();
-      if (!tooShort) break;
-    }
+    // The far plane must reach the horizon.
+    camera.far = Math.max(1e4, 1.5 * ocean.horizonDistanceFor(camera.position.y));
+    camera.updateProjectionMatrix();
+    renderer.render(scene, camera);
     this.framesDrawn++;
     if (this.framesDrawn === 1) this.dispatchEvent(new CustomEvent('fft-ocean-ready'));
   }

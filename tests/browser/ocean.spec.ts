@@ -150,6 +150,32 @@ test('heightAt(x, z) is the height of the rendered surface over (x, z), choppy d
 });
 
 test.describe('the Ocean API', () => {
+  test('horizonDistanceFor(height) is valid before the first render and reaches the farthest vertex drawn', async ({ page }) => {
+    await openOcean(page);
+    for (const [position, target] of [
+      [[10, 12, -20], [60, 0, -80]],
+      [[-300, 400, 250], [700, 400, -250]],
+    ] as [number, number, number][][]) {
+      const result = await page.evaluate(
+        ([position, target]) => {
+          window.ocean.view(position, target);
+          return window.ocean.horizonCheck({ resolution: 64, seed: 2 });
+        },
+        [position, target] as const,
+      );
+      // Before any render horizonDistance is the distance for a camera at sea level, the least.
+      expect(result.beforeAtSeaLevel).toBe(result.seaLevel);
+      expect(result.seaLevel).toBeGreaterThan(100);
+      expect(result.before).toBeGreaterThan(result.seaLevel);
+      // Asked before the render, it is what the render then reports, and the skirt's far corner
+      // (what a far plane must reach) lies within it, by less than its last cells.
+      expect(result.after).toBe(result.before);
+      expect(result.farthest).toBeLessThanOrEqual(result.before);
+      expect(result.farthest).toBeGreaterThan(0.85 * result.before);
+      expect(result.before).toBeGreaterThan(1000 * position[1]);
+    }
+  });
+
   test('colours: a THREE.Color, a hex number, a CSS string or linear [r, g, b]; the British names are aliases', async ({ page }) => {
     await openOcean(page);
     const result = await page.evaluate(() => {
@@ -257,6 +283,8 @@ test.describe('the Ocean API', () => {
         ['setShading', () => ocean.setShading({ ior: 1.4 })],
         ['setSun', () => ocean.setSun(10, 20)],
         ['heightAt', () => ocean.heightAt(0, 0)],
+        ['horizonDistanceFor', () => ocean.horizonDistanceFor(10)],
+        ['horizonDistance', () => ocean.horizonDistance],
       ];
       const errors = calls.map(([name, call]) => {
         try {
@@ -269,9 +297,11 @@ test.describe('the Ocean API', () => {
       });
       return { errors, children: ocean.children.length };
     });
+    const method = (call: string) => (call === 'horizonDistance' ? 'horizonDistanceFor' : call);
     expect(result.errors).toEqual(
-      ['update', 'setParameters', 'setShading', 'setSun', 'heightAt'].map(
-        (call) => `${call}: true DisposedError Ocean.${call}: Ocean.${call}: this Ocean has been disposed (its GPU resources are freed); create a new Ocean`,
+      ['update', 'setParameters', 'setShading', 'setSun', 'heightAt', 'horizonDistanceFor', 'horizonDistance'].map(
+        (call) =>
+          `${call}: true DisposedError Ocean.${method(call)}: Ocean.${method(call)}: this Ocean has been disposed (its GPU resources are freed); create a new Ocean`,
       ),
     );
     expect(result.children).toBe(0); // left in a scene, it draws nothing

@@ -125,6 +125,20 @@ const harness = {
     });
   },
   /**
+   * An Ocean's horizonDistanceFor(camera height) asked before its first render, its
+   * horizonDistance then and after the render from the current view, and the farthest vertex from
+   * the camera that the vertex shader placed (the skirt's corner).
+   */
+  horizonCheck(changes: Partial<SimulationParameters>): { before: number; beforeAtSeaLevel: number; seaLevel: number; after: number; farthest: number } {
+    return withOcean(changes, (ocean) => {
+      const before = ocean.horizonDistanceFor(camera.position.y);
+      const beforeAtSeaLevel = ocean.horizonDistance;
+      const seaLevel = ocean.horizonDistanceFor(0);
+      const { farthest } = geometryCheck(0); // places the rings for the camera, as a render does
+      return { before, beforeAtSeaLevel, seaLevel, after: ocean.horizonDistance, farthest };
+    });
+  },
+  /**
    * For each pixel (x, y from the top): its rendered value (red, 0–1) and cos θi of the view ray
    * where it meets the flat sea plane y = 0.
    */
@@ -281,9 +295,11 @@ function geometryCheck(t: number, withRestPoints = false) {
   const restPoints: string[] = [];
   /** (x, y, z) displaced, and the Jacobian of the choppy map at the rest point. */
   const displacedAtMip0: [number, number, number, number][] = [];
+  let farthest = 0;
   for (let v = 0; v < count; v++) {
     const [x, z, lod, ring] = rest.subarray(4 * v, 4 * v + 4);
     const [px, py, pz] = displaced.subarray(4 * v, 4 * v + 3);
+    farthest = Math.max(farthest, camera.position.distanceTo(new Vector3(px, py, pz)));
     if (lod > 500) { // SKIRT_LOD: the far edge, flat by design
       skirt++;
       continue;
@@ -311,7 +327,7 @@ function geometryCheck(t: number, withRestPoints = false) {
     // Keyed by the unclamped mip level: the coarser layers' levels go on growing past the finest's last.
     if (withRestPoints) restPoints.push(`${x},${z},${Math.round(lod)}`);
   }
-  return { count, skirt, rms, byLevel, maxOffGrid, heights, restPoints, displacedAtMip0 };
+  return { count, skirt, rms, byLevel, maxOffGrid, heights, restPoints, displacedAtMip0, farthest };
 }
 
 /** Mip levels of an RGBA N×N texture by 2×2 averaging, level 0 first. */
