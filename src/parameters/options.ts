@@ -66,16 +66,21 @@ export function quoteText(text: string): string {
 
 /**
  * A value as messages show it: text quoted, lists in brackets, objects (a THREE.Color, a Vector3)
- * by their fields, without three's `isColor`-style type flags.
+ * by their fields without three's `isColor`-style type flags; one level deep and at most 8 items,
+ * so that any object (a cyclic one too) gives a short message.
  */
-function describeValue(value: unknown): string {
+function describeValue(value: unknown, nested = false): string {
   if (typeof value === 'string') return quoteText(value);
-  if (Array.isArray(value)) return `[${value.map(describeValue).join(', ')}]`;
-  if (typeof value === 'object' && value !== null) {
-    const fields = Object.entries(value).filter(([key]) => !/^is[A-Z]/.test(key));
-    return `{${fields.map(([key, field]) => `${key}: ${describeValue(field)}`).join(', ')}}`;
-  }
-  return String(value);
+  if (typeof value === 'function') return 'a function';
+  if (typeof value !== 'object' || value === null) return String(value);
+  if (nested) return Array.isArray(value) ? '[…]' : '{…}';
+  const items = Array.isArray(value)
+    ? value.map((item) => describeValue(item, true))
+    : Object.entries(value)
+        .filter(([key]) => !/^is[A-Z]/.test(key))
+        .map(([key, field]) => `${key}: ${describeValue(field, true)}`);
+  const shown = items.length > 8 ? [...items.slice(0, 8), '…'] : items;
+  return Array.isArray(value) ? `[${shown.join(', ')}]` : `{${shown.join(', ')}}`;
 }
 
 /** The aliases of `table`'s options, each mapped to the key it is another name for. */

@@ -139,6 +139,18 @@ describe('colours', () => {
   });
 });
 
+describe('messages show any value briefly', () => {
+  it('objects one level deep and lists of at most 8 items, so a cyclic or huge value gives a short message', () => {
+    const cyclic: Record<string, unknown> = { r: 1, list: [1, 2] };
+    cyclic.self = cyclic;
+    const shown = (value: unknown) => errorOf(() => mergeOptions(SHADING_OPTIONS, { causticColor: value }, DEFAULT_SHADING)).message.split('; got ')[1];
+    expect(shown(cyclic)).toBe('{r: 1, list: […], self: {…}}');
+    expect(shown(Array.from({ length: 1000 }, (_, i) => i))).toBe('[0, 1, 2, 3, 4, 5, 6, 7, …]');
+    expect(shown(() => 1)).toBe('a function');
+    expect(shown(['#1a6b80', null])).toBe('["#1a6b80", null]');
+  });
+});
+
 describe('quoteText', () => {
   it('quotes text, cutting it after 40 characters', () => {
     expect(quoteText('abc')).toBe('"abc"');
