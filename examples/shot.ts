@@ -9,7 +9,8 @@
  *   width, height  drawing-buffer size in pixels (default 1280×720), pixel ratio 1
  *   --<option>     a scene option as the CLI got it: each key of SIMULATION_OPTIONS, SUN_OPTIONS
  *                  and SHADING_OPTIONS (src/parameters/) in kebab-case (--wind-speed, --patch-sizes,
- *                  --shading-mode …), read with parseOptionText; --wind is --wind-speed; and the
+ *                  --shading-mode …), read with parseOptionText; --wind is --wind-speed, and each
+ *                  alias of the tables in kebab-case is its option (--scatter-colour); and the
  *                  app's --path, --skybox, --wireframe, --inspector, --cam (read as the app's URL
  *                  reads path, skybox, wireframe, inspector and cam, urlState.parseValue)
  *   time           the time drawn on load, s (default 0)
@@ -27,7 +28,7 @@
  * the query or the skybox was bad, 'failure' otherwise, e.g. without WebGL 2).
  */
 import { Scene } from 'three';
-import { createAppCamera, createAppOcean, createAppRenderer, fitFarPlane, loadAppSkybox, prepareAppFrame } from '../src/app/appView';
+import { createAppCamera, createAppOcean, createAppRenderer, loadAppSkybox, prepareAppFrame } from '../src/app/appView';
 import { FlyControls } from '../src/app/flyControls';
 import { Inspector } from '../src/app/inspector';
 import {
@@ -76,8 +77,13 @@ const kebab = (name: string) => name.replace(/[A-Z]/g, (c) => `-${c.toLowerCase(
 
 /** Every scene option by its CLI name, in the order --help lists them. */
 const OPTIONS = new Map<string, ShotOption>();
+/** Other names the CLI takes: older ones, and the tables' aliases in kebab-case (--scatter-colour). */
+const ALIASES: Record<string, string> = { wind: 'wind-speed' };
 function addTable(table: Table, stateKeyOf: (key: string) => keyof AppState = (key) => key as keyof AppState): void {
-  for (const key of Object.keys(table)) OPTIONS.set(kebab(key), { table, key, stateKey: stateKeyOf(key) });
+  for (const [key, rule] of Object.entries(table)) {
+    OPTIONS.set(kebab(key), { table, key, stateKey: stateKeyOf(key) });
+    for (const alias of rule.aliases ?? []) ALIASES[kebab(alias)] = kebab(key);
+  }
 }
 addTable(SIMULATION_OPTIONS);
 addTable(SUN_OPTIONS);
@@ -91,8 +97,6 @@ OPTIONS.set('skybox', {
 OPTIONS.set('wireframe', { stateKey: 'wireframe', placeholder: '[1|0]', help: 'draw the surface as wireframe', flag: true });
 OPTIONS.set('inspector', { stateKey: 'inspector', placeholder: '[1|0]', help: "the inspector's tiles along the bottom", flag: true });
 OPTIONS.set('cam', { stateKey: 'cam', placeholder: 'x,y,z,yaw,pitch', help: "the app's camera: metres and degrees (instead of --camera)" });
-/** Older names the CLI keeps. */
-const ALIASES: Record<string, string> = { wind: 'wind-speed' };
 
 function optionNamed(name: string): ShotOption | undefined {
   return OPTIONS.get(Object.hasOwn(ALIASES, name) ? ALIASES[name] : name);
@@ -125,7 +129,8 @@ function stateFromOptions(query: URLSearchParams): AppState {
     const name = parameter.slice(2);
     const option = optionNamed(name);
     if (!option) {
-      throw new UsageError(`unknown option --${name}; did you mean --${nearestName(name, known)}? (--help lists them all)`);
+      const nearest = nearestName(name, known);
+      throw new UsageError(`unknown option --${name}; did you mean --${Object.hasOwn(ALIASES, nearest) ? ALIASES[nearest] : nearest}? (--help lists them all)`);
     }
     const earlier = given.get(option.stateKey);
     if (earlier !== undefined) throw new UsageError(`--${name} is given twice${earlier === name ? '' : ` (also as --${earlier})`}`);
@@ -182,8 +187,11 @@ function helpText(): string {
     lines.push(...rows);
   };
   const unit = (rule: OptionRule) => (rule.unit === '°' ? 'deg' : rule.unit);
-  const placeholder = (rule: OptionRule) =>
-    rule.type === 'choice' ? '<name>' : rule.type === 'numbers' ? `<${unit(rule) || 'n'},…>` : `<${unit(rule) || 'n'}>`;
+  const placeholder = (rule: OptionRule) => {
+    if (rule.type === 'choice') return '<name>';
+    if (rule.type === 'color') return '<#rrggbb|r,g,b>';
+    return rule.type === 'numbers' ? `<${unit(rule) || 'n'},…>` : `<${unit(rule) || 'n'}>`;
+  };
   const section = (title: string, names: string[]) => {
     lines.push('', title);
     for (const name of names) {
@@ -272,15 +280,10 @@ async function start(): Promise<void> {
   const pixel = new Uint8Array(4);
   window.renderFrame = async (t: number) => {
     if (typeof t !== 'number' || !Number.isFinite(t)) throw new Error(`renderFrame: t must be a finite number, got ${t}`);
-    // As the app's frame loop: the far plane comes from the previous render's horizon, so draw
-    // again until it stands still (the camera does not move, so twice at most, on the first frame).
-    const draw = () => {
-      renderer.render(scene, camera);
-      inspector?.render(renderer);
-    };
+    // As the app's frame loop.
     prepareAppFrame(ocean, camera, t);
-    draw();
-    for (let attempt = 0; attempt < 2 && fitFarPlane(ocean, camera); attempt++) draw();
+    renderer.render(scene, camera);
+    inspector?.render(renderer);
     // A one-pixel readback waits for the GPU to finish the frame (gl.finish does not, in Chromium).
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
   };

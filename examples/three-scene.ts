@@ -90,10 +90,10 @@ renderer.setAnimationLoop(() => {
   ocean.update(t);
   floatCrate(t);
   controls.update();
-  renderer.render(scene, camera);
   // The far plane must reach the surface's far edge (it moves with the camera's height).
-  camera.far = Math.max(1e4, 1.5 * ocean.horizonDistance);
+  camera.far = Math.max(1e4, 1.5 * ocean.horizonDistanceFor(camera.position.y));
   camera.updateProjectionMatrix();
+  renderer.render(scene, camera);
   frames++;
 });
 

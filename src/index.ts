@@ -1,5 +1,5 @@
 // three-fft-ocean public API: re-exports only.
-export { Ocean, type OceanOptions } from './ocean';
+export { Ocean, DisposedError, type OceanOptions, type SunPosition } from './ocean';
 export { OceanSimulation, type SimulationOptions, type SimulationPath, type PathPreference } from './layers/oceanSimulation';
 export {
   DEFAULT_PARAMETERS,
@@ -27,6 +27,27 @@ export { GpuWaveFields, supportedGpuPrecision, type GpuPrecision } from './fft/g
 export { BatchedInverseFft2D } from './fft/fft';
 export { OceanSurface } from './render/oceanSurface';
 export { OceanMaterial, type OceanShadingOptions } from './render/oceanMaterial';
-export { SHADING_MODES, SHADING_OPTIONS, SUN_OPTIONS, DEFAULT_SHADING, DEFAULT_SUN, type ShadingMode, type ShadingOptions, type SunOptions } from './parameters/sceneOptions';
-export { SkyEnvironment, skyboxFaceUrls, SHIPPED_SKYBOX, type CubeFaceUrls } from './render/skyEnvironment';
+export {
+  SHADING_MODES,
+  SHADING_OPTIONS,
+  SUN_OPTIONS,
+  DEFAULT_SHADING,
+  DEFAULT_SUN,
+  colorToLinear,
+  type ColorInput,
+  type ShadingChanges,
+  type ShadingMode,
+  type ShadingOptions,
+  type SunOptions,
+} from './parameters/sceneOptions';
+export {
+  SkyEnvironment,
+  skyboxFaceUrls,
+  sunAnglesFromDirection,
+  sunDirectionFromAngles,
+  SHIPPED_SKYBOX,
+  type CubeFaceUrls,
+  type SunAngles,
+  type SunDirection,
+} from './render/skyEnvironment';
 export { FftOceanElement, defineFftOceanElement, FFT_OCEAN_ATTRIBUTES, type FftOceanAttribute } from './embed/fftOceanElement';

@@ -7,19 +7,20 @@
  *   renderer.setAnimationLoop((ms) => { ocean.update(ms / 1000); renderer.render(scene, camera); });
  *
  * The sea is the plane y = 0 of world space; give the camera a far plane of at least
- * ocean.horizonDistance (about 4000 camera heights) so the surface reaches the horizon. Owns everything it creates and frees it
- * in dispose().
+ * ocean.horizonDistanceFor(camera's height) (several thousand heights) so the surface reaches the
+ * horizon. Owns everything it creates and frees it in dispose(); after that every method throws a
+ * DisposedError.
  */
 import { Object3D, Vector3, type WebGLRenderer } from 'three';
 import { OceanSurface } from './render/oceanSurface';
 import type { OceanShadingOptions } from './render/oceanMaterial';
 import { SkyBackground } from './render/skyBackground';
-import { SkyEnvironment } from './render/skyEnvironment';
+import { SkyEnvironment, sunAnglesFromDirection, type SunAngles, type SunDirection } from './render/skyEnvironment';
 import { OceanSimulation, type SimulationOptions } from './layers/oceanSimulation';
 import { heightAt, normalAt } from './layers/surfaceQuery';
-import { unknownOption } from './parameters/options';
+import { optionAliases, unknownOption } from './parameters/options';
 import { ParameterError, SIMULATION_OPTIONS, type SimulationParameters } from './parameters/parameters';
-import { SHADING_OPTIONS, SUN_OPTIONS, type ShadingOptions } from './parameters/sceneOptions';
+import { DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ShadingChanges, type ShadingOptions } from './parameters/sceneOptions';
 import type { InitialSpectrum } from './spectrum/initialSpectrum';
 import { spectralMoments } from './spectrum/seaState';
 
@@ -28,12 +29,45 @@ export interface OceanOptions extends Partial<SimulationParameters>, OceanShadin
   sunElevation?: number;
   /** Sun azimuth in degrees from +x towards +z. @defaultValue 40 */
   sunAzimuth?: number;
+  /**
+   * Direction towards the sun instead of sunElevation and sunAzimuth: a Vector3 or [x, y, z] in
+   * world space (y up), any length; see Ocean.setSun.
+   */
+  sunDirection?: SunDirection;
 }
 
-const SHADING_KEYS = Object.keys(SHADING_OPTIONS) as (keyof ShadingOptions)[];
+/** Where the sun is, for Ocean.setSun: degrees (a missing one stays as it is), or a direction instead. */
+export interface SunPosition {
+  /** Degrees above the horizon, [-90, 90]. */
+  elevation?: number;
+  /** Degrees from +x towards +z. */
+  azimuth?: number;
+  /** Towards the sun in world space (y up), any length but 0: a Vector3 or [x, y, z]. Not with elevation or azimuth. */
+  direction?: SunDirection;
+}
+
+/** Thrown by every method of an Ocean after its dispose(); `parameter` names the method. */
+export class DisposedError extends ParameterError {
+  constructor(method: string) {
+    super(method, undefined, '', `${method}: this Ocean has been disposed (its GPU resources are freed); create a new Ocean`);
+    this.name = 'DisposedError';
+  }
+}
+
+const SHADING_ALIASES = optionAliases(SHADING_OPTIONS);
+/** The shading options' names, British aliases included. */
+const SHADING_NAMES = [...Object.keys(SHADING_OPTIONS), ...Object.keys(SHADING_ALIASES)] as (keyof ShadingChanges)[];
 const SIMULATION_KEYS = Object.keys(SIMULATION_OPTIONS) as (keyof SimulationParameters)[];
-/** Every option the constructor takes: a misspelt one is an error, not silently ignored. */
-const OCEAN_OPTION_KEYS: readonly string[] = [...SIMULATION_KEYS, ...SHADING_KEYS, ...Object.keys(SUN_OPTIONS), 'path', 'worker'];
+/** Every option the constructor takes (and the aliases above): a misspelt one is an error, not silently ignored. */
+const OCEAN_OPTION_KEYS: readonly string[] = [
+  ...SIMULATION_KEYS,
+  ...Object.keys(SHADING_OPTIONS),
+  ...Object.keys(SUN_OPTIONS),
+  'sunDirection',
+  'path',
+  'worker',
+];
+const SUN_POSITION_KEYS: readonly string[] = ['elevation', 'azimuth', 'direction'];
 
 /** Significant wave height (m) and peak period (s) of a sea state. */
 export interface SeaStateSummary {
@@ -48,19 +82,28 @@ export class Ocean extends Object3D {
   /** The sky behind everything (a child; set skyBackground.visible = false to show your own). */
   readonly skyBackground: SkyBackground;
   private currentTime = 0;
+  private disposed = false;
   private rms: { spectra: readonly InitialSpectrum[]; value: number } | null = null;
   private summary: { parameters: Readonly<SimulationParameters>; value: SeaStateSummary } | null = null;
 
-  constructor(renderer: WebGLRenderer, options: OceanOptions = {}) {
+  constructor(
+    private readonly renderer: WebGLRenderer,
+    options: OceanOptions = {},
+  ) {
     super();
     this.name = 'Ocean';
     for (const [key, value] of Object.entries(options)) {
-      if (!OCEAN_OPTION_KEYS.includes(key)) throw unknownOption(key, value, OCEAN_OPTION_KEYS);
+      if (!OCEAN_OPTION_KEYS.includes(key) && !Object.hasOwn(SHADING_ALIASES, key)) throw unknownOption(key, value, OCEAN_OPTION_KEYS, SHADING_ALIASES);
     }
     const simulationParameters = pick(options, SIMULATION_KEYS);
-    const shading = pick(options, SHADING_KEYS);
+    const shading = pick(options, SHADING_NAMES);
+    const sun = sunAngles(
+      { elevation: options.sunElevation, azimuth: options.sunAzimuth, direction: options.sunDirection },
+      { elevation: DEFAULT_SUN.sunElevation, azimuth: DEFAULT_SUN.sunAzimuth },
+      'sunDirection',
+    );
     this.simulation = new OceanSimulation(renderer, simulationParameters, { path: options.path, worker: options.worker });
-    this.sky = new SkyEnvironment(renderer, { sunElevation: options.sunElevation, sunAzimuth: options.sunAzimuth });
+    this.sky = new SkyEnvironment(renderer, { sunElevation: sun.elevation, sunAzimuth: sun.azimuth });
     const sim = this.simulation;
     this.surface = new OceanSurface(
       { environment: this.sky.environment, sunDirection: this.sky.skyUniforms.skySunDirection },
@@ -72,11 +115,25 @@ export class Ocean extends Object3D {
   }
 
   /**
-   * Distance in metres from the camera of the last render to the far edge of the surface (it grows
-   * with the camera's height): set camera.far at least this large to see the sea to the horizon.
+   * Distance in metres from a camera `cameraHeight` metres above the sea to the far edge of the
+   * surface, as it is drawn into the renderer's drawing buffer at its current size (several
+   * thousand heights): set camera.far at least this large to see the sea to the horizon. Valid
+   * from construction; ask again after the size or the patch sizes change.
+   */
+  horizonDistanceFor(cameraHeight: number): number {
+    this.checkAlive('horizonDistanceFor');
+    if (typeof cameraHeight !== 'number' || !Number.isFinite(cameraHeight)) {
+      throw new ParameterError('cameraHeight', cameraHeight, 'a finite height in metres above the sea');
+    }
+    return this.surface.farEdgeDistanceFor(cameraHeight, this.renderer);
+  }
+
+  /**
+   * horizonDistanceFor the height of the camera of the last render; before the first render, for a
+   * camera at sea level (the least it can be).
    */
   get horizonDistance(): number {
-    return this.surface.farEdgeDistance;
+    return this.horizonDistanceFor(this.surface.cameraHeight);
   }
 
   get time(): number {
@@ -116,6 +173,7 @@ export class Ocean extends Object3D {
 
   /** Computes the sea at `timeSeconds` (any finite number; it repeats every repeatPeriod). */
   update(timeSeconds: number): void {
+    this.checkAlive('update');
     this.simulation.update(timeSeconds);
     this.currentTime = timeSeconds;
   }
@@ -126,21 +184,45 @@ export class Ocean extends Object3D {
 
   /** Changes simulation parameters; a bad one throws a ParameterError and nothing changes. */
   setParameters(changes: Partial<SimulationParameters>): void {
+    this.checkAlive('setParameters');
     this.simulation.setParameters(changes);
   }
 
-  get shading(): Required<OceanShadingOptions> {
+  /** The shading options in use (colours as linear [r, g, b]). */
+  get shading(): ShadingOptions {
     return this.surface.material.shading;
   }
 
-  /** Changes shading options; a bad one throws a ParameterError and nothing changes. */
+  /**
+   * Changes shading options (colours as a THREE.Color, a hex number, a CSS string or linear
+   * [r, g, b]); a bad one throws a ParameterError and nothing changes.
+   */
   setShading(changes: OceanShadingOptions): void {
+    this.checkAlive('setShading');
     this.surface.material.setShading(changes);
   }
 
-  /** Moves the sun (degrees); the sky, glint and caustics follow. */
-  setSun(elevation: number, azimuth: number): void {
-    this.sky.setSun(elevation, azimuth);
+  /**
+   * Moves the sun; the sky, glint and caustics follow. Either in degrees, setSun(elevation,
+   * azimuth) or setSun({ elevation, azimuth }) (a missing one stays), or by the direction towards
+   * it, setSun({ direction }): a Vector3 or [x, y, z] (y up, any length but 0), which becomes
+   * elevation atan2(y, √(x² + z²)) and azimuth atan2(z, x), from +x towards +z. Bad values throw a
+   * ParameterError and the sun stays.
+   */
+  setSun(elevation: number, azimuth: number): void;
+  setSun(sun: SunPosition): void;
+  setSun(sunOrElevation: SunPosition | number, azimuth?: number): void {
+    this.checkAlive('setSun');
+    const current = { elevation: this.sky.sunElevation, azimuth: this.sky.sunAzimuth };
+    const sun = typeof sunOrElevation === 'number' ? { elevation: sunOrElevation, azimuth } : sunOrElevation;
+    if (typeof sun !== 'object' || sun === null) {
+      throw new ParameterError('setSun', sun, '{ elevation, azimuth } (degrees), { direction } or (elevation, azimuth)');
+    }
+    for (const [key, value] of Object.entries(sun)) {
+      if (!SUN_POSITION_KEYS.includes(key)) throw unknownOption(key, value, SUN_POSITION_KEYS);
+    }
+    const { elevation, azimuth: angle } = sunAngles(sun, current, 'direction');
+    this.sky.setSun(elevation, angle);
   }
 
   /**
@@ -150,6 +232,7 @@ export class Ocean extends Object3D {
    * cascade at N = 256).
    */
   heightAt(x: number, z: number): number {
+    this.checkAlive('heightAt');
     if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError('heightAt(x, z)', `${x}, ${z}`, 'finite coordinates');
     return heightAt(this.simulation.layers, this.simulation.parameters.choppiness, this.currentTime, x, z);
   }
@@ -160,17 +243,41 @@ export class Ocean extends Object3D {
    * a buoy's tilt, a boat's pitch and roll.
    */
   normalAt(x: number, z: number, target = new Vector3()): Vector3 {
+    this.checkAlive('normalAt');
     if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError('normalAt(x, z)', `${x}, ${z}`, 'finite coordinates');
     return normalAt(this.simulation.layers, this.simulation.parameters.choppiness, this.currentTime, x, z, target);
   }
 
+  /**
+   * Frees every GPU resource the Ocean made and takes its sea and sky out of it (left in a scene it
+   * draws nothing). Every method throws a DisposedError from then on; disposing again does nothing.
+   */
   dispose(): void {
+    if (this.disposed) return;
+    this.disposed = true;
     this.surface.removeFromParent();
     this.surface.dispose();
+    this.skyBackground.removeFromParent();
     this.skyBackground.dispose();
     this.sky.dispose();
     this.simulation.dispose();
   }
+
+  private checkAlive(method: string): void {
+    if (this.disposed) throw new DisposedError(`Ocean.${method}`);
+  }
+}
+
+/**
+ * The angles `sun` asks for: its direction's, or its elevation and azimuth, `current` where it
+ * gives none. A direction with an angle is an error (`directionName` is what the caller called it).
+ */
+function sunAngles(sun: SunPosition, current: SunAngles, directionName: string): SunAngles {
+  if (sun.direction === undefined) return { elevation: sun.elevation ?? current.elevation, azimuth: sun.azimuth ?? current.azimuth };
+  if (sun.elevation !== undefined || sun.azimuth !== undefined) {
+    throw new ParameterError(directionName, sun.direction, 'given without an elevation or azimuth (it sets both)');
+  }
+  return sunAnglesFromDirection(sun.direction, directionName);
 }
 
 function pick<T extends object, K extends keyof T>(source: T, keys: readonly K[]): Partial<Pick<T, K>> {

@@ -12,15 +12,15 @@
 #include "surface/foam.glsl"
 
 uniform vec3 sunDirection;     // towards the sun
-uniform vec3 sunColour;        // radiance of the glint
+uniform vec3 sunColor;        // radiance of the glint
 uniform float sunShininess;
 uniform float iorAir;
 uniform float iorWater;
 uniform vec3 absorption;
-uniform vec3 scatterColour;
+uniform vec3 scatterColor;
 uniform float viewDepth;
 uniform float causticPower;
-uniform vec3 causticColour;
+uniform vec3 causticColor;
 uniform float heightScale;     // metres shown as full white in the height mode
 
 varying vec2 vLayerUv[LAYER_COUNT];
@@ -93,15 +93,15 @@ void main() {
   #if SHADING_MODE == SHADING_REFLECTION
   vec3 colour = environmentRadiance(reflected);
   #elif SHADING_MODE == SHADING_REFRACTION
-  vec3 colour = throughWater(environmentRadiance(refracted), refracted, absorption, scatterColour, viewDepth);
+  vec3 colour = throughWater(environmentRadiance(refracted), refracted, absorption, scatterColor, viewDepth);
   #else
   vec3 sky = environmentRadiance(reflected);
-  vec3 water = throughWater(environmentRadiance(refracted), refracted, absorption, scatterColour, viewDepth);
-  vec3 glint = sunColour * reflectance * pow(max(dot(reflected, sunDirection), 0.0), sunShininess);
-  vec3 colour = reflectance * sky + (1.0 - reflectance) * water + caustic * causticColour + glint;
+  vec3 water = throughWater(environmentRadiance(refracted), refracted, absorption, scatterColor, viewDepth);
+  vec3 glint = sunColor * reflectance * pow(max(dot(reflected, sunDirection), 0.0), sunShininess);
+  vec3 colour = reflectance * sky + (1.0 - reflectance) * water + caustic * causticColor + glint;
   // The foam field is drawn like the largest layer: two copies, here with weights cos²θ + sin²θ = 1.
   float coverage = vBlend.x * vBlend.x * texture(tFoam, largestUv).r + vBlend.y * vBlend.y * texture(tFoam, largestUv + copyOffset).r;
-  vec3 foam = foamRadiance(normal, sunDirection, sunColour, environmentRadiance(normal));
+  vec3 foam = foamRadiance(normal, sunDirection, sunColor, environmentRadiance(normal));
   colour = mix(colour, foam, foamOpacity(coverage, vRestPosition));
   #endif
   gl_FragColor = vec4(colour, 1.0);

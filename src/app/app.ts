@@ -105,9 +105,9 @@ function apply(changes: Partial<AppState>): void {
   const shading = {
     ior: changes.ior,
     absorption: changes.absorption,
-    scatterColour: changes.scatterColour,
+    scatterColor: changes.scatterColor,
     causticPower: changes.causticPower,
-    causticColour: changes.causticColour,
+    causticColor: changes.causticColor,
     shadingMode: changes.mode,
   };
   if (Object.values(shading).some((value) => value !== undefined)) ocean.setShading(shading);

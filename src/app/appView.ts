@@ -32,9 +32,9 @@ export function createAppOcean(renderer: WebGLRenderer, state: Readonly<AppState
     sunAzimuth: state.sunAzimuth,
     ior: state.ior,
     absorption: state.absorption,
-    scatterColour: state.scatterColour,
+    scatterColor: state.scatterColor,
     causticPower: state.causticPower,
-    causticColour: state.causticColour,
+    causticColor: state.causticColor,
     shadingMode: state.mode,
   });
   ocean.surface.material.wireframe = state.wireframe;
@@ -53,7 +53,7 @@ export function loadAppSkybox(ocean: Ocean, skybox: string): Promise<void> | nul
 
 /**
  * Before each render: the sea at time `t`, the eye kept above the crest under it, and the far
- * plane out to the horizon the previous render reached (Ocean.horizonDistance).
+ * plane out to the horizon.
  */
 export function prepareAppFrame(ocean: Ocean, camera: PerspectiveCamera, t: number): void {
   ocean.update(t);
@@ -67,11 +67,8 @@ export function prepareAppFrame(ocean: Ocean, camera: PerspectiveCamera, t: numb
   fitFarPlane(ocean, camera);
 }
 
-/** Moves the far plane out to the horizon of the last render; returns whether it moved. */
-export function fitFarPlane(ocean: Ocean, camera: PerspectiveCamera): boolean {
-  const far = Math.max(1e4, 1.5 * ocean.horizonDistance);
-  const moved = far !== camera.far;
-  camera.far = far;
+/** Moves the far plane out to the horizon the sea reaches from the camera's height. */
+function fitFarPlane(ocean: Ocean, camera: PerspectiveCamera): void {
+  camera.far = Math.max(1e4, 1.5 * ocean.horizonDistanceFor(camera.position.y));
   camera.updateProjectionMatrix();
-  return moved;
 }

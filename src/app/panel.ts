@@ -10,7 +10,7 @@
 import GUI, { type Controller } from 'lil-gui';
 import 'lil-gui/dist/lil-gui.css'; // as a file (see vite.config.ts): GUI's injected <style> breaks under a strict CSP
 import { Color } from 'three';
-import { SHADING_MODES } from '../parameters/sceneOptions';
+import { colorToLinear, SHADING_MODES } from '../parameters/sceneOptions';
 import { ParameterError, SPECTRUM_MODELS, SPREADING_MODELS, type SimulationParameters } from '../parameters/parameters';
 import { beaufortPreset, SEA_PRESETS } from '../spectrum/presets';
 import { assignState, cloneState, PATH_PREFERENCES, urlRounded, type AppState, type Rgb } from './urlState';
@@ -45,7 +45,7 @@ export class Panel {
   readonly controllers = new Map<string, Controller>();
   /** The last values the scene accepted. */
   private good: AppState;
-  private readonly colours: { causticColour: string; scatterColour: string };
+  private readonly colours: { causticColor: string; scatterColor: string };
   private readonly depthProxy: { deep: boolean; metres: number };
   private readonly running = { path: '', seaState: '' };
   /** The preset menu's selection, and the patch sizes as text ("13.7,79.3,457"). */
@@ -60,7 +60,7 @@ export class Panel {
     private readonly actions: PanelActions,
   ) {
     this.good = cloneState(state);
-    this.colours = { causticColour: toHex(state.causticColour), scatterColour: toHex(state.scatterColour) };
+    this.colours = { causticColor: toHex(state.causticColor), scatterColor: toHex(state.scatterColor) };
     this.depthProxy = { deep: state.depth === Infinity, metres: state.depth === Infinity ? 50 : state.depth };
     this.running.path = actions.runningPath();
     this.amplitudeProxy.micro = state.amplitude * 1e6;
@@ -117,13 +117,13 @@ export class Panel {
     this.bind(look.add(state, 'mode', SHADING_MODES as unknown as string[]).name('shading mode'), 'mode');
     this.number(look, 'ior', 'refractive index', 1.01, 2.5, 0.001);
     this.number(look, 'causticPower', 'caustic power p', 1, 256, 1);
-    this.colour(look, 'causticColour', 'caustic colour');
+    this.colour(look, 'causticColor', 'caustic colour');
     (['r', 'g', 'b'] as const).forEach((channel, i) => {
       const c = look.add(state.absorption as unknown as Record<string, number>, String(i), 0, 2, 0.005).name(`absorption ${channel} (1/m)`);
       c.onChange(() => this.change('absorption', [...state.absorption] as Rgb));
       this.register(`absorption.${i}`, c);
     });
-    this.colour(look, 'scatterColour', 'scatter colour');
+    this.colour(look, 'scatterColor', 'scatter colour');
     this.bind(look.add(state, 'wireframe').name('wireframe'), 'wireframe');
 
     const time = gui.addFolder('Time & view');
@@ -157,8 +157,8 @@ export class Panel {
   /** Shows the state again after it changed outside the panel (and takes it as the last good one). */
   refresh(): void {
     this.good = cloneState(this.state);
-    this.colours.causticColour = toHex(this.state.causticColour);
-    this.colours.scatterColour = toHex(this.state.scatterColour);
+    this.colours.causticColor = toHex(this.state.causticColor);
+    this.colours.scatterColor = toHex(this.state.scatterColor);
     this.amplitudeProxy.micro = Number((this.state.amplitude * 1e6).toPrecision(10));
     this.patchSizesProxy.text = this.state.patchSizes.join(',');
     this.depthProxy.deep = this.state.depth === Infinity;
@@ -229,9 +229,10 @@ export class Panel {
     return this.bind(folder.add(this.state, key, min, max, step).name(name), key);
   }
 
-  private colour(folder: GUI, key: 'causticColour' | 'scatterColour', name: string): void {
+  private colour(folder: GUI, key: 'causticColor' | 'scatterColor', name: string): void {
     const controller = folder.addColor(this.colours, key).name(`${name} (sRGB)`);
-    controller.onChange((hex: string) => this.change(key, fromHex(hex)));
+    // The picker's sRGB hex, as linear RGB.
+    controller.onChange((hex: string) => this.change(key, colorToLinear(hex)!));
     this.register(key, controller);
   }
 
@@ -245,11 +246,6 @@ function toHex(rgb: Rgb): string {
   return `#${new Color().setRGB(rgb[0], rgb[1], rgb[2]).getHexString()}`;
 }
 
-/** The picker's sRGB hex → linear RGB. */
-function fromHex(hex: string): Rgb {
-  const colour = new Color(hex);
-  return [colour.r, colour.g, colour.b];
-}
 
 function describe(value: unknown): string {
   if (value === Infinity) return 'deep';

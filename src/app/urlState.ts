@@ -8,8 +8,11 @@
  *                                                           SIMULATION_OPTIONS (src/parameters/parameters.ts),
  *                                                           written as parseParameterText reads them
  *   sunElevation sunAzimuth                                   — degrees
- *   ior causticPower causticColour absorption scatterColour   — shading; colours and absorption
- *                                                               are "r,g,b" (linear, ≥ 0)
+ *   ior causticPower causticColor absorption scatterColor     — shading; absorption is "r,g,b";
+ *                                                               colours are "r,g,b" (linear, ≥ 0)
+ *                                                               or CSS ("%231a6b80" is #1a6b80, sRGB);
+ *                                                               causticColour and scatterColour, the
+ *                                                               British spellings, are read too
  *   mode       shading mode (full, fresnel, reflection, refraction, caustics, height)
  *   wireframe  1/0        inspector  1/0        path  auto/gpu/js        buoys  1/0
  *   timeScale  ≥ 0        paused     1/0        t     simulation time in seconds
@@ -28,7 +31,7 @@ import {
   validateParameters,
   type SimulationParameters,
 } from '../parameters/parameters';
-import { formatOptionText, parseOptionText, type OptionTable } from '../parameters/options';
+import { formatOptionText, optionAliases, parseOptionText, quoteText, type OptionTable } from '../parameters/options';
 import {
   DEFAULT_SHADING,
   DEFAULT_SUN,
@@ -48,9 +51,9 @@ export interface AppState extends SimulationParameters {
   sunAzimuth: number;
   ior: number;
   causticPower: number;
-  causticColour: Rgb;
+  causticColor: Rgb;
   absorption: Rgb;
-  scatterColour: Rgb;
+  scatterColor: Rgb;
   mode: ShadingMode;
   wireframe: boolean;
   inspector: boolean;
@@ -73,9 +76,9 @@ export const DEFAULT_STATE: Readonly<AppState> = Object.freeze({
   ...DEFAULT_SUN,
   ior: DEFAULT_SHADING.ior,
   causticPower: DEFAULT_SHADING.causticPower,
-  causticColour: DEFAULT_SHADING.causticColour,
+  causticColor: DEFAULT_SHADING.causticColor,
   absorption: DEFAULT_SHADING.absorption,
-  scatterColour: DEFAULT_SHADING.scatterColour,
+  scatterColor: DEFAULT_SHADING.scatterColor,
   mode: DEFAULT_SHADING.shadingMode,
   wireframe: false,
   inspector: false,
@@ -98,9 +101,9 @@ export function defaultState(): AppState {
 export function cloneState(state: Readonly<AppState>): AppState {
   return {
     ...state,
-    causticColour: [...state.causticColour],
+    causticColor: [...state.causticColor],
     absorption: [...state.absorption],
-    scatterColour: [...state.scatterColour],
+    scatterColor: [...state.scatterColor],
     patchSizes: [...state.patchSizes],
     cam: [...state.cam],
   };
@@ -128,9 +131,9 @@ export const URL_KEYS: readonly (keyof AppState)[] = [
   'sunAzimuth',
   'ior',
   'causticPower',
-  'causticColour',
+  'causticColor',
   'absorption',
-  'scatterColour',
+  'scatterColor',
   'mode',
   'wireframe',
   'inspector',
@@ -142,6 +145,9 @@ export const URL_KEYS: readonly (keyof AppState)[] = [
   'cam',
   'skybox',
 ];
+
+/** Other names the URL reads (older spellings of the shading options), each mapped to its key. */
+const URL_ALIASES: Readonly<Record<string, string>> = optionAliases(SHADING_OPTIONS);
 
 /** Keys written even when they equal their default. */
 const ALWAYS_WRITTEN = new Set<keyof AppState>(['t', 'cam']);
@@ -234,7 +240,7 @@ function isSimulationKey(key: string): key is keyof SimulationParameters {
  */
 export function parseValue<K extends keyof AppState>(key: K, text: string): { value: AppState[K] } | { error: string } {
   const ok = (value: unknown) => ({ value: value as AppState[K] });
-  const bad = (allowed: string) => ({ error: `${key} must be ${allowed}; got "${text}"` });
+  const bad = (allowed: string) => ({ error: `${key} must be ${allowed}; got ${quoteText(text)}` });
   /** The value as the option's table reads it, reported under the URL's name `key`. */
   function fromTable<T>(table: OptionTable<T>, option: string): { value: AppState[K] } | { error: string } {
     try {
@@ -286,11 +292,11 @@ export function parseState(search: string): ParsedState {
   const query = new URLSearchParams(search);
   const known = new Set<string>(URL_KEYS);
   for (const [name, text] of query) {
-    if (!known.has(name)) {
+    const key = (Object.hasOwn(URL_ALIASES, name) ? URL_ALIASES[name] : name) as keyof AppState;
+    if (!known.has(key)) {
       warnings.push({ parameter: name, message: `${name}: unknown URL parameter, ignored` });
       continue;
     }
-    const key = name as keyof AppState;
     const result = parseValue(key, text);
     if ('error' in result) {
       warnings.push({ parameter: name, message: `${result.error} — using the default ${formatValue(key, DEFAULT_STATE[key])}` });

@@ -7,17 +7,21 @@
  * The element makes its own canvas (in its shadow root), WebGLRenderer, scene, camera and Ocean,
  * and renders a slowly drifting view out to the horizon. Attributes (all optional, all live):
  *
- *   every simulation parameter in kebab case (wind-speed, spectrum, fetch,
- *   patch-sizes="13.7,79.3,457", depth="deep", … SIMULATION_OPTIONS in
- *   src/parameters/parameters.ts, written as parseParameterText reads them) → ocean.setParameters
- *   sun-elevation, sun-azimuth (degrees)                                  → ocean.setSun
- *   shading-mode (full, fresnel, reflection, refraction, caustics, height) → ocean.setShading
+ *   every option of the tables in src/parameters/ in kebab case, written as parseOptionText reads
+ *   them (an alias in kebab case too: scatter-colour is scatter-color):
+ *     simulation (SIMULATION_OPTIONS): wind-speed, spectrum, fetch, patch-sizes="13.7,79.3,457",
+ *       depth="deep", …                                                   → ocean.setParameters
+ *     sun (SUN_OPTIONS): sun-elevation, sun-azimuth (degrees)             → ocean.setSun
+ *     shading (SHADING_OPTIONS): ior, absorption="0.45,0.07,0.04", scatter-color and caustic-color
+ *       ("#1a6b80", any CSS colour, or linear "r,g,b"), caustic-power, shading-mode (full,
+ *       fresnel, reflection, refraction, caustics, height)               → ocean.setShading
  *   path (auto, gpu, js)                      which simulation path runs
  *   time-scale (default 1)                    simulated seconds per real second
  *   paused (boolean)                          freezes time; the view still redraws on changes
  *   camera-height (metres, default 8)         height of the viewpoint above the mean sea level
  *
- * A bad value logs a console warning that names the attribute, and the last good value stays.
+ * A bad value logs a console warning that names the attribute and quotes the value as written
+ * (its first 40 characters), and the last good value stays.
  * Removing an attribute restores its default. The attributes are the element's settings: changes
  * made directly on element.ocean last only as long as that Ocean (see removal below).
  *
@@ -39,31 +43,38 @@
 import { ACESFilmicToneMapping, PerspectiveCamera, Scene, WebGLRenderer } from 'three';
 import { Ocean } from '../ocean';
 import { SimulationClock } from '../timing/simulationClock';
-import { parseOptionText } from '../parameters/options';
-import { DEFAULT_SHADING, DEFAULT_SUN, SHADING_MODES, SUN_OPTIONS, type ShadingMode } from '../parameters/sceneOptions';
+import { formatOptionText, optionKey, parseOptionText, quoteText, type OptionRule } from '../parameters/options';
+import { DEFAULT_SHADING, DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ShadingOptions, type SunOptions } from '../parameters/sceneOptions';
 import type { PathPreference } from '../layers/oceanSimulation';
-import {
-  DEFAULT_PARAMETERS,
-  parseDecimal,
-  parseParameterText,
-  SIMULATION_OPTIONS,
-  validateParameters,
-  type SimulationParameters,
-} from '../parameters/parameters';
+import { DEFAULT_PARAMETERS, parseDecimal, SIMULATION_OPTIONS, validateParameters, type SimulationParameters } from '../parameters/parameters';
 
 const PATHS: readonly PathPreference[] = ['auto', 'gpu', 'js'];
 
-/** Attributes that map onto simulation parameters: each parameter's name in kebab case. */
-const SIMULATION_ATTRIBUTES: Readonly<Record<string, keyof SimulationParameters>> = Object.fromEntries(
-  (Object.keys(SIMULATION_OPTIONS) as (keyof SimulationParameters)[]).map((key) => [key.replace(/[A-Z]/g, (c) => `-${c.toLowerCase()}`), key]),
+/** The parts of the settings that attributes set from an option table. */
+type Group = 'simulation' | 'sun' | 'shading';
+const TABLES: Readonly<Record<Group, Readonly<Record<string, OptionRule>>>> = {
+  simulation: SIMULATION_OPTIONS,
+  sun: SUN_OPTIONS,
+  shading: SHADING_OPTIONS,
+};
+const GROUP_DEFAULTS: Readonly<Record<Group, Readonly<Record<string, unknown>>>> = {
+  simulation: DEFAULT_PARAMETERS,
+  sun: DEFAULT_SUN,
+  shading: DEFAULT_SHADING,
+};
+
+/** Attributes that map onto options: each option's name, and each alias, in kebab case. */
+const OPTION_ATTRIBUTES: ReadonlyMap<string, { group: Group; name: string }> = new Map(
+  (Object.keys(TABLES) as Group[]).flatMap((group) =>
+    Object.entries(TABLES[group])
+      .flatMap(([key, rule]) => [key, ...(rule.aliases ?? [])])
+      .map((name) => [name.replace(/[A-Z]/g, (c) => `-${c.toLowerCase()}`), { group, name }] as const),
+  ),
 );
 
 /** Every attribute the element reads. */
 export const FFT_OCEAN_ATTRIBUTES = [
-  ...Object.keys(SIMULATION_ATTRIBUTES),
-  'sun-elevation',
-  'sun-azimuth',
-  'shading-mode',
+  ...OPTION_ATTRIBUTES.keys(),
   'path',
   'time-scale',
   'paused',
@@ -71,21 +82,18 @@ export const FFT_OCEAN_ATTRIBUTES = [
 ] as const;
 export type FftOceanAttribute = (typeof FFT_OCEAN_ATTRIBUTES)[number];
 
-/** The element's current (last good) settings. */
+/** The element's current (last good) settings: the options its attributes set, and its own. */
 interface Settings {
   simulation: Partial<SimulationParameters>;
-  sunElevation: number;
-  sunAzimuth: number;
-  shadingMode: ShadingMode;
+  sun: Partial<SunOptions>;
+  shading: Partial<ShadingOptions>;
   path: PathPreference;
   timeScale: number;
   paused: boolean;
   cameraHeight: number;
 }
 
-const DEFAULT_SETTINGS: Readonly<Omit<Settings, 'simulation'>> = {
-  ...DEFAULT_SUN,
-  shadingMode: DEFAULT_SHADING.shadingMode,
+const DEFAULT_SETTINGS: Readonly<Omit<Settings, Group>> = {
   path: 'auto',
   timeScale: 1,
   paused: false,
@@ -157,7 +165,7 @@ export class FftOceanElement extends ElementBase {
     return FFT_OCEAN_ATTRIBUTES;
   }
 
-  private readonly settings: Settings = { simulation: {}, ...DEFAULT_SETTINGS };
+  private readonly settings: Settings = { simulation: {}, sun: {}, shading: {}, ...DEFAULT_SETTINGS };
   private readonly root: ShadowRoot;
   private live: Live | null = null;
   private message: HTMLElement | null = null;
@@ -253,50 +261,27 @@ export class FftOceanElement extends ElementBase {
   // ---- attributes
 
   private applyAttribute(name: FftOceanAttribute, raw: string | null): void {
-    const ocean = this.live?.ocean ?? null;
     const s = this.settings;
     const reject = (reason: string, kept: unknown): void => {
-      console.warn(`<fft-ocean>: ignoring ${name}="${raw}": ${reason}; keeping ${String(kept)}`);
+      console.warn(`<fft-ocean>: ignoring ${name}=${quoteText(raw ?? '')}: ${reason}; keeping ${formatOptionText(kept)}`);
     };
-    /** A choice attribute's value (`fallback` when removed), or undefined once rejected. */
-    const oneOf = <T extends string>(allowed: readonly T[], fallback: T, kept: T): T | undefined => {
-      const value = (raw === null ? fallback : raw.trim()) as T;
-      if (allowed.includes(value)) return value;
-      reject(`it must be one of ${allowed.join(', ')}`, kept);
-      return undefined;
-    };
-    if (name in SIMULATION_ATTRIBUTES) {
-      const key = SIMULATION_ATTRIBUTES[name];
-      const kept = s.simulation[key] ?? DEFAULT_PARAMETERS[key];
-      const next: Partial<SimulationParameters> = { ...s.simulation };
+    const option = OPTION_ATTRIBUTES.get(name);
+    if (option) {
+      const key = optionKey(TABLES[option.group], option.name);
       try {
-        if (raw === null) delete next[key];
-        else Object.assign(next, { [key]: parseParameterText(key, raw) });
-        validateParameters(next); // throws a ParameterError naming the rule
-        ocean?.setParameters({ [key]: next[key] ?? DEFAULT_PARAMETERS[key] });
+        this.applyOption(option.group, key, option.name, raw);
       } catch (error) {
-        reject(errorMessage(error), kept);
+        reject(errorMessage(error), this.optionSetting(option.group, key));
         return;
       }
-      s.simulation = next;
-    } else if (name === 'sun-elevation' || name === 'sun-azimuth') {
-      const key = name === 'sun-elevation' ? 'sunElevation' : 'sunAzimuth';
-      try {
-        s[key] = raw === null ? DEFAULT_SUN[key] : (parseOptionText(SUN_OPTIONS, key, raw) as number);
-      } catch (error) {
-        reject(errorMessage(error), s[key]);
-        return;
-      }
-      ocean?.setSun(s.sunElevation, s.sunAzimuth);
-    } else if (name === 'shading-mode') {
-      const value = oneOf(SHADING_MODES, DEFAULT_SETTINGS.shadingMode, s.shadingMode);
-      if (value === undefined) return;
-      s.shadingMode = value;
-      ocean?.setShading({ shadingMode: value });
     } else if (name === 'path') {
-      const value = oneOf(PATHS, DEFAULT_SETTINGS.path, s.path);
-      if (value === undefined) return;
+      const value = (raw === null ? DEFAULT_SETTINGS.path : raw.trim()) as PathPreference;
+      if (!PATHS.includes(value)) {
+        reject(`it must be one of ${PATHS.join(', ')}`, s.path);
+        return;
+      }
       s.path = value;
+      const ocean = this.live?.ocean;
       if (ocean && ocean.simulation.pathPreference !== value) ocean.simulation.pathPreference = value;
     } else if (name === 'time-scale') {
       const value = raw === null ? DEFAULT_SETTINGS.timeScale : parseDecimal(raw);
@@ -323,6 +308,32 @@ export class FftOceanElement extends ElementBase {
     this.invalidate();
   }
 
+  /** The option's current value: its setting, or its default. */
+  private optionSetting(group: Group, key: string, settings: object = this.settings[group]): unknown {
+    return (settings as Record<string, unknown>)[key] ?? GROUP_DEFAULTS[group][key];
+  }
+
+  /**
+   * Sets the option `key`, named `name` (the key or an alias), as written in `raw` (null: back to
+   * its default) in the settings and on the ocean; throws a ParameterError and changes nothing
+   * when it is bad.
+   */
+  private applyOption(group: Group, key: string, name: string, raw: string | null): void {
+    const next: Record<string, unknown> = { ...this.settings[group] };
+    if (raw === null) delete next[key];
+    else next[key] = parseOptionText(TABLES[group], name, raw);
+    const ocean = this.live?.ocean;
+    if (group === 'simulation') {
+      validateParameters(next); // throws a ParameterError naming the rule
+      ocean?.setParameters({ [key]: this.optionSetting(group, key, next) });
+    } else if (group === 'sun') {
+      ocean?.setSun(this.optionSetting(group, 'sunElevation', next) as number, this.optionSetting(group, 'sunAzimuth', next) as number);
+    } else {
+      ocean?.setShading({ [key]: this.optionSetting(group, key, next) });
+    }
+    (this.settings as unknown as Record<Group, object>)[group] = next;
+  }
+
   // ---- life cycle
 
   private start(): void {
@@ -347,9 +358,8 @@ export class FftOceanElement extends ElementBase {
     try {
       ocean = new Ocean(renderer, {
         ...s.simulation,
-        sunElevation: s.sunElevation,
-        sunAzimuth: s.sunAzimuth,
-        shadingMode: s.shadingMode,
+        ...s.sun,
+        ...s.shading,
         path: s.path,
       });
     } catch (error) {
@@ -500,18 +510,12 @@ export class FftOceanElement extends ElementBase {
   private draw(live: Live): void {
     const { renderer, scene, camera, ocean } = live;
     this.needsDraw = false;
-    placeCamera(camera, this.simulatedTime, this.settings.cameraHeight, this.settings.sunAzimuth);
+    placeCamera(camera, this.simulatedTime, this.settings.cameraHeight, this.optionSetting('sun', 'sunAzimuth') as number);
     ocean.update(this.simulatedTime);
-    // The far plane must reach the horizon, which ocean.horizonDistance reports after a render:
-    // when it grew past the far plane (first frame, camera raised), draw once more.
-    for (let attempt = 0; attempt < 2; attempt++) {
-      renderer.render(scene, camera);
-      const far = Math.max(1e4, 1.5 * ocean.horizonDistance);
-      const tooShort = far > camera.far;
-      camera.far = far;
-      camera.updateProjectionMatrix();
-      if (!tooShort) break;
-    }
+    // The far plane must reach the horizon.
+    camera.far = Math.max(1e4, 1.5 * ocean.horizonDistanceFor(camera.position.y));
+    camera.updateProjectionMatrix();
+    renderer.render(scene, camera);
     this.framesDrawn++;
     if (this.framesDrawn === 1) this.dispatchEvent(new CustomEvent('fft-ocean-ready'));
   }

@@ -4,8 +4,11 @@
  * over a base, and the text form options take in URLs, element attributes and the shot CLI.
  */
 
-/** How an option is written in text: a number, one of some words, or numbers separated by commas. */
-export type OptionType = 'number' | 'choice' | 'numbers';
+/**
+ * How an option is written in text: a number, one of some words, numbers separated by commas, or a
+ * colour (three numbers separated by commas, or a CSS colour such as "#1a6b80").
+ */
+export type OptionType = 'number' | 'choice' | 'numbers' | 'color';
 
 export interface OptionRule {
   type: OptionType;
@@ -13,9 +16,17 @@ export interface OptionRule {
   unit: string;
   /** What is allowed, as the error message says it: "<name> must be <allowed>". */
   allowed: string;
+  /** Whether a value, as it is stored (after `coerce`), is allowed. */
   check(value: unknown): boolean;
+  /**
+   * For options given in several forms (colours): the value as it is stored, or undefined when
+   * `value` is none of the forms. Without it a value is stored as it is given.
+   */
+  coerce?(value: unknown): unknown;
   /** For 'choice' options. */
   choices?: readonly string[];
+  /** Other names the option is taken under (older spellings); messages suggest its key. */
+  aliases?: readonly string[];
 }
 
 export type OptionTable<T> = { readonly [K in keyof T]: OptionRule };
@@ -28,30 +39,78 @@ export const oneOf = (choices: readonly string[]) => (v: unknown) => typeof v ==
 /** Linear RGB triples, each channel in [0, max]. */
 export const rgb = (max: number) => (v: unknown) => Array.isArray(v) && v.length === 3 && v.every(between(0, max));
 
-/** Thrown for an option outside what is allowed; `parameter` names it. */
+/**
+ * Thrown for an option outside what is allowed; `parameter` names it (as it was given) and
+ * `value` is what it was given. Every error the library throws for a caller's mistake is one.
+ */
 export class ParameterError extends Error {
+  /**
+   * @param allowed what is allowed, for the message "<parameter> must be <allowed>; got <value>"
+   * @param message the whole message instead, for a mistake that is not a bad value
+   */
   constructor(
     readonly parameter: string,
     readonly value: unknown,
     allowed: string,
+    message = `${parameter} must be ${allowed}; got ${describeValue(value)}`,
   ) {
-    super(`${parameter} must be ${allowed}; got ${describeValue(value)}`);
+    super(message);
     this.name = 'ParameterError';
   }
 }
 
-function describeValue(value: unknown): string {
-  return Array.isArray(value) ? `[${value.map(String).join(', ')}]` : String(value);
+/** Text as messages quote it: in double quotes, cut to its first 40 characters and "…" when longer. */
+export function quoteText(text: string): string {
+  return `"${text.length > 40 ? `${text.slice(0, 40)}…` : text}"`;
 }
 
-function ruleOf<T>(table: OptionTable<T>, key: string, value: unknown): OptionRule {
-  if (!Object.hasOwn(table, key)) throw unknownOption(key, value, Object.keys(table));
-  return table[key as keyof T];
+/**
+ * A value as messages show it: text quoted, lists in brackets, objects (a THREE.Color, a Vector3)
+ * by their fields without three's `isColor`-style type flags; one level deep and at most 8 items,
+ * so that any object (a cyclic one too) gives a short message.
+ */
+function describeValue(value: unknown, nested = false): string {
+  if (typeof value === 'string') return quoteText(value);
+  if (typeof value === 'function') return 'a function';
+  if (typeof value !== 'object' || value === null) return String(value);
+  if (nested) return Array.isArray(value) ? '[…]' : '{…}';
+  const items = Array.isArray(value)
+    ? value.map((item) => describeValue(item, true))
+    : Object.entries(value)
+        .filter(([key]) => !/^is[A-Z]/.test(key))
+        .map(([key, field]) => `${key}: ${describeValue(field, true)}`);
+  const shown = items.length > 8 ? [...items.slice(0, 8), '…'] : items;
+  return Array.isArray(value) ? `[${shown.join(', ')}]` : `{${shown.join(', ')}}`;
 }
 
-/** The error for an option name that is not one of `known`: it lists them and suggests the nearest. */
-export function unknownOption(name: string, value: unknown, known: readonly string[]): ParameterError {
-  return new ParameterError(name, value, `one of ${known.join(', ')} (did you mean ${nearestName(name, known)}?)`);
+/** The aliases of `table`'s options, each mapped to the key it is another name for. */
+export function optionAliases<T>(table: OptionTable<T>): Readonly<Record<string, keyof T & string>> {
+  const aliases: Record<string, keyof T & string> = {};
+  for (const key of Object.keys(table) as (keyof T & string)[]) for (const alias of table[key].aliases ?? []) aliases[alias] = key;
+  return aliases;
+}
+
+/** The key of `table` that `name` names (itself, or the key it is an alias of); throws for any other name. */
+export function optionKey<T>(table: OptionTable<T>, name: string, value?: unknown): keyof T & string {
+  if (Object.hasOwn(table, name)) return name as keyof T & string;
+  const aliases = optionAliases(table);
+  if (Object.hasOwn(aliases, name)) return aliases[name];
+  throw unknownOption(name, value, Object.keys(table), aliases);
+}
+
+/**
+ * The error for an option name that is not one of `known` (nor of `aliases`): it lists the known
+ * names and suggests the nearest, the key rather than the alias when an alias is nearer.
+ */
+export function unknownOption(
+  name: string,
+  value: unknown,
+  known: readonly string[],
+  aliases: Readonly<Record<string, string>> = {},
+): ParameterError {
+  const nearest = nearestName(name, [...known, ...Object.keys(aliases)]);
+  const suggestion = Object.hasOwn(aliases, nearest) ? aliases[nearest] : nearest;
+  return new ParameterError(name, value, `one of ${known.join(', ')} (did you mean ${suggestion}?)`);
 }
 
 /** Levenshtein distance, for "did you mean". */
@@ -80,22 +139,36 @@ export function nearestName(name: string, known: readonly string[]): string {
   return best;
 }
 
-/** Throws a ParameterError naming `key` unless `value` is allowed for it. */
-export function checkOption<T>(table: OptionTable<T>, key: string, value: unknown): void {
-  const rule = ruleOf(table, key, value);
-  if (!rule.check(value)) throw new ParameterError(key, value, rule.allowed);
+/**
+ * The option `name` (a key of `table` or an alias) given `value`: its key and the value as it is
+ * stored (coerced, arrays copied). Throws a ParameterError naming `name` unless it is allowed;
+ * `shown` is the value the error quotes (by default `value`).
+ */
+export function checkOption<T>(table: OptionTable<T>, name: string, value: unknown, shown: unknown = value): { key: keyof T & string; value: unknown } {
+  const key = optionKey(table, name, shown);
+  const rule = table[key];
+  const stored = rule.coerce ? rule.coerce(value) : value;
+  if (stored === undefined || !rule.check(stored)) throw new ParameterError(name, shown, rule.allowed);
+  return { key, value: Array.isArray(stored) ? [...stored] : stored };
 }
 
 /**
- * `changes` checked one by one and merged over `base` (arrays copied); throws on the first bad one.
- * A key whose value is undefined is not given (as an optional TypeScript property), not bad.
+ * `changes` checked one by one and merged over `base`; throws on the first bad one, and when an
+ * option is given under two names. A name whose value is undefined is not given (as an optional
+ * TypeScript property), not bad.
  */
-export function mergeOptions<T extends object>(table: OptionTable<T>, changes: Partial<T>, base: Readonly<T>): T {
-  const merged = { ...base };
-  for (const [key, value] of Object.entries(changes)) {
+export function mergeOptions<T extends object>(table: OptionTable<T>, changes: object, base: Readonly<T>): T {
+  const merged: T = { ...base };
+  const givenAs = new Map<string, string>();
+  for (const [name, value] of Object.entries(changes)) {
     if (value === undefined) continue;
-    checkOption(table, key, value);
-    (merged as Record<string, unknown>)[key] = Array.isArray(value) ? [...value] : value;
+    const option = checkOption(table, name, value);
+    const earlier = givenAs.get(option.key);
+    if (earlier !== undefined) {
+      throw new ParameterError(name, value, '', `${name} and ${earlier} are the same option (${option.key}): give it once`);
+    }
+    givenAs.set(option.key, name);
+    merged[option.key] = option.value as T[typeof option.key];
   }
   return merged;
 }
@@ -107,20 +180,22 @@ export function parseDecimal(text: string): number {
 }
 
 /**
- * Reads one option as written in text: numbers as decimals ("deep", "inf" or "infinity" for an
- * infinite one, the depth of deep water), words for choices, lists separated by commas. Throws a
- * ParameterError that names the option and quotes the text (shortened) when it is not allowed.
+ * Reads one option (named by its key or an alias) as written in text: numbers as decimals ("deep",
+ * "inf" or "infinity" for an infinite one, the depth of deep water), words for choices, lists
+ * separated by commas, colours as "r,g,b" (linear) or a CSS colour ("#1a6b80"). Returns the value
+ * as it is stored. Throws a ParameterError that names the option and quotes the text (shortened)
+ * when it is not allowed.
  */
-export function parseOptionText<T>(table: OptionTable<T>, key: string, text: string): unknown {
-  const rule = ruleOf(table, key, text);
-  const quoted = `"${text.length > 40 ? `${text.slice(0, 40)}…` : text}"`;
+export function parseOptionText<T>(table: OptionTable<T>, name: string, text: string): unknown {
+  const rule = table[optionKey(table, name, text)];
+  const numbers = text.split(',').map(parseDecimal);
   let value: unknown;
   if (rule.type === 'choice') value = text.trim();
-  else if (rule.type === 'numbers') value = text.split(',').map(parseDecimal);
+  else if (rule.type === 'numbers') value = numbers;
+  else if (rule.type === 'color') value = numbers.every(Number.isFinite) ? numbers : text.trim();
   else if (/^\s*(deep|inf|infinity)\s*$/i.test(text)) value = Infinity;
   else value = parseDecimal(text);
-  if (!rule.check(value)) throw new ParameterError(key, quoted, rule.allowed);
-  return value;
+  return checkOption(table, name, value, text).value;
 }
 
 /** An option as parseOptionText reads it back: "deep" for Infinity, lists joined by commas. */

@@ -194,7 +194,7 @@ function checkCombination(params: SimulationParameters): void {
       throw new ParameterError(
         'repeatPeriod',
         params.repeatPeriod,
-        `shorter with resolution ${params.resolution} and patch ${band.patchSize} m at depth ${params.depth} m ` +
+        `shorter with resolution ${params.resolution} and patch ${band.patchSize} m at depth ${params.depth === Infinity ? 'deep' : `${params.depth} m`} ` +
           `(the fastest wave's frequency index would be ${fastest}, above ${MAX_FREQUENCY_INDEX})`,
       );
     }

@@ -2,7 +2,8 @@
  * The sun and the shading of the sea: their defaults, units, ranges and checks, for Ocean,
  * SkyEnvironment, OceanMaterial, the app's URL state and panel, <fft-ocean> and the shot CLI.
  */
-import { between, finiteAngle, oneOf, rgb, type OptionTable } from './options';
+import { Color, LinearSRGBColorSpace, type RGB } from 'three';
+import { between, finiteAngle, oneOf, rgb, type OptionRule, type OptionTable } from './options';
 
 export interface SunOptions {
   /** Sun elevation above the horizon in degrees, [-90, 90]. @defaultValue 30 */
@@ -23,17 +24,56 @@ export const SHADING_MODES = ['full', 'fresnel', 'reflection', 'refraction', 'ca
 export type ShadingMode = (typeof SHADING_MODES)[number];
 export type Rgb = [number, number, number];
 
+/**
+ * A colour as the shading options take it: a THREE.Color, a hex number (0x1a6b80), a CSS colour
+ * string ('#1a6b80', 'rgb(26, 107, 128)', 'teal'), or linear [r, g, b]. See colorToLinear.
+ */
+export type ColorInput = Color | number | string | Readonly<Rgb>;
+
+/**
+ * A colour as linear RGB (what the shader uses), or undefined when `value` is not a ColorInput. A
+ * hex number or a CSS string is an sRGB colour as authored, converted as `new Color(value)` does
+ * (three's ColorManagement); a THREE.Color holds its colour in three's working colour space
+ * already; an [r, g, b] array is taken as linear, as it is.
+ */
+export function colorToLinear(value: unknown): Rgb | undefined {
+  if (Array.isArray(value)) return value.length === 3 ? [value[0], value[1], value[2]] : undefined;
+  const color = new Color(NaN, NaN, NaN);
+  // Duck-typed (as three does), so a Color from another copy of three counts too.
+  if (typeof value === 'object' && value !== null && (value as { isColor?: unknown }).isColor === true) color.copy(value as Color);
+  else if (typeof value === 'number' && Number.isInteger(value) && value >= 0 && value <= 0xffffff) color.setHex(value);
+  else if (typeof value === 'string') color.setStyle(value); // leaves the NaNs when three cannot read it
+  const { r, g, b } = color.getRGB({} as RGB, LinearSRGBColorSpace);
+  return [r, g, b].some(Number.isNaN) ? undefined : [r, g, b];
+}
+
+const colorRule = (max: number): OptionRule => ({
+  type: 'color',
+  unit: '',
+  allowed:
+    `a colour: a THREE.Color, a hex number (0x1a6b80), a CSS colour ("#1a6b80", "rgb(26, 107, 128)", "teal") ` +
+    `or linear r,g,b, each channel from 0 to ${max}`,
+  check: rgb(max),
+  coerce: colorToLinear,
+});
+
 export interface ShadingOptions {
   /** Refractive index of water n_w, (1, 3] (air is 1). @defaultValue 1.333 */
   ior: number;
   /** Beer–Lambert absorption σ per colour channel, 1/m, each in [0, 10000]. @defaultValue [0.45, 0.07, 0.04] */
   absorption: Rgb;
-  /** Colour of light scattered back out of the water (linear RGB, each in [0, 100]). @defaultValue [0.0, 0.035, 0.06] */
-  scatterColour: Rgb;
+  /**
+   * Colour of light scattered back out of the water, stored as linear RGB (each in [0, 100]); the
+   * setters take any ColorInput, and the alias scatterColour. @defaultValue [0.0, 0.035, 0.06]
+   */
+  scatterColor: Rgb;
   /** Caustic sharpness p in K = (t·l)^p, (0, 10000]. @defaultValue 32 */
   causticPower: number;
-  /** Caustic colour c_caustic (linear RGB, each in [0, 100]). @defaultValue [0.12, 0.12, 0.12] */
-  causticColour: Rgb;
+  /**
+   * Caustic colour c_caustic, stored as linear RGB (each in [0, 100]); the setters take any
+   * ColorInput, and the alias causticColour. @defaultValue [0.12, 0.12, 0.12]
+   */
+  causticColor: Rgb;
   /** @defaultValue 'full' */
   shadingMode: ShadingMode;
 }
@@ -41,17 +81,30 @@ export interface ShadingOptions {
 export const SHADING_OPTIONS: OptionTable<ShadingOptions> = {
   ior: { type: 'number', unit: '', allowed: 'a number > 1 and at most 3', check: (v) => typeof v === 'number' && v > 1 && v <= 3 },
   absorption: { type: 'numbers', unit: '1/m', allowed: 'three numbers from 0 to 10000 (1/m)', check: rgb(1e4) },
-  scatterColour: { type: 'numbers', unit: '', allowed: 'three numbers from 0 to 100 (linear r,g,b)', check: rgb(100) },
+  scatterColor: { ...colorRule(100), aliases: ['scatterColour'] },
   causticPower: { type: 'number', unit: '', allowed: 'a number > 0 and at most 10000', check: (v) => typeof v === 'number' && v > 0 && v <= 1e4 },
-  causticColour: { type: 'numbers', unit: '', allowed: 'three numbers from 0 to 100 (linear r,g,b)', check: rgb(100) },
+  causticColor: { ...colorRule(100), aliases: ['causticColour'] },
   shadingMode: { type: 'choice', unit: '', allowed: `one of ${SHADING_MODES.join(', ')}`, check: oneOf(SHADING_MODES), choices: SHADING_MODES },
 };
 
 export const DEFAULT_SHADING: Readonly<ShadingOptions> = Object.freeze({
   ior: 1.333,
   absorption: [0.45, 0.07, 0.04],
-  scatterColour: [0.0, 0.035, 0.06],
+  scatterColor: [0.0, 0.035, 0.06],
   causticPower: 32,
-  causticColour: [0.12, 0.12, 0.12],
+  causticColor: [0.12, 0.12, 0.12],
   shadingMode: 'full',
 } satisfies ShadingOptions);
+
+/**
+ * Shading options as Ocean and OceanMaterial take them: any subset, colours in any ColorInput form,
+ * and the British spellings as aliases.
+ */
+export interface ShadingChanges extends Partial<Omit<ShadingOptions, 'scatterColor' | 'causticColor'>> {
+  scatterColor?: ColorInput;
+  causticColor?: ColorInput;
+  /** @deprecated Another name for scatterColor (its British spelling), still accepted. */
+  scatterColour?: ColorInput;
+  /** @deprecated Another name for causticColor (its British spelling), still accepted. */
+  causticColour?: ColorInput;
+}

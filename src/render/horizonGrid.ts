@@ -127,8 +127,6 @@ export class RingFrames {
   uvOrigins = new Float32Array(2 * (RING_COUNT + 1));
   /** (centre_r − centre_{r+1}) / cell_{r+1} per ring: whole numbers, 0 or 1. */
   readonly offsets = new Float32Array(2 * (RING_COUNT + 1));
-  /** Distance from the camera to the far corner of the skirt: the camera's far plane must reach it. */
-  farEdgeDistance = 0;
   /** Ring centres in double precision (frames holds them as float32). */
   private readonly centres = new Float64Array(2 * (RING_COUNT + 1));
 
@@ -140,10 +138,7 @@ export class RingFrames {
   update(cameraX: number, cameraZ: number, cameraHeight: number, layers: readonly LayerGrid[], cellsPerRing: number): void {
     const texelSize = finestTexel(layers);
     if (this.uvOrigins.length !== 2 * (RING_COUNT + 1) * layers.length) this.uvOrigins = new Float32Array(2 * (RING_COUNT + 1) * layers.length);
-    // Finest cells: the texel size, or coarser by powers of two once the camera is high enough
-    // that ring 0 would cover less than about 8× the camera height.
-    const heightPerCell = Math.max(1, cameraHeight) / (cellsPerRing / 8);
-    const level = Math.max(0, Math.ceil(Math.log2(heightPerCell / texelSize)));
+    const level = finestRingLevel(cameraHeight, texelSize, cellsPerRing);
     for (let ring = 0; ring <= RING_COUNT; ring++) {
       const cell = texelSize * 2 ** (level + ring);
       const x = Math.floor(cameraX / (2 * cell)) * 2 * cell;
@@ -161,14 +156,33 @@ export class RingFrames {
         this.uvOrigins[at + 1] = fractional(z / size + halfTexel);
       });
     }
-    const lastCell = this.frames[4 * (RING_COUNT - 1) + 2];
-    this.farEdgeDistance = Math.SQRT2 * (cellsPerRing / 2 + 2) * lastCell * SKIRT_SCALE + Math.max(0, cameraHeight);
     for (let ring = 0; ring < RING_COUNT; ring++) {
       const nextCell = 2 * this.frames[4 * ring + 2];
       this.offsets[2 * ring] = Math.round((this.centres[2 * ring] - this.centres[2 * ring + 2]) / nextCell);
       this.offsets[2 * ring + 1] = Math.round((this.centres[2 * ring + 1] - this.centres[2 * ring + 3]) / nextCell);
     }
   }
+}
+
+/**
+ * Mip level of ring 0's cells in the finest layer (its cells are texelSize · 2^level): the texel
+ * size, or coarser by powers of two once the camera is high enough that ring 0 would cover less
+ * than about 8× the camera height.
+ */
+function finestRingLevel(cameraHeight: number, texelSize: number, cellsPerRing: number): number {
+  const heightPerCell = Math.max(1, cameraHeight) / (cellsPerRing / 8);
+  return Math.max(0, Math.ceil(Math.log2(heightPerCell / texelSize)));
+}
+
+/**
+ * Distance from a camera `cameraHeight` metres above the sea to the far corner of the skirt of the
+ * rings RingFrames.update places for it: the camera's far plane must reach it. It depends on the
+ * height, the finest texel of the layers and the cells per ring, not on where the camera is.
+ */
+export function farEdgeDistance(cameraHeight: number, layers: readonly LayerGrid[], cellsPerRing: number): number {
+  const texelSize = finestTexel(layers);
+  const lastCell = texelSize * 2 ** (finestRingLevel(cameraHeight, texelSize, cellsPerRing) + RING_COUNT - 1);
+  return Math.SQRT2 * (cellsPerRing / 2 + 2) * lastCell * SKIRT_SCALE + Math.max(0, cameraHeight);
 }
 
 /** The smallest texel of the layers, m: the rings' finest cells are this times a power of two. */

@@ -8,12 +8,12 @@ import { Color, DoubleSide, ShaderMaterial, UniformsLib, UniformsUtils, Vector2,
 import { COPY_OFFSET, largestPeriodicLayer, patchBlendUniforms } from '../layers/patchBlend';
 import type { WaveLayer } from '../layers/waveLayer';
 import { mergeOptions } from '../parameters/options';
-import { DEFAULT_SHADING, SHADING_MODES, SHADING_OPTIONS, type ShadingOptions } from '../parameters/sceneOptions';
+import { DEFAULT_SHADING, SHADING_MODES, SHADING_OPTIONS, type ShadingChanges, type ShadingOptions } from '../parameters/sceneOptions';
 import { shaderSource, withLayerCount } from '../shaderSource';
 import { finestTexel, RING_COUNT } from './horizonGrid';
 
-/** Shading options as the Ocean takes them: any subset of ShadingOptions (src/parameters/sceneOptions.ts). */
-export type OceanShadingOptions = Partial<ShadingOptions>;
+/** Shading options as the Ocean takes them: ShadingChanges (src/parameters/sceneOptions.ts). */
+export type OceanShadingOptions = ShadingChanges;
 
 export interface OceanMaterialInputs {
   /** The environment cube, RGBM-encoded (SkyEnvironment.environment). */
@@ -50,15 +50,15 @@ export class OceanMaterial extends ShaderMaterial {
           copyOffset: { value: new Vector2(...COPY_OFFSET) },
           ringOffsets: { value: new Float32Array(2 * (RING_COUNT + 1)) },
           halfRingCells: { value: 32 },
-          sunColour: { value: new Color(12, 11, 9.5) },
+          sunColor: { value: new Color(12, 11, 9.5) },
           sunShininess: { value: 900 },
           iorAir: { value: 1 },
           iorWater: { value: DEFAULT_SHADING.ior },
           absorption: { value: new Vector3(...DEFAULT_SHADING.absorption) },
-          scatterColour: { value: new Vector3(...DEFAULT_SHADING.scatterColour) },
+          scatterColor: { value: new Vector3(...DEFAULT_SHADING.scatterColor) },
           viewDepth: { value: 4 },
           causticPower: { value: DEFAULT_SHADING.causticPower },
-          causticColour: { value: new Vector3(...DEFAULT_SHADING.causticColour) },
+          causticColor: { value: new Vector3(...DEFAULT_SHADING.causticColor) },
           heightScale: { value: 3 },
           captureRestPoint: { value: false },
           captureWidth: { value: 1 },
@@ -116,9 +116,9 @@ export class OceanMaterial extends ShaderMaterial {
     const u = this.uniforms;
     u.iorWater.value = next.ior;
     u.absorption.value.fromArray(next.absorption);
-    u.scatterColour.value.fromArray(next.scatterColour);
+    u.scatterColor.value.fromArray(next.scatterColor);
     u.causticPower.value = next.causticPower;
-    u.causticColour.value.fromArray(next.causticColour);
+    u.causticColor.value.fromArray(next.causticColor);
     const mode = SHADING_MODES.indexOf(next.shadingMode);
     if (mode !== this.defines.SHADING_MODE) {
       this.defines.SHADING_MODE = mode;
@@ -131,9 +131,9 @@ export class OceanMaterial extends ShaderMaterial {
     return {
       ior: u.iorWater.value,
       absorption: u.absorption.value.toArray(),
-      scatterColour: u.scatterColour.value.toArray(),
+      scatterColor: u.scatterColor.value.toArray(),
       causticPower: u.causticPower.value,
-      causticColour: u.causticColour.value.toArray(),
+      causticColor: u.causticColor.value.toArray(),
       shadingMode: SHADING_MODES[this.defines.SHADING_MODE as number],
     };
   }

@@ -6,7 +6,7 @@
  */
 import { Mesh, Vector2, Vector3, type Camera, type Scene, type Texture, type WebGLRenderer } from 'three';
 import type { WaveLayer } from '../layers/waveLayer';
-import { cellsPerRingForViewport, createHorizonGridGeometry, RingFrames } from './horizonGrid';
+import { cellsPerRingForViewport, createHorizonGridGeometry, farEdgeDistance, RingFrames } from './horizonGrid';
 import { OceanMaterial, type OceanMaterialInputs, type OceanShadingOptions } from './oceanMaterial';
 
 export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeometry>, OceanMaterial> {
@@ -41,9 +41,18 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
     this.placeRings(camera);
   }
 
-  /** Distance to the far edge of the surface at the last render: the camera's far plane must reach it. */
-  get farEdgeDistance(): number {
-    return this.rings.farEdgeDistance;
+  /** Height above the sea of the camera of the last render (0 before the first). */
+  get cameraHeight(): number {
+    return this.cameraPosition.y;
+  }
+
+  /**
+   * Distance from a camera `cameraHeight` metres up to the far edge of the surface drawn into
+   * `renderer`'s drawing buffer at its current size: the camera's far plane must reach it.
+   */
+  farEdgeDistanceFor(cameraHeight: number, renderer: WebGLRenderer): number {
+    renderer.getDrawingBufferSize(this.viewport);
+    return farEdgeDistance(cameraHeight, this.waves().layers, cellsPerRingForViewport(this.viewport.y));
   }
 
   /** Centres the rings under `camera` (done before every render; public for the geometry test). */

@@ -48,7 +48,7 @@ import {
   type WebGLRenderer,
 } from 'three';
 import { shaderSource } from '../shaderSource';
-import { checkOption } from '../parameters/options';
+import { checkOption, ParameterError } from '../parameters/options';
 import { DEFAULT_SUN, SUN_OPTIONS } from '../parameters/sceneOptions';
 
 /** URLs of the six faces, in three.js's naming (p/n = positive/negative axis). */
@@ -86,6 +86,32 @@ export function skyboxFaceUrls(base: string): CubeFaceUrls {
     pz: `${base}pz.png`,
     nz: `${base}nz.png`,
   };
+}
+
+/** A direction in world space (y up): a Vector3 or [x, y, z]. */
+export type SunDirection = Vector3 | readonly [number, number, number];
+
+/** A sun's position in degrees: elevation above the horizon, azimuth from +x towards +z. */
+export interface SunAngles {
+  elevation: number;
+  azimuth: number;
+}
+
+/**
+ * Elevation and azimuth (degrees) of the sun towards `direction` (any length): the inverse of
+ * sunDirectionFromAngles. Straight up or down, where any azimuth is right, gives azimuth 0.
+ * Throws a ParameterError naming `name` for a zero, non-finite or malformed direction.
+ */
+export function sunAnglesFromDirection(direction: SunDirection, name = 'sunDirection'): SunAngles {
+  const vector = direction as Partial<Vector3> | null | undefined;
+  const components: readonly unknown[] = Array.isArray(direction) ? direction : [vector?.x, vector?.y, vector?.z];
+  if (components.length !== 3 || !components.every((c) => Number.isFinite(c)) || components.every((c) => c === 0)) {
+    throw new ParameterError(name, direction, 'a finite, non-zero direction towards the sun: a Vector3 or [x, y, z], y up');
+  }
+  const [x, y, z] = components as number[];
+  const scale = Math.max(Math.abs(x), Math.abs(y), Math.abs(z)); // so that no square overflows
+  const degrees = 180 / Math.PI;
+  return { elevation: Math.atan2(y / scale, Math.hypot(x / scale, z / scale)) * degrees, azimuth: Math.atan2(z, x) * degrees };
 }
 
 /** Unit direction towards a sun at the given elevation and azimuth (degrees), y up. */

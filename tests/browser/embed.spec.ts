@@ -131,6 +131,58 @@ test('attributes apply live; a bad value warns, naming the attribute, and keeps 
   expect(warnings).toContain('keeping 20,100'); // patch-sizes kept its last good value
 });
 
+test('shading attributes from the table: colours as "#rrggbb", CSS or linear "r,g,b", also under their British names', async ({ page }) => {
+  const log = await openPage(page);
+  const result = await page.evaluate(async () => {
+    const el = window.embed.create({ resolution: '64', 'scatter-colour': '#1a6b80', 'caustic-color': '0.5,0.25,0.125', ior: '1.34' });
+    await window.embed.drawn(el);
+    const ocean = el.ocean!;
+    const initial = ocean.shading;
+    el.setAttribute('caustic-colour', 'rgb(26, 107, 128)');
+    el.setAttribute('absorption', '0.1,0.2,0.3');
+    const changed = ocean.shading;
+    el.setAttribute('scatter-color', 'seaweed');
+    el.setAttribute('caustic-power', '0');
+    const kept = ocean.shading;
+    el.removeAttribute('scatter-colour');
+    el.removeAttribute('ior');
+    return { initial, changed, kept, removed: ocean.shading };
+  });
+  const teal = [0.010329823026364548, 0.14702726648767014, 0.21586050010324415]; // new Color(0x1a6b80), linear
+  result.initial.scatterColor.forEach((c, i) => expect(c).toBeCloseTo(teal[i], 6));
+  expect(result.initial).toMatchObject({ causticColor: [0.5, 0.25, 0.125], ior: 1.34 });
+  result.changed.causticColor.forEach((c, i) => expect(c).toBeCloseTo(teal[i], 6));
+  expect(result.changed.absorption).toEqual([0.1, 0.2, 0.3]);
+  expect(result.kept).toEqual(result.changed);
+  expect(result.removed).toMatchObject({ scatterColor: [0, 0.035, 0.06], ior: 1.333, causticColor: result.changed.causticColor });
+  const warnings = log.warnings.join('\n');
+  expect(warnings).toContain('<fft-ocean>: ignoring scatter-color="seaweed": scatterColor must be a colour');
+  expect(warnings).toContain('got "seaweed"; keeping 0.0103298,0.147027,0.21586');
+  expect(warnings).toContain('<fft-ocean>: ignoring caustic-power="0": causticPower must be a number > 0');
+});
+
+test('warnings quote the attribute as written (its first 40 characters) and say deep water "deep"', async ({ page }) => {
+  const log = await openPage(page);
+  await page.evaluate(async () => {
+    const el = window.embed.create({ resolution: '64' });
+    await window.embed.drawn(el);
+    el.setAttribute('wind-speed', 'abc');
+    el.setAttribute('wind-direction', '');
+    el.setAttribute('depth', '-1');
+    el.setAttribute('seed', `${'7'.repeat(45)}`);
+    el.setAttribute('camera-height', 'high');
+  });
+  const warnings = log.warnings.filter((warning) => warning.startsWith('<fft-ocean>'));
+  expect(warnings).toEqual([
+    '<fft-ocean>: ignoring wind-speed="abc": windSpeed must be a speed in m/s from 0 to 60; got "abc"; keeping 10',
+    '<fft-ocean>: ignoring wind-direction="": windDirection must be a finite angle in degrees (at most 1e6 in size); got ""; keeping 30',
+    '<fft-ocean>: ignoring depth="-1": depth must be a depth in metres > 0, or Infinity (written "deep") for deep water; got "-1"; keeping deep',
+    `<fft-ocean>: ignoring seed="${'7'.repeat(40)}…": seed must be an integer from 0 to 4294967295; got "${'7'.repeat(40)}…"; keeping 1`,
+    '<fft-ocean>: ignoring camera-height="high": it must be a number of metres above 0 and at most 10000; keeping 8',
+  ]);
+  expect(warnings.join('\n')).not.toContain('NaN');
+});
+
 test('paused freezes time and draws only on changes; the time can be set', async ({ page }) => {
   await openPage(page);
   const result = await page.evaluate(async () => {

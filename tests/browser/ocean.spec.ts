@@ -163,3 +163,162 @@ test('heightAt(x, z) is the height of the rendered surface over (x, z), choppy d
   expect(result.folded).toBeLessThan(result.compared / 10);
   expect(result.maxError / result.rms).toBeLessThan(0.01);
 });
+
+test.describe('the Ocean API', () => {
+  test('horizonDistanceFor(height) is valid before the first render and reaches the farthest vertex drawn', async ({ page }) => {
+    await openOcean(page);
+    for (const [position, target] of [
+      [[10, 12, -20], [60, 0, -80]],
+      [[-300, 400, 250], [700, 400, -250]],
+    ] as [number, number, number][][]) {
+      const result = await page.evaluate(
+        ([position, target]) => {
+          window.ocean.view(position, target);
+          return window.ocean.horizonCheck({ resolution: 64, seed: 2 });
+        },
+        [position, target] as const,
+      );
+      // Before any render horizonDistance is the distance for a camera at sea level, the least.
+      expect(result.beforeAtSeaLevel).toBe(result.seaLevel);
+      expect(result.seaLevel).toBeGreaterThan(100);
+      expect(result.before).toBeGreaterThan(result.seaLevel);
+      // Asked before the render, it is what the render then reports, and the skirt's far corner
+      // (what a far plane must reach) lies within it, by less than its last cells.
+      expect(result.after).toBe(result.before);
+      expect(result.farthest).toBeLessThanOrEqual(result.before);
+      expect(result.farthest).toBeGreaterThan(0.85 * result.before);
+      expect(result.before).toBeGreaterThan(1000 * position[1]);
+    }
+  });
+
+  test('colours: a THREE.Color, a hex number, a CSS string or linear [r, g, b]; the British names are aliases', async ({ page }) => {
+    await openOcean(page);
+    const result = await page.evaluate(() => {
+      const { Ocean, Color, ParameterError, renderer } = window.ocean;
+      const ocean = new Ocean(renderer, { resolution: 16, worker: false, scatterColour: '#1a6b80', causticColor: new Color(0x1a6b80) });
+      const uniforms = ocean.surface.material.uniforms;
+      const teal = new Color(0x1a6b80).toArray();
+      const constructed = { scatter: ocean.shading.scatterColor, caustic: ocean.shading.causticColor, uniform: uniforms.scatterColor.value.toArray() };
+      ocean.setShading({ causticColour: 0x1a6b80, scatterColor: [0.1, 0.2, 0.3] });
+      const set = { scatter: ocean.shading.scatterColor, caustic: ocean.shading.causticColor, uniform: uniforms.causticColor.value.toArray() };
+      const errors: string[] = [];
+      for (const bad of [{ scatterColor: 'sea green' }, { causticColor: 0x1000000 }, { scatterColour: [1, 2] }, { scatterColr: 'red' }]) {
+        try {
+          ocean.setShading(bad as never);
+        } catch (error) {
+          errors.push(`${error instanceof ParameterError}: ${(error as Error).message}`);
+        }
+      }
+      const kept = ocean.shading.scatterColor;
+      ocean.dispose();
+      return { teal, constructed, set, errors, kept };
+    });
+    for (const values of [result.constructed.scatter, result.constructed.caustic, result.constructed.uniform, result.set.caustic, result.set.uniform] as number[][]) {
+      values.forEach((value, i) => expect(value).toBeCloseTo(result.teal[i], 6));
+    }
+    expect(result.set.scatter).toEqual([0.1, 0.2, 0.3]);
+    expect(result.errors).toEqual([
+      expect.stringMatching(/^true: scatterColor must be a colour: .*; got "sea green"$/),
+      expect.stringMatching(/^true: causticColor must be a colour: .*; got 16777216$/),
+      expect.stringMatching(/^true: scatterColour must be a colour: .*; got \[1, 2\]$/),
+      expect.stringMatching(/^true: scatterColr must be one of .* \(did you mean scatterColor\?\); got "red"$/),
+    ]);
+    expect(result.kept).toEqual([0.1, 0.2, 0.3]);
+  });
+
+  test('the sun by direction: a Vector3 or [x, y, z] becomes elevation and azimuth and back; bad ones throw and keep the sun', async ({ page }) => {
+    await openOcean(page);
+    const result = await page.evaluate(() => {
+      const { Ocean, Vector3, ParameterError, renderer } = window.ocean;
+      const sunOf = (ocean: InstanceType<typeof Ocean>) => ({
+        elevation: ocean.sky.sunElevation,
+        azimuth: ocean.sky.sunAzimuth,
+        direction: ocean.sky.sunDirection.toArray(),
+        // What the sea's glint and caustics read.
+        shaded: (ocean.surface.material.uniforms.sunDirection.value as InstanceType<typeof Vector3>).toArray(),
+      });
+      const ocean = new Ocean(renderer, { resolution: 16, worker: false, sunDirection: [0, 1, 1] });
+      const constructed = sunOf(ocean);
+      const direction = new Vector3(-2, 1, -2);
+      ocean.setSun({ direction });
+      const byVector = sunOf(ocean);
+      ocean.setSun({ elevation: 10 });
+      const elevationOnly = sunOf(ocean);
+      ocean.setSun(25, 60);
+      const errors: string[] = [];
+      for (const bad of [{ direction: [0, 0, 0] }, { direction: [NaN, 1, 0] }, { direction: [1, 1, 1], elevation: 5 }, { elevaton: 5 }]) {
+        try {
+          ocean.setSun(bad as never);
+        } catch (error) {
+          errors.push(`${error instanceof ParameterError}: ${(error as Error).message}`);
+        }
+      }
+      let constructorError = '';
+      try {
+        new Ocean(renderer, { sunDirection: [0, 0, 0] });
+      } catch (error) {
+        constructorError = `${error instanceof ParameterError}: ${(error as Error).message}`;
+      }
+      const kept = sunOf(ocean);
+      ocean.dispose();
+      return { constructed, byVector, elevationOnly, errors, constructorError, kept };
+    });
+    expect(result.constructed.elevation).toBeCloseTo(45, 10);
+    expect(result.constructed.azimuth).toBeCloseTo(90, 10);
+    // (-2, 1, -2): a third of its length up, towards −x and −z.
+    expect(result.byVector.elevation).toBeCloseTo((Math.asin(1 / 3) * 180) / Math.PI, 10);
+    expect(result.byVector.azimuth).toBeCloseTo(-135, 10);
+    [-2 / 3, 1 / 3, -2 / 3].forEach((c, i) => {
+      expect(result.byVector.direction[i]).toBeCloseTo(c, 6);
+      expect(result.byVector.shaded[i]).toBeCloseTo(c, 6);
+    });
+    expect(result.elevationOnly.elevation).toBe(10);
+    expect(result.elevationOnly.azimuth).toBeCloseTo(-135, 10);
+    expect(result.errors).toEqual([
+      'true: direction must be a finite, non-zero direction towards the sun: a Vector3 or [x, y, z], y up; got [0, 0, 0]',
+      'true: direction must be a finite, non-zero direction towards the sun: a Vector3 or [x, y, z], y up; got [NaN, 1, 0]',
+      'true: direction must be given without an elevation or azimuth (it sets both); got [1, 1, 1]',
+      expect.stringMatching(/^true: elevaton must be one of elevation, azimuth, direction \(did you mean elevation\?\)/),
+    ]);
+    expect(result.constructorError).toMatch(/^true: sunDirection must be a finite, non-zero direction/);
+    expect([result.kept.elevation, result.kept.azimuth]).toEqual([25, 60]);
+  });
+
+  test('after dispose() every method throws a DisposedError (a ParameterError); disposing twice is harmless', async ({ page }) => {
+    await openOcean(page);
+    const result = await page.evaluate(() => {
+      const { Ocean, ParameterError, DisposedError, renderer } = window.ocean;
+      const ocean = new Ocean(renderer, { resolution: 16, worker: false });
+      ocean.update(1);
+      ocean.dispose();
+      ocean.dispose();
+      const calls: [string, () => unknown][] = [
+        ['update', () => ocean.update(2)],
+        ['setParameters', () => ocean.setParameters({ windSpeed: 5 })],
+        ['setShading', () => ocean.setShading({ ior: 1.4 })],
+        ['setSun', () => ocean.setSun(10, 20)],
+        ['heightAt', () => ocean.heightAt(0, 0)],
+        ['horizonDistanceFor', () => ocean.horizonDistanceFor(10)],
+        ['horizonDistance', () => ocean.horizonDistance],
+      ];
+      const errors = calls.map(([name, call]) => {
+        try {
+          call();
+          return `${name}: no error`;
+        } catch (error) {
+          const e = error as InstanceType<typeof DisposedError>;
+          return `${name}: ${e instanceof DisposedError && e instanceof ParameterError} ${e.name} ${e.parameter}: ${e.message}`;
+        }
+      });
+      return { errors, children: ocean.children.length };
+    });
+    const method = (call: string) => (call === 'horizonDistance' ? 'horizonDistanceFor' : call);
+    expect(result.errors).toEqual(
+      ['update', 'setParameters', 'setShading', 'setSun', 'heightAt', 'horizonDistanceFor', 'horizonDistance'].map(
+        (call) =>
+          `${call}: true DisposedError Ocean.${method(call)}: Ocean.${method(call)}: this Ocean has been disposed (its GPU resources are freed); create a new Ocean`,
+      ),
+    );
+    expect(result.children).toBe(0); // left in a scene, it draws nothing
+  });
+});

@@ -115,6 +115,9 @@ test('--help lists the CLI\'s options and, from the option tables, every scene o
   expect(help.stdout).toContain('--frames <n>');
   expect(help.stdout).toContain('--query "<query>"');
   expect(help.stdout).toContain('--wind is --wind-speed');
+  expect(help.stdout).toMatch(
+    /\n {2}--scatter-color <#rrggbb\|r,g,b> +a colour: a THREE\.Color,[\s\S]*?\(default 0,0\.035,0\.06\);\s+--scatter-colour\s+is\s+--scatter-color/,
+  );
   for (const name of ['spectrum', 'fetch', 'patch-sizes', 'depth', 'swell-height', 'shading-mode', 'absorption', 'path', 'skybox']) {
     expect(help.stdout).toMatch(new RegExp(`\\n  --${name} `));
   }
@@ -129,7 +132,7 @@ function rgba(file: string): { width: number; height: number; data: Buffer } {
   return { width: png.width, height: png.height, data: png.data };
 }
 
-test('every scene option reaches the picture: spectrum, depth, fetch, patch sizes, shading mode; --wind is --wind-speed', async () => {
+test('every scene option reaches the picture: spectrum, depth, fetch, patch sizes, colours, shading mode; --wind is --wind-speed', async () => {
   test.setTimeout(300_000);
   const base = ['--seed', '4', '--time', '3', '--size', '160x90'];
   const run = async (name: string, args: string[], build = false) => {
@@ -144,6 +147,9 @@ test('every scene option reaches the picture: spectrum, depth, fetch, patch size
   const shallow = await run('tma', ['--wind-speed', '12', '--spectrum', 'tma', '--depth', '4', '--fetch', '300', '--patch-sizes', '10,50,250']);
   expect(shallow.equals(old)).toBe(false);
   expect((await run('absorption', ['--wind-speed', '12', '--absorption', '0.05,0.05,0.05', '--sun-elevation', '-5'])).equals(old)).toBe(false);
+  // A colour as CSS changes the picture; the default caustic colour under its British name does not.
+  expect((await run('scatter', ['--wind-speed', '12', '--scatter-color', '#1a6b80'])).equals(old)).toBe(false);
+  expect((await run('british', ['--wind-speed', '12', '--caustic-colour', '0.12,0.12,0.12'])).equals(old)).toBe(true);
 
   // The height mode (the report's Figure 3) shades the sea in greys: the lower half, all sea, is grey
   // but for the odd pixel where a folding crest leaves a sub-pixel gap onto the sky (the known fold
@@ -175,6 +181,8 @@ test('a bad value or an unknown option comes back from the page: exit code 2, na
     [['--shading-mode', 'glossy'], '--shading-mode must be one of full, fresnel'],
     [['--patch-sizes', '100,50'], '--patch-sizes must be 1 to 4 sizes in metres'],
     [['--absorption', '0.4,0.1'], '--absorption must be three numbers'],
+    [['--scatter-color', 'seaweed'], '--scatter-color must be a colour: a THREE.Color, a hex number'],
+    [['--scater-colour', '#fff'], 'unknown option --scater-colour; did you mean --scatter-color?'],
     [['--path', 'cuda'], '--path must be auto, gpu, js; got "cuda"'],
     [['--wind', '5', '--wind-speed', '6'], '--wind-speed is given twice (also as --wind)'],
     [['--query', 'windSpeed=99&cam=1,2'], 'windSpeed must be a speed in m/s from 0 to 60; got "99"; cam must be five numbers'],
@@ -194,7 +202,7 @@ test('a link from the app and its shot agree pixel for pixel', async ({ page }) 
   test.setTimeout(300_000);
   const size = { width: 320, height: 180 };
   const query =
-    'windSpeed=14&windDirection=50&seed=5&sunElevation=18&sunAzimuth=70&absorption=0.3,0.06,0.03&paused=1&t=7.25&cam=3,9,-4,20,-8';
+    'windSpeed=14&windDirection=50&seed=5&sunElevation=18&sunAzimuth=70&absorption=0.3,0.06,0.03&scatterColour=%23103040&paused=1&t=7.25&cam=3,9,-4,20,-8';
   // The app, on the test server, as app.spec.ts drives it: its canvas right after a render.
   await page.setViewportSize(size);
   await page.goto(`/?${query}`);

@@ -1,5 +1,14 @@
 import { describe, expect, it } from 'vitest';
-import { cellsPerRingForViewport, createHorizonGridGeometry, finestTexel, RING_COUNT, RingFrames, type LayerGrid } from '../../src/render/horizonGrid';
+import {
+  cellsPerRingForViewport,
+  createHorizonGridGeometry,
+  farEdgeDistance,
+  finestTexel,
+  RING_COUNT,
+  RingFrames,
+  SKIRT_SCALE,
+  type LayerGrid,
+} from '../../src/render/horizonGrid';
 import { SeededRandom } from '../../src/spectrum/random';
 
 describe('horizon grid geometry', () => {
@@ -82,12 +91,17 @@ describe('RingFrames', () => {
     }
   });
 
-  it('reaches about a thousand camera heights away before the skirt', () => {
+  it('reaches about a thousand camera heights away before the skirt; farEdgeDistance is the skirt’s far corner', () => {
     const rings = new RingFrames();
     for (const height of [1, 10, 100, 2000]) {
       for (const layers of [single, cascades]) {
         rings.update(0, 0, height, layers, cells);
-        expect(rings.farEdgeDistance).toBeGreaterThan(1000 * height);
+        const lastCell = rings.frames[4 * (RING_COUNT - 1) + 2];
+        expect(half * lastCell).toBeGreaterThan(1000 * height);
+        // The skirt's corner: half a ring (plus the two cells a snapped centre may be off) out,
+        // SKIRT_SCALE times further, along the diagonal; plus the height.
+        const corner = Math.SQRT2 * (half + 2) * lastCell * SKIRT_SCALE + height;
+        expect(farEdgeDistance(height, layers, cells) / corner).toBeCloseTo(1, 6);
       }
     }
   });

@@ -35,7 +35,8 @@ describe('OceanMaterial shading options', () => {
     ['absorption of two numbers', { absorption: [0.4, 0.1] }, /^absorption must be/],
     ['caustic power 0', { causticPower: 0 }, /^causticPower must be a number > 0 and at most 10000; got 0$/],
     ['negative caustic power', { causticPower: -2 }, /^causticPower must be/],
-    ['caustic colour with Infinity', { causticColour: [1, Infinity, 1] }, /^causticColour must be/],
+    ['caustic colour with Infinity', { causticColor: [1, Infinity, 1] }, /^causticColor must be/],
+    ['caustic colour under its British alias', { causticColour: '#zzz' }, /^causticColour must be a colour.*; got "#zzz"$/],
     ['unknown shading mode', { shadingMode: 'sepia' }, /^shadingMode must be one of full, fresnel/],
   ];
   for (const [name, options, message] of bad) {
@@ -54,10 +55,12 @@ describe('OceanMaterial shading options', () => {
 
   it('applies good values to the uniforms the shader reads', () => {
     const m = material();
-    m.setShading({ ior: 1.5, absorption: [1, 2, 3], causticPower: 8, causticColour: [0.5, 0.5, 0.5], shadingMode: 'caustics' });
+    m.setShading({ ior: 1.5, absorption: [1, 2, 3], causticPower: 8, causticColor: [0.5, 0.5, 0.5], scatterColour: 'white', shadingMode: 'caustics' });
     expect(m.uniforms.iorWater.value).toBe(1.5);
     expect(m.uniforms.absorption.value.toArray()).toEqual([1, 2, 3]);
     expect(m.uniforms.causticPower.value).toBe(8);
+    expect(m.uniforms.causticColor.value.toArray()).toEqual([0.5, 0.5, 0.5]);
+    expect(m.uniforms.scatterColor.value.toArray()).toEqual([1, 1, 1]);
     expect(m.defines.SHADING_MODE).toBe(SHADING_MODES.indexOf('caustics'));
   });
 });

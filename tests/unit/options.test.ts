@@ -1,14 +1,16 @@
 /**
  * Misspelt option names are errors that suggest the intended one, wherever options are taken:
  * validateParameters, the shading and sun tables, and the Ocean constructor (which checks its
- * option names before it touches the renderer).
+ * option names before it touches the renderer). The British spellings of the colours are aliases
+ * of the American names; colours come in the forms three.js users pass. Messages quote what was
+ * given, shortened.
  */
-import type { WebGLRenderer } from 'three';
+import { Color, ColorManagement, type WebGLRenderer } from 'three';
 import { describe, expect, it } from 'vitest';
 import { Ocean } from '../../src/ocean';
-import { mergeOptions, nearestName, ParameterError } from '../../src/parameters/options';
+import { mergeOptions, nearestName, ParameterError, parseOptionText, quoteText } from '../../src/parameters/options';
 import { validateParameters } from '../../src/parameters/parameters';
-import { DEFAULT_SHADING, SHADING_OPTIONS } from '../../src/parameters/sceneOptions';
+import { colorToLinear, DEFAULT_SHADING, SHADING_OPTIONS, type Rgb } from '../../src/parameters/sceneOptions';
 
 function errorOf(action: () => unknown): ParameterError {
   try {
@@ -37,14 +39,122 @@ describe('unknown option names', () => {
     expect(error.message).toContain('did you mean windSpeed?');
   });
 
-  it('the shading table does too (the British spelling is the option name today)', () => {
-    const error = errorOf(() => mergeOptions(SHADING_OPTIONS, { causticColor: [1, 1, 1] } as never, DEFAULT_SHADING));
-    expect(error.message).toContain('did you mean causticColour?');
+  it('the shading table does too, suggesting the American spelling', () => {
+    const error = errorOf(() => mergeOptions(SHADING_OPTIONS, { causticColr: [1, 1, 1] } as never, DEFAULT_SHADING));
+    expect(error.parameter).toBe('causticColr');
+    expect(error.message).toContain('did you mean causticColor?');
+    // Nearer the British alias than the key: still the key is suggested.
+    expect(errorOf(() => mergeOptions(SHADING_OPTIONS, { scatterColours: 0 } as never, DEFAULT_SHADING)).message).toContain(
+      'did you mean scatterColor?',
+    );
   });
 
   it('the Ocean constructor rejects a misspelt option before it uses the renderer', () => {
     const error = errorOf(() => new Ocean({} as WebGLRenderer, { windSped: 12 } as never));
     expect(error.parameter).toBe('windSped');
     expect(error.message).toContain('did you mean windSpeed?');
+    expect(errorOf(() => new Ocean({} as WebGLRenderer, { scatterColur: 0 } as never)).message).toContain('did you mean scatterColor?');
+  });
+});
+
+describe('the British spellings are aliases', () => {
+  it('causticColour and scatterColour set causticColor and scatterColor', () => {
+    const merged = mergeOptions(SHADING_OPTIONS, { causticColour: [0.5, 0.25, 1], scatterColour: [0, 0.1, 0.2] }, DEFAULT_SHADING);
+    expect(merged.causticColor).toEqual([0.5, 0.25, 1]);
+    expect(merged.scatterColor).toEqual([0, 0.1, 0.2]);
+    expect(Object.keys(merged)).toEqual(Object.keys(DEFAULT_SHADING));
+  });
+
+  it('an option given under both names is an error naming both', () => {
+    const error = errorOf(() => mergeOptions(SHADING_OPTIONS, { causticColor: 0xffffff, causticColour: 0 }, DEFAULT_SHADING));
+    expect(error.parameter).toBe('causticColour');
+    expect(error.message).toBe('causticColour and causticColor are the same option (causticColor): give it once');
+  });
+
+  it('text under an alias is read as the option (URLs, attributes, the CLI)', () => {
+    expect(parseOptionText(SHADING_OPTIONS, 'scatterColour', '0,0.5,1')).toEqual([0, 0.5, 1]);
+  });
+});
+
+describe('colours', () => {
+  const teal = new Color(0x1a6b80);
+  const linearTeal: Rgb = [teal.r, teal.g, teal.b];
+
+  it('a hex number, a CSS string and a THREE.Color are sRGB as authored, made linear as new Color() does', () => {
+    expect(ColorManagement.enabled).toBe(true);
+    // 0x1a → (26/255) in sRGB is about 0.0103 linear: converted, not 0.102.
+    expect(linearTeal[0]).toBeCloseTo(0.0103, 4);
+    for (const input of [0x1a6b80, '#1a6b80', '#1A6B80', 'rgb(26, 107, 128)', teal]) {
+      const rgb = colorToLinear(input)!;
+      for (let i = 0; i < 3; i++) expect(rgb[i], String(input)).toBeCloseTo(linearTeal[i], 12);
+    }
+    expect(colorToLinear('white')).toEqual([1, 1, 1]);
+    expect(colorToLinear(0)).toEqual([0, 0, 0]);
+  });
+
+  it('an [r, g, b] array is linear already and taken as it is', () => {
+    expect(colorToLinear([0.0, 0.035, 0.06])).toEqual([0.0, 0.035, 0.06]);
+  });
+
+  it('is undefined for anything that is not a colour', () => {
+    for (const bad of ['#12345', 'tealish', '', 'rgb(1, 2)', 0x1000000, -1, 1.5, NaN, {}, [1, 2], [1, 2, 3, 4], null, undefined, true]) {
+      expect(colorToLinear(bad), String(bad)).toBeUndefined();
+    }
+  });
+
+  it('every form is accepted by the shading options and stored as linear RGB', () => {
+    for (const input of [0x1a6b80, '#1a6b80', teal]) {
+      const merged = mergeOptions(SHADING_OPTIONS, { scatterColor: input, causticColor: input }, DEFAULT_SHADING);
+      expect(merged.scatterColor).toEqual(colorToLinear(input));
+      expect(merged.causticColor).toEqual(colorToLinear(input));
+    }
+  });
+
+  it('a bad colour throws a ParameterError naming the option and quoting the value', () => {
+    const cases: [unknown, string][] = [
+      ['#12345', 'got "#12345"'],
+      ['not a colour', 'got "not a colour"'],
+      [0x1000000, 'got 16777216'],
+      [[1, 2], 'got [1, 2]'],
+      [[0, -0.1, 0], 'got [0, -0.1, 0]'],
+      [new Color(-1, 0, 0), 'got {r: -1, g: 0, b: 0}'],
+      [{ r: 1 }, 'got {r: 1}'],
+    ];
+    for (const [value, quoted] of cases) {
+      const error = errorOf(() => mergeOptions(SHADING_OPTIONS, { causticColor: value }, DEFAULT_SHADING));
+      expect(error.parameter).toBe('causticColor');
+      expect(error.message.startsWith('causticColor must be a colour: a THREE.Color, a hex number')).toBe(true);
+      expect(error.message).toContain(quoted);
+    }
+  });
+
+  it('as text: "#rrggbb", any CSS colour, or linear "r,g,b"; a bad one is quoted as written', () => {
+    expect(parseOptionText(SHADING_OPTIONS, 'causticColor', '#1a6b80')).toEqual(colorToLinear(0x1a6b80));
+    expect(parseOptionText(SHADING_OPTIONS, 'causticColor', ' rgb(26, 107, 128) ')).toEqual(colorToLinear(0x1a6b80));
+    expect(parseOptionText(SHADING_OPTIONS, 'causticColor', '0.1, 0.2,0.3')).toEqual([0.1, 0.2, 0.3]);
+    for (const text of ['1,2', '0.1,x,0.3', '#1a6b8', 'nocolour']) {
+      const error = errorOf(() => parseOptionText(SHADING_OPTIONS, 'causticColor', text));
+      expect(error.message).toContain(`got "${text}"`);
+    }
+  });
+});
+
+describe('messages show any value briefly', () => {
+  it('objects one level deep and lists of at most 8 items, so a cyclic or huge value gives a short message', () => {
+    const cyclic: Record<string, unknown> = { r: 1, list: [1, 2] };
+    cyclic.self = cyclic;
+    const shown = (value: unknown) => errorOf(() => mergeOptions(SHADING_OPTIONS, { causticColor: value }, DEFAULT_SHADING)).message.split('; got ')[1];
+    expect(shown(cyclic)).toBe('{r: 1, list: […], self: {…}}');
+    expect(shown(Array.from({ length: 1000 }, (_, i) => i))).toBe('[0, 1, 2, 3, 4, 5, 6, 7, …]');
+    expect(shown(() => 1)).toBe('a function');
+    expect(shown(['#1a6b80', null])).toBe('["#1a6b80", null]');
+  });
+});
+
+describe('quoteText', () => {
+  it('quotes text, cutting it after 40 characters', () => {
+    expect(quoteText('abc')).toBe('"abc"');
+    expect(quoteText('x'.repeat(40))).toBe(`"${'x'.repeat(40)}"`);
+    expect(quoteText('x'.repeat(41))).toBe(`"${'x'.repeat(40)}…"`);
   });
 });

@@ -21,9 +21,10 @@ import {
   type SimulationParameters,
 } from '../../src/parameters/parameters';
 
-/** How ParameterError prints a value: lists as [a, b], everything else with String. */
+/** How ParameterError prints a value: text in double quotes, lists as [a, b], everything else with String. */
 function shown(value: unknown): string {
-  return Array.isArray(value) ? `[${value.map(String).join(', ')}]` : String(value);
+  if (typeof value === 'string') return `"${value}"`;
+  return Array.isArray(value) ? `[${value.map(shown).join(', ')}]` : String(value);
 }
 
 /** Runs validateParameters and returns the ParameterError it must throw. */
@@ -119,7 +120,7 @@ describe('validateParameters takes an undefined value as not given', () => {
 
 describe('validateParameters rejects bad values', () => {
   for (const [parameter, value, allowed] of BAD_VALUES) {
-    it(`${parameter} = ${typeof value === 'string' ? JSON.stringify(value) : shown(value)}`, () => {
+    it(`${parameter} = ${shown(value)}`, () => {
       const error = rejection({ [parameter]: value } as Partial<SimulationParameters>);
       expect(error.name).toBe('ParameterError');
       expect(error.parameter).toBe(parameter);
@@ -178,7 +179,9 @@ describe('validateParameters: the repeat period must keep every frequency index 
       expect(error.message).toContain(`got ${limit * 1.001}`);
       expect(error.message).toContain(`resolution ${resolution}`);
       expect(error.message).toContain(`patch ${patchSize} m`);
-      expect(error.message).toContain(`depth ${depth} m`);
+      // Deep water as the URL writes it, not "Infinity".
+      expect(error.message).toContain(depth === Infinity ? 'depth deep ' : `depth ${depth} m`);
+      expect(error.message).not.toContain('Infinity');
       expect(error.message).toContain(String(MAX_FREQUENCY_INDEX));
       // The index it reports is the fastest mode's, round(ω·T/2π), computed here independently.
       const kCorner = ((resolution / 2) * 2 * Math.PI * Math.SQRT2) / patchSize;

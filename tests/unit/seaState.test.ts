@@ -404,7 +404,9 @@ describe('seaState rejects bad options with a ParameterError naming the option, 
   ];
 
   for (const [key, value, allowed] of BAD) {
-    it(`${key} = ${typeof value === 'string' ? JSON.stringify(value) : String(value)}`, () => {
+    // Messages quote text (as JSON does, for these) and show numbers as they are.
+    const shown = typeof value === 'string' ? JSON.stringify(value) : String(value);
+    it(`${key} = ${shown}`, () => {
       let error: unknown;
       try {
         seaState({ [key]: value });
@@ -416,7 +418,7 @@ describe('seaState rejects bad options with a ParameterError naming the option, 
       expect(parameterError.parameter).toBe(key);
       expect(Object.is(parameterError.value, value)).toBe(true);
       expect(parameterError.message.startsWith(`${key} must be `)).toBe(true);
-      expect(parameterError.message).toContain(`got ${String(value)}`);
+      expect(parameterError.message).toContain(`got ${shown}`);
       expect(parameterError.message).toContain(allowed);
     });
   }

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { DEFAULT_PARAMETERS, SIMULATION_OPTIONS } from '../../src/parameters/parameters';
+import { colorToLinear } from '../../src/parameters/sceneOptions';
 import {
   assignState,
   DEFAULT_STATE,
@@ -41,9 +42,9 @@ function changed(): AppState {
     sunAzimuth: -100,
     ior: 1.34,
     causticPower: 64,
-    causticColour: [0.2, 0.25, 0.3],
+    causticColor: [0.2, 0.25, 0.3],
     absorption: [0.5, 0.1, 0.05],
-    scatterColour: [0, 0.04, 0.07],
+    scatterColor: [0, 0.04, 0.07],
     mode: 'height',
     wireframe: true,
     inspector: true,
@@ -113,6 +114,18 @@ describe('serializeState / parseState', () => {
     expect(parseState('depth=12.5').state.depth).toBe(12.5);
   });
 
+  it('reads colours as linear r,g,b or as CSS (sRGB), and the British spellings as aliases', () => {
+    const teal = colorToLinear(0x1a6b80);
+    expect(parseState('causticColor=%231a6b80&scatterColor=rgb(26,107,128)')).toEqual({
+      state: { ...defaultState(), causticColor: teal, scatterColor: teal },
+      warnings: [],
+    });
+    const old = parseState('causticColour=0.5,0.5,0.5&scatterColour=0,0.1,0.2');
+    expect(old).toEqual({ state: { ...defaultState(), causticColor: [0.5, 0.5, 0.5], scatterColor: [0, 0.1, 0.2] }, warnings: [] });
+    // Written back under the American names, as linear r,g,b.
+    expect(serializeState(old.state)).toBe('causticColor=0.5,0.5,0.5&scatterColor=0,0.1,0.2&t=0&cam=0,12,0,-53.13,-6.84');
+  });
+
   it('reads flags as 1/0 and true/false', () => {
     expect(parseState('paused=1&wireframe=true&inspector=0').state).toMatchObject({ paused: true, wireframe: true, inspector: false });
   });
@@ -152,9 +165,10 @@ describe('invalid values', () => {
     ['sunElevation', '100'],
     ['ior', '0.9'],
     ['causticPower', '0'],
-    ['causticColour', '1,2'],
+    ['causticColor', '1,2'],
+    ['causticColor', '#12345'],
     ['absorption', '1,-1,1'],
-    ['scatterColour', 'red'],
+    ['scatterColor', 'reddish'],
     ['mode', 'shiny'],
     ['path', 'webgpu'],
     ['wireframe', 'maybe'],
@@ -175,6 +189,23 @@ describe('invalid values', () => {
       expect(state).toEqual({ ...defaultState(), windDirection: 10 });
     });
   }
+
+  it('quotes a bad value as written, its first 40 characters', () => {
+    const { warnings } = parseState(`windSpeed=${'9'.repeat(30)}abcdefghijklmnop&timeScale=${'x'.repeat(50)}`);
+    expect(warnings.map((w) => w.message)).toEqual([
+      expect.stringContaining(`got "${'9'.repeat(30)}abcdefghij…"`),
+      expect.stringContaining(`got "${'x'.repeat(40)}…"`),
+    ]);
+    expect(parseState('windSpeed=abc').warnings[0].message).toContain('got "abc"');
+  });
+
+  it('says deep water as the URL writes it, "deep"', () => {
+    const { warnings } = parseState('resolution=1024&patchSizes=10&repeatPeriod=9000');
+    expect(warnings[0].message).toContain('at depth deep');
+    expect(parseState('depth=-1').warnings[0].message).toContain('using the default deep');
+    // (The rule itself says how code writes it: 'or Infinity (written "deep")'.)
+    for (const { message } of [...warnings, ...parseState('depth=-1').warnings]) expect(message).not.toMatch(/(depth|default) Infinity/);
+  });
 
   it('keeps the good values next to a bad one', () => {
     const { state, warnings } = parseState('windSpeed=abc&seed=9&mode=height');

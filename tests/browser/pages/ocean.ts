@@ -18,7 +18,8 @@ import {
   WebGLRenderer,
   WebGLRenderTarget,
 } from 'three';
-import { Ocean } from '../../../src/ocean';
+import { DisposedError, Ocean, type OceanOptions } from '../../../src/ocean';
+import { ParameterError } from '../../../src/parameters/options';
 import { shaderSource } from '../../../src/shaderSource';
 import { OceanMaterial, type OceanShadingOptions } from '../../../src/render/oceanMaterial';
 import { OceanSurface } from '../../../src/render/oceanSurface';
@@ -80,6 +81,13 @@ function view(position: [number, number, number], target: [number, number, numbe
 }
 
 const harness = {
+  /** For tests of the Ocean's API. */
+  renderer,
+  Ocean,
+  ParameterError,
+  DisposedError,
+  Color,
+  Vector3,
   setup,
   view,
   setUniformEnvironment,
@@ -124,24 +132,29 @@ const harness = {
     changes: Partial<SimulationParameters>,
     t: number,
   ): { compared: number; folded: number; maxError: number; rms: number } {
-    surface?.removeFromParent();
-    surface?.dispose();
-    simulation?.dispose();
-    const ocean = new Ocean(renderer, { ...changes, path: 'gpu', worker: false });
-    simulation = ocean.simulation;
-    surface = ocean.surface;
-    ocean.update(t);
-    const { displacedAtMip0, rms } = geometryCheck(t);
-    // Where the surface folds (J ≤ 0.2 at the rest point) more than one point lands on (x, z).
-    const unfolded = displacedAtMip0.filter(([, , , jacobian]) => jacobian > 0.2);
-    let maxError = 0;
-    for (const [x, y, z] of unfolded) maxError = Math.max(maxError, Math.abs(ocean.heightAt(x, z) - y));
-    ocean.sky.dispose();
-    simulation = null;
-    surface.dispose();
-    surface = null;
-    ocean.simulation.dispose();
-    return { compared: unfolded.length, folded: displacedAtMip0.length - unfolded.length, maxError, rms };
+    return withOcean(changes, (ocean) => {
+      ocean.update(t);
+      const { displacedAtMip0, rms } = geometryCheck(t);
+      // Where the surface folds (J ≤ 0.2 at the rest point) more than one point lands on (x, z).
+      const unfolded = displacedAtMip0.filter(([, , , jacobian]) => jacobian > 0.2);
+      let maxError = 0;
+      for (const [x, y, z] of unfolded) maxError = Math.max(maxError, Math.abs(ocean.heightAt(x, z) - y));
+      return { compared: unfolded.length, folded: displacedAtMip0.length - unfolded.length, maxError, rms };
+    });
+  },
+  /**
+   * An Ocean's horizonDistanceFor(camera height) asked before its first render, its
+   * horizonDistance then and after the render from the current view, and the farthest vertex from
+   * the camera that the vertex shader placed (the skirt's corner).
+   */
+  horizonCheck(changes: Partial<SimulationParameters>): { before: number; beforeAtSeaLevel: number; seaLevel: number; after: number; farthest: number } {
+    return withOcean(changes, (ocean) => {
+      const before = ocean.horizonDistanceFor(camera.position.y);
+      const beforeAtSeaLevel = ocean.horizonDistance;
+      const seaLevel = ocean.horizonDistanceFor(0);
+      const { farthest } = geometryCheck(0); // places the rings for the camera, as a render does
+      return { before, beforeAtSeaLevel, seaLevel, after: ocean.horizonDistance, farthest };
+    });
   },
   /**
    * For each pixel (x, y from the top): its rendered value (red, 0–1) and cos θi of the view ray
@@ -191,6 +204,26 @@ const harness = {
     sunDirection.fromArray(direction).normalize();
   },
 };
+
+/**
+ * Runs `use` with an Ocean (GPU path, no worker) made from `changes` in place of the page's own
+ * simulation and surface (so geometryCheck reads its surface), and frees it after.
+ */
+function withOcean<T>(changes: OceanOptions, use: (ocean: Ocean) => T): T {
+  surface?.removeFromParent();
+  surface?.dispose();
+  simulation?.dispose();
+  const ocean = new Ocean(renderer, { ...changes, path: 'gpu', worker: false });
+  simulation = ocean.simulation;
+  surface = ocean.surface;
+  try {
+    return use(ocean);
+  } finally {
+    simulation = null;
+    surface = null;
+    ocean.dispose();
+  }
+}
 
 /**
  * Draws the horizon grid as points with the real vertex shader (define CAPTURE_POSITIONS), one
@@ -280,9 +313,11 @@ function geometryCheck(t: number, withRestPoints = false) {
   const restPoints: string[] = [];
   /** (x, y, z) displaced, and the Jacobian of the choppy map at the rest point. */
   const displacedAtMip0: [number, number, number, number][] = [];
+  let farthest = 0;
   for (let v = 0; v < count; v++) {
     const [x, z, lod, ring] = rest.subarray(4 * v, 4 * v + 4);
     const [px, py, pz] = displaced.subarray(4 * v, 4 * v + 3);
+    farthest = Math.max(farthest, camera.position.distanceTo(new Vector3(px, py, pz)));
     if (lod > 500) { // SKIRT_LOD: the far edge, flat by design
       skirt++;
       continue;
@@ -310,7 +345,7 @@ function geometryCheck(t: number, withRestPoints = false) {
     // Keyed by the unclamped mip level: the coarser layers' levels go on growing past the finest's last.
     if (withRestPoints) restPoints.push(`${x},${z},${Math.round(lod)}`);
   }
-  return { count, skirt, rms, byLevel, maxOffGrid, heights, restPoints, displacedAtMip0 };
+  return { count, skirt, rms, byLevel, maxOffGrid, heights, restPoints, displacedAtMip0, farthest };
 }
 
 /** Mip levels of an RGBA N×N texture by 2×2 averaging, level 0 first. */
