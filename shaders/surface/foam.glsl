@@ -8,7 +8,8 @@
 // patches, the opacity is the coverage itself (the foam field's mip levels average it), so nothing
 // shimmers.
 
-uniform sampler2D tFoam;  // coverage in .r, over the largest layer's patch
+// Coverage below which nothing shows (less than one pixel in 500 would be white): not drawn.
+#define FOAM_VISIBLE 0.002
 
 uint foamHash(uvec2 cell) {
   // A 2D integer hash (PCG-style mixing): no sin(), so no loss of precision far from the origin.
@@ -43,7 +44,6 @@ float foamPattern(vec2 restPoint) {
 // pattern's finest cells the pattern would alias into speckle: it fades into its average there,
 // the coverage times the bubbles' mean opacity.
 float foamOpacity(float coverage, vec2 restPoint) {
-  if (coverage <= 0.0) return 0.0;
   const float meanBubbles = 0.825;
   vec2 footprint = fwidth(restPoint);  // metres per pixel on the sea
   float detail = 1.0 - smoothstep(0.15, 0.6, max(footprint.x, footprint.y));

@@ -27,6 +27,7 @@ varying vec2 vLayerUv[LAYER_COUNT];
 varying float vCrossDerivative;  // λ·Σ ∂Dx/∂z, see ocean.vert
 varying vec2 vBlend;             // the largest layer's two copies' weights, see ocean.vert
 varying vec2 vBlendSlope;
+varying float vFoam;             // foam coverage, see ocean.vert
 varying vec3 vWorldPosition;
 centroid varying vec2 vRestPosition;  // see ocean.vert
 flat varying float vRing;
@@ -99,10 +100,11 @@ void main() {
   vec3 water = throughWater(environmentRadiance(refracted), refracted, absorption, scatterColor, viewDepth);
   vec3 glint = sunColor * reflectance * pow(max(dot(reflected, sunDirection), 0.0), sunShininess);
   vec3 colour = reflectance * sky + (1.0 - reflectance) * water + caustic * causticColor + glint;
-  // The foam field is drawn like the largest layer: two copies, here with weights cos²θ + sin²θ = 1.
-  float coverage = vBlend.x * vBlend.x * texture(tFoam, largestUv).r + vBlend.y * vBlend.y * texture(tFoam, largestUv + copyOffset).r;
-  vec3 foam = foamRadiance(normal, sunDirection, sunColor, environmentRadiance(normal));
-  colour = mix(colour, foam, foamOpacity(coverage, vRestPosition));
+  // Most of the sea has no foam: it pays for the pattern and the foam's light only where there is.
+  if (vFoam > FOAM_VISIBLE) {
+    float opacity = foamOpacity(vFoam, vRestPosition);
+    if (opacity > 0.0) colour = mix(colour, foamRadiance(normal, sunDirection, sunColor, environmentRadiance(normal)), opacity);
+  }
   #endif
   gl_FragColor = vec4(colour, 1.0);
   #include <tonemapping_fragment>

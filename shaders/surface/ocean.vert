@@ -19,6 +19,10 @@ varying float vCrossDerivative;
 // metres and are interpolated.
 varying vec2 vBlend;
 varying vec2 vBlendSlope;
+// The foam coverage, per vertex at the vertex's mip level (the foam texels are as large as the
+// largest layer's, metres wide: the vertices are as dense as that near the eye, and far away the
+// mip level averages it anyway), so the fragment stage does not fetch it for every pixel.
+varying float vFoam;
 varying vec3 vWorldPosition;
 // centroid: with multisampling, a pixel only partly covered by a triangle must not evaluate the
 // rest point outside it (the ring-overlap test in ocean.frag would then keep a dropped triangle).
@@ -50,6 +54,9 @@ void main() {
   vec4 copy = textureLod(tLayerDisplacement[LAYER_COUNT - 1], vLayerUv[LAYER_COUNT - 1] + copyOffset, largestLod);
   displacement += (blend.x - 1.0) * first + blend.y * copy;
   vBlend = blend.xy;
+  // Two copies like the largest layer, with weights cos²θ + sin²θ = 1.
+  vFoam = blend.x * blend.x * textureLod(tFoam, vLayerUv[LAYER_COUNT - 1], largestLod).r +
+          blend.y * blend.y * textureLod(tFoam, vLayerUv[LAYER_COUNT - 1] + copyOffset, largestLod).r;
   vBlendSlope = (blend.x * copy.y - blend.y * first.y) * blend.zw;
   displacement.xzw *= choppiness;
   vCrossDerivative = displacement.w;

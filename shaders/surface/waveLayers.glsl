@@ -10,6 +10,9 @@ uniform sampler2D tLayerDerivatives[LAYER_COUNT];   // (∂h/∂x, ∂h/∂z, �
 uniform float layerSizes[LAYER_COUNT];              // metres
 uniform float layerLodBias[LAYER_COUNT];            // log2(finest texel / this layer's texel)
 uniform float choppiness;                           // λ
+// Whitecap foam (src/layers/whitecapFoam.ts): coverage in .r over the largest layer's patch, with
+// its size and texels, so it is sampled with the largest layer's coordinates and mip level.
+uniform sampler2D tFoam;
 
 // The largest cascade is drawn twice and blended (src/layers/patchBlend.ts says why and fills
 // these): cos θ·P(x) + sin θ·P(x + o), θ(x) = Σ a_j·sin(k_j·x + φ_j), patchBlend[j] = (kx, kz, φ, a),
