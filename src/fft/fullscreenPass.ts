@@ -4,7 +4,23 @@
  * passes without disturbing the caller's renderer state (its render target, and WebXR, which
  * would otherwise draw each pass once per eye).
  */
-import { BufferAttribute, BufferGeometry, Camera, GLSL3, Mesh, ShaderMaterial, type WebGLRenderer } from 'three';
+import {
+  BufferAttribute,
+  BufferGeometry,
+  Camera,
+  GLSL3,
+  HalfFloatType,
+  LinearFilter,
+  LinearMipmapLinearFilter,
+  Mesh,
+  NearestFilter,
+  RepeatWrapping,
+  RGBAFormat,
+  ShaderMaterial,
+  WebGLRenderTarget,
+  type FloatType,
+  type WebGLRenderer,
+} from 'three';
 import { shaderSource } from '../shaderSource';
 
 export class FullscreenPass {
@@ -57,4 +73,29 @@ export function runPasses(renderer: WebGLRenderer, passes: () => void): void {
     renderer.xr.enabled = previousXr;
     renderer.setRenderTarget(previousTarget);
   }
+}
+
+/**
+ * A square RGBA float target whose `count` textures a surface samples as periodic fields: REPEAT
+ * wrapping, and where the type filters linearly, linear filtering with mipmaps made after each
+ * pass (float32 filters only with OES_texture_float_linear; half floats always do).
+ */
+export function periodicFieldTarget(
+  renderer: WebGLRenderer,
+  size: number,
+  type: typeof FloatType | typeof HalfFloatType,
+  count = 1,
+): WebGLRenderTarget {
+  const filterable = type === HalfFloatType || renderer.extensions.has('OES_texture_float_linear');
+  return new WebGLRenderTarget(size, size, {
+    count,
+    type,
+    format: RGBAFormat,
+    depthBuffer: false,
+    wrapS: RepeatWrapping,
+    wrapT: RepeatWrapping,
+    magFilter: filterable ? LinearFilter : NearestFilter,
+    minFilter: filterable ? LinearMipmapLinearFilter : NearestFilter,
+    generateMipmaps: filterable,
+  });
 }

@@ -30,10 +30,7 @@ import {
   DataTexture,
   FloatType,
   HalfFloatType,
-  LinearFilter,
-  LinearMipmapLinearFilter,
   NearestFilter,
-  RepeatWrapping,
   RGBAFormat,
   RGFormat,
   type ShaderMaterial,
@@ -47,7 +44,7 @@ import {
 import { shaderSource } from '../shaderSource';
 import { fillPhaseTable, PHASE_TABLE_SIZE } from '../spectrum/dispersion';
 import type { InitialSpectrum } from '../spectrum/initialSpectrum';
-import { FullscreenPass, fullscreenMaterial, runPasses } from './fullscreenPass';
+import { FullscreenPass, fullscreenMaterial, periodicFieldTarget, runPasses } from './fullscreenPass';
 import { checkThreeInternals, glTextureOf, useExternalFramebuffer } from './threeInternals';
 import { FIELD_TEXTURES } from './waveFieldLayout';
 
@@ -118,19 +115,7 @@ export class GpuWaveFields {
     this.twiddles = dataTexture(twiddleTable, n, 1, RGFormat);
 
     this.working = [new LayeredSpectra(n / 2, type), new LayeredSpectra(n / 2, type)];
-    // Float32 textures filter linearly only with OES_texture_float_linear; half floats always do.
-    const filterable = precision === 'float16' || renderer.extensions.has('OES_texture_float_linear');
-    this.output = new WebGLRenderTarget(n, n, {
-      count: 2,
-      type,
-      format: RGBAFormat,
-      depthBuffer: false,
-      wrapS: RepeatWrapping,
-      wrapT: RepeatWrapping,
-      magFilter: filterable ? LinearFilter : NearestFilter,
-      minFilter: filterable ? LinearMipmapLinearFilter : NearestFilter,
-      generateMipmaps: filterable,
-    });
+    this.output = periodicFieldTarget(renderer, n, type, 2);
     [this.displacement, this.derivatives] = this.output.textures;
     this.output.textures.forEach((texture, i) => (texture.name = FIELD_TEXTURES[i]));
 

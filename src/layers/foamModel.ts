@@ -110,6 +110,8 @@ export function nearestTexels(foamSize: number, foamResolution: number, size: nu
 export class CpuFoamField {
   readonly coverage: Float32Array;
   private readonly jacobianTerms: Float32Array;
+  /** nearestTexels for each cascade's size and resolution, made once. */
+  private readonly texelTables = new Map<string, Int32Array>();
 
   constructor(
     readonly size: number,
@@ -130,7 +132,9 @@ export class CpuFoamField {
     const terms = this.jacobianTerms; // Σ (Dx,x, Dz,z, Dx,z) per foam texel
     terms.fill(0);
     for (const { fields, size, resolution: n } of cascades) {
-      const texels = nearestTexels(this.size, m, size, n);
+      const key = `${size} ${n}`;
+      let texels = this.texelTables.get(key);
+      if (!texels) this.texelTables.set(key, (texels = nearestTexels(this.size, m, size, n)));
       for (let j = 0; j < m; j++) {
         const row = texels[j] * n;
         for (let i = 0; i < m; i++) {

@@ -27,13 +27,12 @@ import {
   NearestFilter,
   RedFormat,
   RepeatWrapping,
-  RGBAFormat,
   WebGLRenderTarget,
   type ShaderMaterial,
   type Texture,
   type WebGLRenderer,
 } from 'three';
-import { FullscreenPass, fullscreenMaterial, runPasses } from '../fft/fullscreenPass';
+import { FullscreenPass, fullscreenMaterial, periodicFieldTarget, runPasses } from '../fft/fullscreenPass';
 import { shaderSource, withLayerCount } from '../shaderSource';
 import type { FftCascade } from './fftCascade';
 import {
@@ -123,20 +122,7 @@ class GpuFoam {
     type: typeof FloatType | typeof HalfFloatType,
   ) {
     const m = frame.resolution;
-    // Float32 textures filter linearly only with OES_texture_float_linear; half floats always do.
-    const filterable = type === HalfFloatType || renderer.extensions.has('OES_texture_float_linear');
-    const target = () =>
-      new WebGLRenderTarget(m, m, {
-        type,
-        format: RGBAFormat,
-        depthBuffer: false,
-        wrapS: RepeatWrapping,
-        wrapT: RepeatWrapping,
-        magFilter: filterable ? LinearFilter : NearestFilter,
-        minFilter: filterable ? LinearMipmapLinearFilter : NearestFilter,
-        generateMipmaps: filterable,
-      });
-    this.targets = [target(), target()];
+    this.targets = [periodicFieldTarget(renderer, m, type), periodicFieldTarget(renderer, m, type)];
     this.targets.forEach((t) => (t.texture.name = 'foam'));
     this.texture = { value: this.targets[0].texture };
     this.material = fullscreenMaterial(withLayerCount(shaderSource('foam/whitecapFoam.frag'), cascades.length), {
