@@ -38,7 +38,7 @@ describe('FloatingBody', () => {
   });
 
   it('heaves with a long wave: its height follows the wave’s within 5 %', () => {
-    // A 1 m, 100 m deep-water wave, ω = √(g·k) (period 8 s); a 2 m box whose own heave frequency
+    // A 1 m, 100 m deep-water wave, ω = √(g·k) (linear (Airy) wave theory's deep-water dispersion; period 8 s); a 2 m box whose own heave frequency
     // √(ρ·g·A/m) = 6.3 rad/s is far above the wave's 0.79 rad/s, so it follows the surface.
     const amplitude = 1;
     const k = (2 * Math.PI) / 100;

@@ -34,7 +34,7 @@ function seaWithFoam(parameters: Partial<SimulationParameters>) {
 
 const mean = (values: Float32Array) => values.reduce((sum, v) => sum + v, 0) / values.length;
 
-/** Monahan & O'Muircheartaigh (1980), J. Phys. Oceanogr. 10:2094, eq. 5: whitecap fraction W(U10). */
+/** Monahan & O'Muircheartaigh (1980), "Optimal power-law description of oceanic whitecap coverage dependence on wind speed", J. Phys. Oceanogr. 10:2094–2099: whitecap fraction W(U10). */
 const monahan = (windSpeed: number) => 3.84e-6 * windSpeed ** 3.41;
 
 /** Mean coverage over 2 s after a warm-up to t = 20 s, sampled every 0.4 s with steps of 0.1 s. */
