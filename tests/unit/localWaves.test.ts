@@ -1,0 +1,305 @@
+/**
+ * The local-wave model (src/layers/localWaveModel.ts): its JS solver against a naive DFT, and the
+ * physics it must show against published laws: rings spreading at the group speed of their
+ * wavelength, the Kelvin wedge behind a moving hull, and a border that absorbs.
+ */
+import { describe, expect, it } from 'vitest';
+import {
+  CpuLocalWaves,
+  impulseHeight,
+  signedIndex,
+  spongeFactor,
+  SPONGE_WIDTH_FRACTION,
+  type HeightImpulse,
+  type LocalWaveGrid,
+  type LocalWaveStep,
+} from '../../src/layers/localWaveModel';
+import { angularFrequency, GRAVITY } from '../../src/spectrum/dispersion';
+
+/** One step of the model written out with O(N⁴) sums instead of FFTs. */
+function naiveStep(grid: LocalWaveGrid, height: Float64Array, potential: Float64Array, step: LocalWaveStep) {
+  const n = grid.resolution;
+  const eta = new Float64Array(n * n);
+  const psi = new Float64Array(n * n);
+  for (let j = 0; j < n; j++) {
+    for (let i = 0; i < n; i++) {
+      const [fi, fj] = [i + step.shiftX, j + step.shiftZ];
+      const inside = fi >= 0 && fi < n && fj >= 0 && fj < n;
+      const damping = spongeFactor(i, j, grid, step.dt);
+      eta[j * n + i] = inside ? height[fj * n + fi] * damping : 0;
+      psi[j * n + i] = inside ? potential[fj * n + fi] * damping : 0;
+      for (const impulse of step.impulses) eta[j * n + i] += impulseHeight(impulse, i * grid.cellSize, j * grid.cellSize);
+    }
+  }
+  const dk = (2 * Math.PI) / (n * grid.cellSize);
+  const out = { height: new Float64Array(n * n), potential: new Float64Array(n * n), slopeX: new Float64Array(n * n), slopeZ: new Float64Array(n * n) };
+  // Z(k) = Σ (η + iψ)·e^{−ik·x}, rotated by e^{−iωΔt}.
+  const zRe = new Float64Array(n * n);
+  const zIm = new Float64Array(n * n);
+  for (let q = 0; q < n; q++) {
+    for (let p = 0; p < n; p++) {
+      let re = 0;
+      let im = 0;
+      for (let j = 0; j < n; j++) {
+        for (let i = 0; i < n; i++) {
+          const angle = (-2 * Math.PI * (p * i + q * j)) / n;
+          re += eta[j * n + i] * Math.cos(angle) - psi[j * n + i] * Math.sin(angle);
+          im += eta[j * n + i] * Math.sin(angle) + psi[j * n + i] * Math.cos(angle);
+        }
+      }
+      const phase = -angularFrequency(Math.hypot(signedIndex(p, n), signedIndex(q, n)) * dk, grid.depth) * step.dt;
+      zRe[q * n + p] = re * Math.cos(phase) - im * Math.sin(phase);
+      zIm[q * n + p] = re * Math.sin(phase) + im * Math.cos(phase);
+    }
+  }
+  for (let j = 0; j < n; j++) {
+    for (let i = 0; i < n; i++) {
+      for (let q = 0; q < n; q++) {
+        for (let p = 0; p < n; p++) {
+          const angle = (2 * Math.PI * (p * i + q * j)) / n;
+          const [c, s] = [Math.cos(angle) / (n * n), Math.sin(angle) / (n * n)];
+          const [re, im] = [zRe[q * n + p], zIm[q * n + p]];
+          out.height[j * n + i] += re * c - im * s;
+          out.potential[j * n + i] += re * s + im * c;
+          // η = Re(η + iψ), so ∂η/∂x = Re(Σ i·kx·Z·e^{ik·x}) (no slope at the Nyquist frequency).
+          const kx = p === n / 2 ? 0 : signedIndex(p, n) * dk;
+          const kz = q === n / 2 ? 0 : signedIndex(q, n) * dk;
+          out.slopeX[j * n + i] -= kx * (re * s + im * c);
+          out.slopeZ[j * n + i] -= kz * (re * s + im * c);
+        }
+      }
+    }
+  }
+  return out;
+}
+
+function maxAbs(a: ArrayLike<number>): number {
+  let m = 0;
+  for (let i = 0; i < a.length; i++) m = Math.max(m, Math.abs(a[i]));
+  return m;
+}
+
+describe('the JS solver against a naive DFT', () => {
+  it('takes the same step (shift, sponge, sources, exact rotation, slopes) to 1e-12', () => {
+    const grid: LocalWaveGrid = { resolution: 16, cellSize: 0.5, depth: 3 };
+    const solver = new CpuLocalWaves(grid);
+    const drop: HeightImpulse = { x: 3.2, z: 4.1, cos: 0.8, sin: 0.6, halfLength: 1.1, halfBeam: 0.6, height: -0.4 };
+    solver.step({ shiftX: 0, shiftZ: 0, impulses: [drop], dt: 0.3 });
+    const height = Float64Array.from(solver.height);
+    const potential = Float64Array.from(solver.potential);
+    const step: LocalWaveStep = { shiftX: 1, shiftZ: -2, impulses: [{ ...drop, x: 4, height: 0.2 }], dt: 0.45 };
+    solver.step(step);
+    const expected = naiveStep(grid, height, potential, step);
+    const scale = maxAbs(expected.height);
+    expect(scale).toBeGreaterThan(0.01);
+    for (const key of ['height', 'potential', 'slopeX', 'slopeZ'] as const) {
+      for (let t = 0; t < 256; t++) expect(Math.abs(solver[key][t] - expected[key][t])).toBeLessThan(1e-12 * Math.max(1, scale));
+    }
+  });
+});
+
+/** Bilinear sample of a field on the grid at (x, z) metres from texel (0, 0). */
+function sampleAt(field: Float64Array, grid: LocalWaveGrid, x: number, z: number): number {
+  const n = grid.resolution;
+  const [u, v] = [x / grid.cellSize, z / grid.cellSize];
+  const [i, j] = [Math.floor(u), Math.floor(v)];
+  const [fu, fv] = [u - i, v - j];
+  const at = (a: number, b: number) => field[b * n + a];
+  return (1 - fv) * ((1 - fu) * at(i, j) + fu * at(i + 1, j)) + fv * ((1 - fu) * at(i, j + 1) + fu * at(i + 1, j + 1));
+}
+
+/** The ring's profile η(r) around (cx, cz), averaged over 16 directions, r in steps of dr up to rMax. */
+function radialProfile(field: Float64Array, grid: LocalWaveGrid, cx: number, cz: number, dr: number, rMax: number): number[] {
+  const profile: number[] = [];
+  for (let r = 0; r <= rMax; r += dr) {
+    let sum = 0;
+    for (let a = 0; a < 16; a++) sum += sampleAt(field, grid, cx + r * Math.cos((a * Math.PI) / 8), cz + r * Math.sin((a * Math.PI) / 8));
+    profile.push(sum / 16);
+  }
+  return profile;
+}
+
+/** Radii of the crests (local maxima, placed by a parabola through three samples) above `floor`. */
+function crestRadii(profile: number[], dr: number, floor: number): number[] {
+  const crests: number[] = [];
+  for (let s = 1; s + 1 < profile.length; s++) {
+    const [a, b, c] = [profile[s - 1], profile[s], profile[s + 1]];
+    if (b > a && b >= c && b > floor) crests.push((s + (0.5 * (a - c)) / (a - 2 * b + c)) * dr);
+  }
+  return crests;
+}
+
+/** The zero crossings of the profile just inside and just outside the radius `r`, interpolated linearly. */
+function zeroCrossingsAround(profile: number[], dr: number, r: number): [number, number] {
+  const s = Math.round(r / dr);
+  const crossing = (from: number, direction: number) => {
+    for (let a = from; a + direction >= 0 && a + direction < profile.length; a += direction) {
+      const [p, q] = [profile[a], profile[a + direction]];
+      if (Math.sign(p) !== Math.sign(q)) return (a + (direction * p) / (p - q)) * dr;
+    }
+    return NaN;
+  };
+  return [crossing(s, -1), crossing(s, 1)];
+}
+
+describe('the physics of local waves', () => {
+  // Deep-water dispersion ω² = g·k (Airy; Lamb, "Hydrodynamics", §228): phase speed √(g/k) and group
+  // speed half of it.
+  const phaseSpeed = (k: number) => Math.sqrt(GRAVITY / k);
+  const groupSpeed = (k: number) => 0.5 * phaseSpeed(k);
+
+  it('spreads a stone\'s rings at the group speed of their local wavelength, crests at the phase speed (within 5 %)', { timeout: 60_000 }, () => {
+    // Cauchy–Poisson problem: at radius r and time t the waves have the wavenumber whose group speed is
+    // r/t (stationary phase: Lighthill, "Waves in Fluids" (1978), §3.6; Whitham (1974), §11.4), and each
+    // crest moves at the phase speed of that wavenumber.
+    const grid: LocalWaveGrid = { resolution: 512, cellSize: 0.25, depth: Infinity };
+    const solver = new CpuLocalWaves(grid);
+    const centre = 64;
+    const stone: HeightImpulse = { x: centre, z: centre, cos: 1, sin: 0, halfLength: 0.4, halfBeam: 0.4, height: -0.2 };
+    const dt = 0.1;
+    const t1 = 12;
+    // Crests are followed from t1 − h to t1 + h: a crest's radius grows as t² (its phase g·t²/4r stays
+    // fixed), so the central difference is its speed at t1.
+    const h = 0.5;
+    const dr = 0.05;
+    const advance = (seconds: number) => {
+      for (let t = 0; t < seconds - 1e-9; t += dt) solver.step({ shiftX: 0, shiftZ: 0, impulses: [], dt });
+    };
+    solver.step({ shiftX: 0, shiftZ: 0, impulses: [stone], dt: 0 });
+    advance(t1 - h);
+    const earlier = radialProfile(solver.height, grid, centre, centre, dr, 40);
+    advance(h);
+    const before = radialProfile(solver.height, grid, centre, centre, dr, 40);
+    advance(h);
+    const after = radialProfile(solver.height, grid, centre, centre, dr, 40);
+    const peak = maxAbs(before.slice(Math.round(3 / dr)));
+    const crests = crestRadii(before, dr, 0.2 * peak).filter((r) => r > 3);
+    const [previous, later] = [crestRadii(earlier, dr, 0.1 * peak), crestRadii(after, dr, 0.1 * peak)];
+    const nearest = (radii: number[], r: number) => radii.reduce((best, q) => (Math.abs(q - r) < Math.abs(best - r) ? q : best));
+    const groupRatios: number[] = [];
+    const phaseRatios: number[] = [];
+    for (const crest of crests) {
+      // The local wavelength: twice the distance between the zero crossings on either side of the crest.
+      const [inner, outer] = zeroCrossingsAround(before, dr, crest);
+      const k = Math.PI / (outer - inner);
+      // Stationary phase is the leading term of an expansion in 1/(k·r), and a profile sampled
+      // bilinearly places crests well only with several texels per wavelength: measure where both hold.
+      if (k * crest < 20 || (2 * Math.PI) / k < 5 * grid.cellSize) continue;
+      groupRatios.push(crest / t1 / groupSpeed(k));
+      const move = phaseSpeed(k) * h;
+      phaseRatios.push((nearest(later, crest + move) - nearest(previous, crest - move)) / (2 * move));
+    }
+    console.log('ring at t = ' + t1 + ' s: crest radii (m)', crests.map((r) => r.toFixed(2)).join(' '), '| (r/t) ÷ c_g', groupRatios.map((r) => r.toFixed(3)).join(' '), '| crest speed ÷ c_p', phaseRatios.map((r) => r.toFixed(3)).join(' '));
+    expect(groupRatios.length).toBeGreaterThanOrEqual(3);
+    for (const ratio of [...groupRatios, ...phaseRatios]) expect(Math.abs(ratio - 1)).toBeLessThan(0.05);
+  });
+
+  it('draws a Kelvin wedge of half-angle 19.47° ± 2° behind a hull in steady motion', { timeout: 60_000 }, () => {
+    // Kelvin (1887): in deep water the waves of a source moving steadily stay inside a wedge of
+    // half-angle asin(1/3) = 19.47°, whatever its speed, and are largest along its edges (the cusp
+    // lines). That holds for hulls short against the wavelength 2πU²/g: for Froude numbers U/√(g·L)
+    // above ~0.5 the largest waves move inside the wedge (Rabaud & Moisy 2013, "Ship wakes: Kelvin or
+    // Mach angle?", Phys. Rev. Lett. 110, 214503). Here U/√(g·L) = 0.4.
+    const grid: LocalWaveGrid = { resolution: 256, cellSize: 0.5, depth: Infinity };
+    const solver = new CpuLocalWaves(grid);
+    const speed = 2.5;
+    const hull = { halfLength: 2, halfBeam: 0.8, draft: 0.3 };
+    expect(speed / Math.sqrt(GRAVITY * 2 * hull.halfLength)).toBeCloseTo(0.4, 1);
+    const dt = 0.1;
+    // The grid follows the hull, which stays near (96 m, 64 m) of it: 80 m of wake behind.
+    const hullInGrid = { x: 96, z: 64 };
+    let hullX = 0;
+    let originTexel = Math.floor((hullX - hullInGrid.x) / grid.cellSize);
+    const pressure = (x: number, height: number): HeightImpulse => ({
+      x: x - originTexel * grid.cellSize,
+      z: hullInGrid.z,
+      cos: 1,
+      sin: 0,
+      halfLength: hull.halfLength,
+      halfBeam: hull.halfBeam,
+      height,
+    });
+    solver.step({ shiftX: 0, shiftZ: 0, impulses: [pressure(hullX, hull.draft)], dt: 0 });
+    for (let t = 0; t < 40; t += dt) {
+      const previousX = hullX;
+      hullX += speed * dt;
+      const nextOrigin = Math.floor((hullX - hullInGrid.x) / grid.cellSize);
+      const shift = nextOrigin - originTexel;
+      originTexel = nextOrigin;
+      solver.step({ shiftX: shift, shiftZ: 0, impulses: [pressure(hullX, hull.draft), pressure(previousX, -hull.draft)], dt });
+    }
+    // Along each cross-section behind the hull, where the waves are largest: the envelope |η| taken
+    // as the largest over a wavelength along the track.
+    const n = grid.resolution;
+    const hullTexel = (hullX - originTexel * grid.cellSize) / grid.cellSize;
+    const wavelengthTexels = Math.round((2 * Math.PI * speed * speed) / GRAVITY / grid.cellSize);
+    const behind: number[] = [];
+    const lateral: number[] = [];
+    for (let back = 24; back <= 110; back += 2) {
+      const column = Math.round(hullTexel - back);
+      for (const side of [1, -1]) {
+        let best = 0;
+        let bestOffset = 0;
+        for (let offset = 2; offset < 90; offset++) {
+          const row = 128 + side * offset;
+          let envelope = 0;
+          for (let c = column - wavelengthTexels / 2; c <= column + wavelengthTexels / 2; c++) envelope = Math.max(envelope, Math.abs(solver.height[row * n + c]));
+          if (envelope > best) [best, bestOffset] = [envelope, offset];
+        }
+        behind.push((hullTexel - column) * grid.cellSize);
+        lateral.push(bestOffset * grid.cellSize);
+      }
+    }
+    // Least-squares line lateral = a + b·behind: the cusp lines leave from near the hull.
+    const mean = (values: number[]) => values.reduce((sum, v) => sum + v, 0) / values.length;
+    const [mx, my] = [mean(behind), mean(lateral)];
+    let sxy = 0;
+    let sxx = 0;
+    behind.forEach((x, i) => {
+      sxy += (x - mx) * (lateral[i] - my);
+      sxx += (x - mx) * (x - mx);
+    });
+    const halfAngle = (Math.atan(sxy / sxx) * 180) / Math.PI;
+    console.log(`Kelvin wake: half-angle ${halfAngle.toFixed(2)}° (Kelvin: 19.47°), from ${behind.length} cross-sections ${behind[0]}–${behind[behind.length - 1]} m behind`);
+    expect(Math.abs(halfAngle - (Math.asin(1 / 3) * 180) / Math.PI)).toBeLessThan(2);
+  });
+
+  it.each([2, 4, 8, 16])('absorbs at the border: of a %s m wave packet, under 5 percent of the energy comes back', { timeout: 60_000 }, (wavelength) => {
+    // A packet travelling +x, one-sided in k (so it travels one way): Z(k) a Gaussian around
+    // (2π/λ, 0), centred on the grid. Its energy is ρg/2·Σ(η² + ψ²) (potential plus kinetic, by
+    // Parseval, linear theory: Lamb, "Hydrodynamics", §230). Once the packet has gone into the sponge,
+    // whatever is found again inside it came back: reflected, or through the sponge and round the
+    // periodic grid.
+    const grid: LocalWaveGrid = { resolution: 256, cellSize: 0.5, depth: Infinity };
+    const n = grid.resolution;
+    const solver = new CpuLocalWaves(grid);
+    const k0 = (2 * Math.PI) / wavelength;
+    const width = Math.min(2 * wavelength, 12); // the envelope's standard deviation, m (3 of them fit inside)
+    for (let j = 0; j < n; j++) {
+      for (let i = 0; i < n; i++) {
+        const [x, z] = [(i - n / 2) * grid.cellSize, (j - n / 2) * grid.cellSize];
+        const envelope = 0.1 * Math.exp(-(x * x + z * z) / (2 * width * width));
+        solver.height[j * n + i] = envelope * Math.cos(k0 * x);
+        solver.potential[j * n + i] = envelope * Math.sin(k0 * x);
+      }
+    }
+    const sponge = n * SPONGE_WIDTH_FRACTION;
+    const interiorEnergy = () => {
+      let sum = 0;
+      for (let j = sponge; j < n - sponge; j++) for (let i = sponge; i < n - sponge; i++) sum += solver.height[j * n + i] ** 2 + solver.potential[j * n + i] ** 2;
+      return sum;
+    };
+    const initial = interiorEnergy();
+    // The packet's back leaves the interior after (distance to the sponge + 3 widths) / group speed.
+    const group = 0.5 * Math.sqrt(GRAVITY / k0);
+    const gone = ((n / 2 - sponge) * grid.cellSize + 3 * width) / group;
+    const dt = 0.5;
+    let returned = 0;
+    for (let t = 0; t < 2.5 * gone; t += dt) {
+      solver.step({ shiftX: 0, shiftZ: 0, impulses: [], dt });
+      if (t > gone) returned = Math.max(returned, interiorEnergy() / initial);
+    }
+    console.log(`border: ${wavelength} m packet, ${(100 * returned).toFixed(2)} % of its energy back inside`);
+    expect(returned).toBeLessThan(0.05);
+  });
+});
