@@ -22,6 +22,7 @@ export type { WaveLayer, LayerFrame, LayerFieldsOnCpu } from './layers/waveLayer
 export { FftCascade, type FftBackend } from './layers/fftCascade';
 export { FloatingBody, SEA_WATER_DENSITY, type FloatingBodyOptions, type WaterSurface } from './layers/floatingBody';
 export { WhitecapFoam, type FoamSettings } from './layers/whitecapFoam';
+export { LocalWaves, type LocalWavesOptions, type DropOptions, type HullShape, type HullPose, type PressureSource } from './layers/localWaves';
 export { CpuWaveFields } from './fft/cpuWaveFields';
 export { GpuWaveFields, supportedGpuPrecision, type GpuPrecision } from './fft/gpuWaveFields';
 export { BatchedInverseFft2D } from './fft/fft';

@@ -17,6 +17,7 @@ import type { OceanShadingOptions } from './render/oceanMaterial';
 import { SkyBackground } from './render/skyBackground';
 import { SkyEnvironment, sunAnglesFromDirection, type SunAngles, type SunDirection } from './render/skyEnvironment';
 import { OceanSimulation, type SimulationOptions } from './layers/oceanSimulation';
+import type { LocalWaves } from './layers/localWaves';
 import { heightAt, normalAt } from './layers/surfaceQuery';
 import { optionAliases, unknownOption } from './parameters/options';
 import { ParameterError, SIMULATION_OPTIONS, type SimulationParameters } from './parameters/parameters';
@@ -66,6 +67,7 @@ const OCEAN_OPTION_KEYS: readonly string[] = [
   'sunDirection',
   'path',
   'worker',
+  'localWaves',
 ];
 const SUN_POSITION_KEYS: readonly string[] = ['elevation', 'azimuth', 'direction'];
 
@@ -107,7 +109,7 @@ export class Ocean extends Object3D {
     const sim = this.simulation;
     this.surface = new OceanSurface(
       { environment: this.sky.environment, sunDirection: this.sky.skyUniforms.skySunDirection },
-      () => ({ layers: sim.layers, choppiness: sim.parameters.choppiness, foam: sim.foam.texture }),
+      () => ({ layers: sim.surfaceLayers, choppiness: sim.parameters.choppiness, foam: sim.foam.texture }),
       shading,
     );
     this.skyBackground = new SkyBackground(this.sky);
@@ -174,12 +176,24 @@ export class Ocean extends Object3D {
   /** Computes the sea at `timeSeconds` (any finite number; it repeats every repeatPeriod). */
   update(timeSeconds: number): void {
     this.checkAlive('update');
+    const camera = this.surface.lastCameraPosition;
+    this.simulation.localWaves?.cameraMoved(camera.x, camera.z);
     this.simulation.update(timeSeconds);
     this.currentTime = timeSeconds;
   }
 
   get parameters(): Readonly<SimulationParameters> {
     return this.simulation.parameters;
+  }
+
+  /**
+   * The local waves (src/layers/localWaves.ts): drop(x, z) drops a stone, addPressure(hull, pose)
+   * puts a hull on the sea that makes a wake as it moves; null with `localWaves: false`. Their grid
+   * follows the camera unless told to follow something else.
+   */
+  get localWaves(): LocalWaves | null {
+    this.checkAlive('localWaves');
+    return this.simulation.localWaves;
   }
 
   /** Changes simulation parameters; a bad one throws a ParameterError and nothing changes. */
@@ -234,7 +248,7 @@ export class Ocean extends Object3D {
   heightAt(x: number, z: number): number {
     this.checkAlive('heightAt');
     if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError('heightAt(x, z)', `${x}, ${z}`, 'finite coordinates');
-    return heightAt(this.simulation.layers, this.simulation.parameters.choppiness, this.currentTime, x, z);
+    return heightAt(this.simulation.surfaceLayers, this.simulation.parameters.choppiness, this.currentTime, x, z);
   }
 
   /**
@@ -245,7 +259,7 @@ export class Ocean extends Object3D {
   normalAt(x: number, z: number, target = new Vector3()): Vector3 {
     this.checkAlive('normalAt');
     if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError('normalAt(x, z)', `${x}, ${z}`, 'finite coordinates');
-    return normalAt(this.simulation.layers, this.simulation.parameters.choppiness, this.currentTime, x, z, target);
+    return normalAt(this.simulation.surfaceLayers, this.simulation.parameters.choppiness, this.currentTime, x, z, target);
   }
 
   /**

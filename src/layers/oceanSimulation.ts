@@ -6,7 +6,8 @@
  *   parameters ──► src/spectrum (Ψ(k) of the sea state, split into cascade bands, h̃0 per cascade)
  *   time t ──────► layers: FftCascade × patchSizes.length (evolve + FFT on the GPU or in JS)
  *              ──► whitecap foam from their summed Jacobian, with its history (whitecapFoam.ts)
- *              ──► the surface, the queries and the inspector sum `layers` (waveLayer.ts)
+ *   sources ─────► localWaves: stones, hulls (localWaves.ts), stepped by the time since the last update
+ *              ──► the surface and the queries sum `surfaceLayers` (waveLayer.ts)
  *
  * Bad parameters throw a ParameterError and change nothing, so the scene goes on with the last
  * good values. A change of a shader-only parameter (choppiness) rebuilds nothing. Owns the layers
@@ -22,6 +23,7 @@ import {
 } from '../parameters/parameters';
 import { createCascadeSpectra, type InitialSpectrum } from '../spectrum/initialSpectrum';
 import { FftCascade, type FftBackend } from './fftCascade';
+import { LocalWaves, type LocalWavesOptions } from './localWaves';
 import type { WaveLayer } from './waveLayer';
 import { WhitecapFoam } from './whitecapFoam';
 
@@ -34,12 +36,21 @@ export interface SimulationOptions {
   path?: PathPreference;
   /** Run the JS path in a Web Worker so the page stays responsive. @defaultValue true where Worker exists */
   worker?: boolean;
+  /**
+   * Local waves from stones, hulls and floating bodies (localWaves.ts): false for none, or the grid
+   * they are solved on. @defaultValue true (256 texels of 0.5 m)
+   */
+  localWaves?: boolean | LocalWavesOptions;
 }
 
 export class OceanSimulation {
   private currentParameters: SimulationParameters;
   private currentLayers: FftCascade[] = [];
   private currentFoam: WhitecapFoam | null = null;
+  private currentLocalWaves: LocalWaves | null = null;
+  private readonly localWaveOptions: LocalWavesOptions | null;
+  private localWavesTime = NaN;
+  private currentSurfaceLayers: readonly WaveLayer[] = [];
   private currentPath!: SimulationPath;
   private preference: PathPreference;
   private readonly useWorker: boolean;
@@ -53,6 +64,8 @@ export class OceanSimulation {
     this.currentParameters = validateParameters(parameters);
     this.preference = checkPreference(options.path ?? 'auto');
     this.useWorker = options.worker ?? typeof Worker !== 'undefined';
+    const localWaves = options.localWaves ?? true;
+    this.localWaveOptions = localWaves === false ? null : localWaves === true ? {} : localWaves;
     this.rebuild(true);
   }
 
@@ -63,6 +76,19 @@ export class OceanSimulation {
   /** The FFT cascades, finest first: what the surface and the queries sum. */
   get layers(): readonly FftCascade[] {
     return this.currentLayers;
+  }
+
+  /**
+   * Everything the surface draws and the queries sum: the local waves (if any) and the cascades,
+   * the largest last. The same array until the layers change.
+   */
+  get surfaceLayers(): readonly WaveLayer[] {
+    return this.currentSurfaceLayers;
+  }
+
+  /** The local waves (stones, hulls), or null when turned off. */
+  get localWaves(): LocalWaves | null {
+    return this.currentLocalWaves;
   }
 
   /** The whitecap foam over the largest cascade's patch (whitecapFoam.ts). */
@@ -114,6 +140,8 @@ export class OceanSimulation {
     const dt = Number.isNaN(this.lastTime) ? 0 : t - this.lastTime;
     for (const layer of this.currentLayers as readonly WaveLayer[]) layer.update(t, dt);
     this.lastTime = t;
+    this.currentLocalWaves?.update(t, Number.isNaN(this.localWavesTime) ? 0 : t - this.localWavesTime);
+    this.localWavesTime = t;
     const { choppiness, windSpeed, foamAmount, foamPersistence } = this.currentParameters;
     this.currentFoam!.update(t, { choppiness, windSpeed, amount: foamAmount, persistence: foamPersistence });
   }
@@ -123,6 +151,9 @@ export class OceanSimulation {
     this.currentLayers = [];
     this.currentFoam?.dispose();
     this.currentFoam = null;
+    this.currentLocalWaves?.dispose();
+    this.currentLocalWaves = null;
+    this.currentSurfaceLayers = [];
   }
 
   private rebuild(newSpectra: boolean): void {
@@ -141,6 +172,22 @@ export class OceanSimulation {
     this.currentFoam?.dispose();
     this.currentFoam = new WhitecapFoam(this.renderer, this.currentLayers, precision === null ? null : precision === 'float32' ? FloatType : HalfFloatType);
     this.lastTime = NaN;
+    this.rebuildLocalWaves(precision === 'float32');
+  }
+
+  /**
+   * Keeps the local waves (and the waves on them) through a rebuild unless their solver or the
+   * depth changes. Half floats cannot hold their forward FFT: on RGBA16F they are solved in JS.
+   */
+  private rebuildLocalWaves(useGpu: boolean): void {
+    const previous = this.currentLocalWaves;
+    const depth = this.currentParameters.depth;
+    if (this.localWaveOptions && (previous === null || previous.path !== (useGpu ? 'gpu' : 'js') || previous.grid.depth !== depth)) {
+      this.currentLocalWaves = new LocalWaves(this.renderer, depth, useGpu, this.localWaveOptions);
+      previous?.dispose();
+      this.localWavesTime = NaN;
+    }
+    this.currentSurfaceLayers = this.currentLocalWaves ? [this.currentLocalWaves, ...this.currentLayers] : this.currentLayers;
   }
 }
 

@@ -112,7 +112,7 @@ export function createHorizonGridGeometry(cellsPerRing: number): BufferGeometry 
 
 /** A layer as the rings see it: a square of `size` metres with `resolution` texels a side. */
 export interface LayerGrid {
-  readonly frame: { readonly size: number; readonly resolution: number };
+  readonly frame: { readonly size: number; readonly resolution: number; readonly origin: readonly [number, number]; readonly periodic: boolean };
 }
 
 /** Per-ring uniforms for shaders/surface/horizonGrid.glsl and ocean.vert, recomputed each frame. */
@@ -149,11 +149,15 @@ export class RingFrames {
       this.frames[4 * ring + 1] = z;
       this.frames[4 * ring + 2] = cell;
       this.frames[4 * ring + 3] = level + ring;
-      layers.forEach(({ frame: { size, resolution } }, layer) => {
+      layers.forEach(({ frame: { size, resolution, origin, periodic } }, layer) => {
         const at = 2 * (ring * layers.length + layer);
         const halfTexel = 0.5 / resolution;
-        this.uvOrigins[at] = fractional(x / size + halfTexel);
-        this.uvOrigins[at + 1] = fractional(z / size + halfTexel);
+        // A periodic layer repeats: only the fraction matters (and keeps float32 exact far away). A
+        // local one is sampled from its origin and clamped outside (its edge texels are zero).
+        const u = (x - origin[0]) / size + halfTexel;
+        const v = (z - origin[1]) / size + halfTexel;
+        this.uvOrigins[at] = periodic ? fractional(u) : u;
+        this.uvOrigins[at + 1] = periodic ? fractional(v) : v;
       });
     }
     for (let ring = 0; ring < RING_COUNT; ring++) {
@@ -188,7 +192,9 @@ export function farEdgeDistance(cameraHeight: number, layers: readonly LayerGrid
 /** The smallest texel of the layers, m: the rings' finest cells are this times a power of two. */
 export function finestTexel(layers: readonly LayerGrid[]): number {
   let finest = Infinity;
-  for (const { frame } of layers) finest = Math.min(finest, frame.size / frame.resolution);
+  // The periodic layers cover the whole sea and set the grid; a local layer is sampled at the
+  // density they give (its texels are coarser than the finest cascade's by default).
+  for (const { frame } of layers) if (frame.periodic) finest = Math.min(finest, frame.size / frame.resolution);
   return finest;
 }
 

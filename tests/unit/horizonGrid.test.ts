@@ -29,12 +29,17 @@ describe('horizon grid geometry', () => {
   });
 });
 
+/** A periodic layer's frame: only its size and resolution matter to the rings. */
+function periodicFrame(size: number, resolution: number): LayerGrid['frame'] {
+  return { size, resolution, origin: [0, 0], periodic: true };
+}
+
 describe('RingFrames', () => {
   const cells = 64;
   const half = cells / 2;
   // One 250 m layer of 256 texels (the old single patch), and the default three cascades.
-  const single: LayerGrid[] = [{ frame: { size: 250, resolution: 256 } }];
-  const cascades: LayerGrid[] = [457, 13.7, 79.3].map((size) => ({ frame: { size, resolution: 256 } }));
+  const single: LayerGrid[] = [{ frame: periodicFrame(250, 256) }];
+  const cascades: LayerGrid[] = [457, 13.7, 79.3].map((size) => ({ frame: periodicFrame(size, 256) }));
   const random = new SeededRandom(3);
   const cameras = Array.from({ length: 200 }, () => [
     (random.nextUniform() - 0.5) * 2e4,
@@ -109,7 +114,7 @@ describe('RingFrames', () => {
   it('takes its finest cells from the finest layer’s texel, whatever the order of the layers', () => {
     expect(finestTexel(single)).toBe(250 / 256);
     expect(finestTexel(cascades)).toBe(13.7 / 256);
-    expect(finestTexel([{ frame: { size: 100, resolution: 64 } }, { frame: { size: 120, resolution: 1024 } }])).toBe(120 / 1024);
+    expect(finestTexel([{ frame: periodicFrame(100, 64) }, { frame: periodicFrame(120, 1024) }])).toBe(120 / 1024);
     const rings = new RingFrames();
     for (const [x, y, z] of cameras) {
       for (const layers of [single, cascades, [...cascades].reverse()]) {

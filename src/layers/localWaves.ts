@@ -1,0 +1,360 @@
+/**
+ * The local-wave layer: waves that things make on the sea — a stone dropped, a hull under way, a
+ * floating body that moves — solved on a square grid that follows the camera (or whatever
+ * follow() is given) and added to the FFT sea by the surface and the queries (waveLayer.ts). The
+ * model and its proofs are in localWaveModel.ts; the GPU solver in gpuLocalWaves.ts, the JS one in
+ * localWaveModel.ts.
+ *
+ * Sources:
+ *   drop(x, z)            a stone: a dip of the surface, once; the rings spread from it.
+ *   addPressure(hull)     a hull: a pressure patch you move with setPose() (or that moves along a
+ *                         path of time); while it moves it makes waves, a wake when under way.
+ * The grid moves in whole texels towards its target each update; the waves stay where they are in
+ * the world, and what leaves the grid is gone.
+ *
+ * Time: update(t, dt) steps by dt (dt = 0: paused). A jump (dt < 0 or over MAX_STEP) clears the waves: they are the
+ * history of their sources, and a still at time t has none unless its sources ran up to it.
+ * When nothing has made a wave for QUIET_AFTER seconds the layer clears and stops stepping (a
+ * sea without sources costs nothing).
+ */
+import { ClampToEdgeWrapping, DataTexture, FloatType, LinearFilter, NearestFilter, RGBAFormat, type WebGLRenderer } from 'three';
+import { ParameterError } from '../parameters/options';
+import { GpuLocalWaves } from './gpuLocalWaves';
+import { CpuLocalWaves, MAX_IMPULSES_PER_STEP, type HeightImpulse, type LocalWaveGrid } from './localWaveModel';
+import type { LayerFieldsOnCpu, LayerFrame, WaveLayer } from './waveLayer';
+
+/** The longest step taken as a step; a longer dt (a hidden tab, a jump) clears the waves. */
+const MAX_STEP = 2;
+/** Seconds without a source after which the grid is cleared and stepping stops. */
+const QUIET_AFTER = 60;
+/** Sub-steps per update at most, when sources move more than a quarter of their length per update. */
+const MAX_SUBSTEPS = 4;
+
+export interface LocalWavesOptions {
+  /** Texels per side, a power of two. @defaultValue 256 */
+  resolution?: number;
+  /** Side of a texel, m. @defaultValue 0.5 */
+  cellSize?: number;
+}
+
+/** A stone's dip. */
+export interface DropOptions {
+  /** Radius of the dip (the e-folding half width of its Gaussian), m, in [0.1, 20]. @defaultValue 0.6 */
+  radius?: number;
+  /** Depth of the dip, m, in [0, 5]. @defaultValue 0.3 */
+  depth?: number;
+}
+
+/** The pressure patch of a hull: a Gaussian footprint of this length and beam, pressing `draft` metres of water down. */
+export interface HullShape {
+  /** Length over the waterline, m. */
+  length: number;
+  /** Beam, m. */
+  beam: number;
+  /** Draft, m. */
+  draft: number;
+}
+
+/** A hull's place on the sea: (x, z) in metres and heading in radians from +x towards +z. */
+export interface HullPose {
+  x: number;
+  z: number;
+  heading: number;
+}
+
+/** A pressure patch on the local waves (addPressure); move it every frame with setPose(). */
+export interface PressureSource {
+  setPose(x: number, z: number, heading: number): void;
+  /** Takes it off the sea (the water it pressed down springs back). */
+  remove(): void;
+}
+
+type Backend = { kind: 'gpu'; solver: GpuLocalWaves } | { kind: 'js'; solver: CpuLocalWaves; textures: [DataTexture, DataTexture] };
+
+interface Hull {
+  shape: HullShape;
+  pose: HullPose;
+  /**
+   * The pose its pressure is applied at now. A hull put on the sea, or on a cleared sea, is taken
+   * as already floating there in equilibrium: it makes waves only when it moves.
+   */
+  applied: HullPose;
+  removed: boolean;
+}
+
+export class LocalWaves implements WaveLayer {
+  readonly textures;
+  readonly grid: LocalWaveGrid;
+  private readonly backend: Backend;
+  private readonly currentFrame: { size: number; origin: [number, number]; periodic: false; resolution: number };
+  /** The grid's texel (0, 0) in whole texels of the world. */
+  private originTexel: [number, number];
+  private target: [number, number] = [0, 0];
+  private followingCamera = true;
+  private readonly pendingDrops: HeightImpulse[] = [];
+  private readonly hulls: Hull[] = [];
+  private quietFor = Infinity;
+  private cpuFields: { displacement: Float32Array; derivatives: Float32Array } | null = null;
+  private stepCount = 0;
+  private readBackStep = -1;
+
+  constructor(
+    private readonly renderer: WebGLRenderer,
+    depth: number,
+    useGpu: boolean,
+    options: LocalWavesOptions = {},
+  ) {
+    const resolution = options.resolution ?? 256;
+    const cellSize = options.cellSize ?? 0.5;
+    if (!Number.isInteger(resolution) || resolution < 16 || resolution > 1024 || (resolution & (resolution - 1)) !== 0) {
+      throw new ParameterError('localWaves.resolution', resolution, 'a power of two from 16 to 1024');
+    }
+    if (!(cellSize >= 0.05 && cellSize <= 10)) throw new ParameterError('localWaves.cellSize', cellSize, 'metres per texel from 0.05 to 10');
+    this.grid = { resolution, cellSize, depth };
+    if (useGpu) {
+      this.backend = { kind: 'gpu', solver: new GpuLocalWaves(renderer, this.grid) };
+      this.backend.solver.clear();
+      this.textures = { displacement: { value: this.backend.solver.displacement }, derivatives: { value: this.backend.solver.derivatives } };
+    } else {
+      const filterable = renderer.extensions.has('OES_texture_float_linear');
+      const texture = () => {
+        const t = new DataTexture(new Float32Array(4 * resolution * resolution), resolution, resolution, RGBAFormat, FloatType);
+        t.wrapS = t.wrapT = ClampToEdgeWrapping;
+        t.minFilter = t.magFilter = filterable ? LinearFilter : NearestFilter;
+        t.needsUpdate = true;
+        return t;
+      };
+      const textures: [DataTexture, DataTexture] = [texture(), texture()];
+      this.backend = { kind: 'js', solver: new CpuLocalWaves(this.grid), textures };
+      this.textures = { displacement: { value: textures[0] }, derivatives: { value: textures[1] } };
+    }
+    this.originTexel = this.originFor(this.target);
+    this.currentFrame = { size: resolution * cellSize, origin: [0, 0], periodic: false, resolution };
+    this.updateFrameOrigin();
+  }
+
+  get frame(): LayerFrame {
+    return this.currentFrame;
+  }
+
+  /** 'gpu' or 'js': where the waves are solved. */
+  get path(): 'gpu' | 'js' {
+    return this.backend.kind;
+  }
+
+  /** True while the layer steps (a source made waves in the last QUIET_AFTER seconds). */
+  get active(): boolean {
+    return this.quietFor < QUIET_AFTER;
+  }
+
+  /**
+   * Centres the grid on the world point (x, z) from the next update on (in whole texels), and stops
+   * it following the camera; follow(null) makes it follow the camera again (the default).
+   */
+  follow(x: number | null, z?: number): void {
+    if (x === null) {
+      this.followingCamera = true;
+      return;
+    }
+    if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError('follow(x, z)', `${x}, ${z}`, 'finite coordinates in metres, or null for the camera');
+    this.target = [x, z as number];
+    this.followingCamera = false;
+  }
+
+  /** Where the camera is, for a grid that follows it (Ocean calls this before each update). */
+  cameraMoved(x: number, z: number): void {
+    if (this.followingCamera) this.target = [x, z];
+  }
+
+  /**
+   * Drops a stone at the world point (x, z): rings spread from the next update on. A drop outside the
+   * grid is ignored (returns false).
+   */
+  drop(x: number, z: number, options: DropOptions = {}): boolean {
+    if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError('drop(x, z)', `${x}, ${z}`, 'finite coordinates in metres');
+    const radius = options.radius ?? 0.6;
+    const depth = options.depth ?? 0.3;
+    if (!(radius >= 0.1 && radius <= 20)) throw new ParameterError('drop radius', radius, 'metres from 0.1 to 20');
+    if (!(depth >= 0 && depth <= 5)) throw new ParameterError('drop depth', depth, 'metres from 0 to 5');
+    const [u, v] = this.toGrid(x, z);
+    const size = this.currentFrame.size;
+    if (u < 0 || v < 0 || u > size || v > size) return false;
+    this.pendingDrops.push({ x: u, z: v, cos: 1, sin: 0, halfLength: radius, halfBeam: radius, height: -depth });
+    this.quietFor = 0;
+    return true;
+  }
+
+  /** Puts a hull's pressure patch on the sea at `pose`; move it with setPose() as the hull moves. */
+  addPressure(shape: HullShape, pose: HullPose): PressureSource {
+    for (const key of ['length', 'beam', 'draft'] as const) {
+      const value = shape[key];
+      const [low, high] = key === 'draft' ? [0, 20] : [0.2, 400];
+      if (!(value >= low && value <= high)) throw new ParameterError(`hull ${key}`, value, `metres from ${low} to ${high}`);
+    }
+    const hull: Hull = { shape: { ...shape }, pose: checkPose(pose), applied: checkPose(pose), removed: false };
+    hull.pose = hull.applied;
+    this.hulls.push(hull);
+    return {
+      setPose: (x, z, heading) => {
+        hull.pose = checkPose({ x, z, heading });
+      },
+      remove: () => {
+        hull.removed = true;
+      },
+    };
+  }
+
+  update(_t: number, dt: number): void {
+    if (dt === 0) return; // paused, or the first update
+    if (!(dt > 0 && dt <= MAX_STEP)) {
+      this.clear();
+      return;
+    }
+    const moving = this.hulls.some((hull) => hull.removed || !samePose(hull.applied, hull.pose));
+    if (moving || this.pendingDrops.length > 0) this.quietFor = 0;
+    else this.quietFor += dt;
+    if (!this.active) {
+      // Nothing to solve: the grid just follows its target (its fields are zero).
+      if (this.quietFor - dt < QUIET_AFTER) this.clear();
+      this.originTexel = this.originFor(this.target);
+      this.updateFrameOrigin();
+      return;
+    }
+    const substeps = this.substepsFor();
+    const starts = this.hulls.map((hull) => hull.applied);
+    const targetOrigin = this.originFor(this.target);
+    for (let s = 1; s <= substeps; s++) {
+      const fraction = s / substeps;
+      const origin: [number, number] = s === substeps ? targetOrigin : this.originTexel; // the grid moves once, in the last sub-step
+      const shift = [origin[0] - this.originTexel[0], origin[1] - this.originTexel[1]];
+      this.originTexel = origin;
+      const impulses: HeightImpulse[] = s === 1 ? this.pendingDrops.splice(0) : [];
+      this.hulls.forEach((hull, h) => {
+        if (hull.removed) {
+          if (s === 1) impulses.push(this.hullImpulse(hull.shape, hull.applied, -1));
+          return;
+        }
+        const pose = interpolatePose(starts[h], hull.pose, fraction);
+        if (samePose(pose, hull.applied)) return;
+        impulses.push(this.hullImpulse(hull.shape, hull.applied, -1), this.hullImpulse(hull.shape, pose, 1));
+        hull.applied = pose;
+      });
+      for (let first = 0; first === 0 || first < impulses.length; first += MAX_IMPULSES_PER_STEP) {
+        const step = { shiftX: first === 0 ? shift[0] : 0, shiftZ: first === 0 ? shift[1] : 0, impulses: impulses.slice(first, first + MAX_IMPULSES_PER_STEP), dt: first === 0 ? dt / substeps : 0 };
+        this.backend.solver.step(step);
+      }
+    }
+    this.hulls.splice(0, this.hulls.length, ...this.hulls.filter((hull) => !hull.removed));
+    this.updateFrameOrigin();
+    this.stepCount++;
+    this.publish();
+  }
+
+  /**
+   * The fields the surface shows now (the last update's; `t` is not used: local waves are a
+   * history, not a function of time). On the GPU path they are read back once per update asked.
+   */
+  fieldsOnCpu(_t: number): LayerFieldsOnCpu {
+    const n = this.grid.resolution;
+    if (this.backend.kind === 'js') {
+      const [displacement, derivatives] = this.backend.textures;
+      return { displacement: displacement.image.data as Float32Array, derivatives: derivatives.image.data as Float32Array };
+    }
+    this.cpuFields ??= { displacement: new Float32Array(4 * n * n), derivatives: new Float32Array(4 * n * n) };
+    if (this.readBackStep !== this.stepCount) {
+      this.readBackStep = this.stepCount;
+      const state = new Float32Array(4 * n * n);
+      if (this.active) this.renderer.readRenderTargetPixels(this.backend.solver.state, 0, 0, n, n, state);
+      toLayerFields(this.cpuFields, (texel) => [state[4 * texel], state[4 * texel + 2], state[4 * texel + 3]]);
+    }
+    return this.cpuFields;
+  }
+
+  dispose(): void {
+    if (this.backend.kind === 'gpu') this.backend.solver.dispose();
+    else for (const texture of this.backend.textures) texture.dispose();
+  }
+
+  /** Clears every wave (the hulls stay, pressing from their next step on). */
+  clear(): void {
+    this.pendingDrops.length = 0;
+    for (const hull of this.hulls) hull.applied = hull.pose;
+    if (this.backend.kind === 'gpu') this.backend.solver.clear();
+    else this.backend.solver.clear();
+    this.stepCount++;
+    this.publish();
+  }
+
+  private publish(): void {
+    if (this.backend.kind === 'gpu') {
+      if (this.active) this.backend.solver.unpack();
+      return;
+    }
+    const { solver, textures } = this.backend;
+    const fields = { displacement: textures[0].image.data as Float32Array, derivatives: textures[1].image.data as Float32Array };
+    toLayerFields(fields, (texel) => [solver.height[texel], solver.slopeX[texel], solver.slopeZ[texel]]);
+    for (const texture of textures) texture.needsUpdate = true;
+  }
+
+  /** Sub-steps for this update: enough that no hull moves more than a quarter of its length in one. */
+  private substepsFor(): number {
+    let substeps = 1;
+    for (const hull of this.hulls) {
+      if (hull.removed) continue;
+      const move = Math.hypot(hull.pose.x - hull.applied.x, hull.pose.z - hull.applied.z);
+      substeps = Math.max(substeps, Math.ceil(move / (0.25 * Math.min(hull.shape.length, hull.shape.beam * 2))));
+    }
+    return Math.min(substeps, MAX_SUBSTEPS);
+  }
+
+  private hullImpulse(shape: HullShape, pose: HullPose, sign: 1 | -1): HeightImpulse {
+    const [x, z] = this.toGrid(pose.x, pose.z);
+    return { x, z, cos: Math.cos(pose.heading), sin: Math.sin(pose.heading), halfLength: shape.length / 2, halfBeam: shape.beam / 2, height: sign * shape.draft };
+  }
+
+  /** World (x, z) in metres from the grid's texel (0, 0). */
+  private toGrid(x: number, z: number): [number, number] {
+    return [x - this.originTexel[0] * this.grid.cellSize, z - this.originTexel[1] * this.grid.cellSize];
+  }
+
+  private originFor([x, z]: [number, number]): [number, number] {
+    const half = this.grid.resolution / 2;
+    return [Math.round(x / this.grid.cellSize) - half, Math.round(z / this.grid.cellSize) - half];
+  }
+
+  private updateFrameOrigin(): void {
+    this.currentFrame.origin[0] = this.originTexel[0] * this.grid.cellSize;
+    this.currentFrame.origin[1] = this.originTexel[1] * this.grid.cellSize;
+  }
+}
+
+/** Writes the layer layout (0, h, 0, 0), (∂h/∂x, ∂h/∂z, 0, 0) from `fieldsAt(texel)` = [h, ∂h/∂x, ∂h/∂z]. */
+function toLayerFields(
+  fields: { displacement: Float32Array; derivatives: Float32Array },
+  fieldsAt: (texel: number) => [number, number, number],
+): void {
+  const texels = fields.displacement.length / 4;
+  for (let texel = 0; texel < texels; texel++) {
+    const [height, slopeX, slopeZ] = fieldsAt(texel);
+    fields.displacement[4 * texel + 1] = height;
+    fields.derivatives[4 * texel] = slopeX;
+    fields.derivatives[4 * texel + 1] = slopeZ;
+  }
+}
+
+function checkPose(pose: HullPose): HullPose {
+  if (!Number.isFinite(pose.x) || !Number.isFinite(pose.z) || !Number.isFinite(pose.heading)) {
+    throw new ParameterError('hull pose', `${pose.x}, ${pose.z}, ${pose.heading}`, 'finite x, z (m) and heading (radians)');
+  }
+  return { x: pose.x, z: pose.z, heading: pose.heading };
+}
+
+function samePose(a: HullPose, b: HullPose): boolean {
+  return a.x === b.x && a.z === b.z && a.heading === b.heading;
+}
+
+function interpolatePose(from: HullPose, to: HullPose, fraction: number): HullPose {
+  // The shorter way round for the heading.
+  const turn = Math.atan2(Math.sin(to.heading - from.heading), Math.cos(to.heading - from.heading));
+  return { x: from.x + (to.x - from.x) * fraction, z: from.z + (to.z - from.z) * fraction, heading: from.heading + turn * fraction };
+}
