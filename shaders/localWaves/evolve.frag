@@ -2,6 +2,7 @@
 // e^{−iωΔt} (the exact solution of ∂Z/∂t = −iωZ), with the 1/N² of the inverse transform, and the
 // slopes' spectrum i·(kx + i·kz)·Ĥ is formed from Ĥ = (Z(k) + Z*(−k))/2, the spectrum of η_s.
 #include "common/complex.glsl"
+#include "common/preciseSinCos.glsl"
 
 uniform highp sampler2D tSpectrum;  // .xy: Z(k) = FFT(η_s + iψ), bin (i, j) for k = (i, j)·2π/size
 uniform float dt;
@@ -21,8 +22,8 @@ vec2 evolved(ivec2 bin, int n) {
   vec2 k = signedIndex(bin, n) * (6.283185307179586 / gridSize);
   float wavenumber = length(k);
   float omega = sqrt(gravity * wavenumber * tanh(min(wavenumber * depth, 20.0)));
-  float phase = omega * dt;
-  return complexMultiply(texelFetch(tSpectrum, bin, 0).xy, vec2(cos(phase), -sin(phase))) / float(n * n);
+  vec2 turn = preciseCosSin(omega * dt);
+  return complexMultiply(texelFetch(tSpectrum, bin, 0).xy, vec2(turn.x, -turn.y)) / float(n * n);
 }
 
 void main() {

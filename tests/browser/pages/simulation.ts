@@ -6,6 +6,7 @@
 import { WebGLRenderer, type DataTexture, type WebGLRenderTarget } from 'three';
 import { CpuWaveFields } from '../../../src/fft/cpuWaveFields';
 import { GpuWaveFields, supportedGpuPrecision, type GpuPrecision } from '../../../src/fft/gpuWaveFields';
+import { LocalWaves } from '../../../src/layers/localWaves';
 import { OceanSimulation } from '../../../src/layers/oceanSimulation';
 import { validateParameters, type SimulationParameters } from '../../../src/parameters/parameters';
 import { createCascadeSpectra } from '../../../src/spectrum/initialSpectrum';
@@ -234,6 +235,41 @@ const harness = {
     const windSpeed = same(before);
     simulation.dispose();
     return { choppiness, windSpeed, choppinessApplied };
+  },
+
+  /**
+   * The local waves on the GPU against the JS solver, through the same history: a stone, a hull
+   * under way and turning, and a grid that follows it (so it shifts). After each update: the
+   * largest difference of height and slopes, relative to the largest height then.
+   */
+  compareLocalWavesGpuWithJs(updates: number): { maxHeight: number; heightError: number; slopeError: number }[] {
+    const options = { resolution: 128, cellSize: 0.5 };
+    const paths = [new LocalWaves(renderer, 30, true, options), new LocalWaves(renderer, 30, false, options)];
+    const hull = { length: 6, beam: 2, draft: 0.5 };
+    const hulls = paths.map((waves) => waves.addPressure(hull, { x: 0, z: 0, heading: 0 }));
+    for (const waves of paths) waves.drop(-10, 6, { radius: 1, depth: 0.5 });
+    const results = [];
+    for (let u = 1; u <= updates; u++) {
+      const t = u / 10;
+      const pose = { x: 4 * t, z: 0.5 * t * t, heading: Math.atan2(t, 4) };
+      paths.forEach((waves, i) => {
+        hulls[i].setPose(pose.x, pose.z, pose.heading);
+        waves.follow(pose.x, pose.z);
+        waves.update(t, 0.1);
+      });
+      const [gpu, js] = paths.map((waves) => waves.fieldsOnCpu(t));
+      let maxHeight = 0;
+      let heightError = 0;
+      let slopeError = 0;
+      for (let texel = 0; texel < js.displacement.length / 4; texel++) {
+        maxHeight = Math.max(maxHeight, Math.abs(js.displacement[4 * texel + 1]));
+        heightError = Math.max(heightError, Math.abs(gpu.displacement[4 * texel + 1] - js.displacement[4 * texel + 1]) || (Number.isNaN(gpu.displacement[4 * texel + 1]) ? Infinity : 0));
+        for (const c of [0, 1]) slopeError = Math.max(slopeError, Math.abs(gpu.derivatives[4 * texel + c] - js.derivatives[4 * texel + c]));
+      }
+      results.push({ maxHeight, heightError: heightError / maxHeight, slopeError: slopeError / maxHeight });
+    }
+    for (const waves of paths) waves.dispose();
+    return results;
   },
 
   memoryAfterCycles(cycles: number): { before: object; during: number; after: object } {
