@@ -9,12 +9,14 @@
  * <fft-ocean>), so the sea moves at its real speed however slow the frames; a hidden tab or a
  * stall longer than a second does not make it jump; paused keeps t fixed.
  */
-import { Scene } from 'three';
+import { Plane, Raycaster, Scene, Vector2, Vector3 } from 'three';
 import { SimulationClock } from '../timing/simulationClock';
+import { Boat } from './boat';
 import { Buoys } from './buoys';
 import { createAppCamera, createAppOcean, createAppRenderer, loadAppSkybox, prepareAppFrame } from './appView';
 import { CONTROLS_HELP, FlyControls } from './flyControls';
 import { Inspector } from './inspector';
+import { SunLight } from './sunLight';
 import { Panel } from './panel';
 import { describeSeaState, PATH_LABELS, StatusOverlay, TimingAverager } from './statusOverlay';
 import { parseState, roundTime, serializeState, type AppState } from './urlState';
@@ -33,12 +35,24 @@ container.appendChild(renderer.domElement);
 const scene = new Scene();
 const camera = createAppCamera();
 const ocean = createAppOcean(renderer, state);
-scene.add(ocean);
+const sunLight = new SunLight(ocean);
+scene.add(ocean, sunLight);
 // A face set that fails to load (404, CORS, not an image) leaves the generated sky in use.
 loadAppSkybox(ocean, state.skybox)?.catch((error: Error) => overlay.warn('skybox', `skybox: ${error.message}`));
 
 const [x, y, z, yaw, pitch] = state.cam;
+/** The stone a click drops: a dip 1.2 m wide and 0.8 m deep (localWaves.ts). */
+const STONE = { radius: 1.2, depth: 0.8 };
 const controls = new FlyControls(camera, renderer.domElement, { position: [x, y, z], yaw, pitch });
+// A click on the sea drops a stone there (where the ray through the pixel meets the mean sea level).
+controls.onClick = (clientX, clientY) => {
+  const bounds = renderer.domElement.getBoundingClientRect();
+  const pointer = new Vector2(((clientX - bounds.left) / bounds.width) * 2 - 1, 1 - ((clientY - bounds.top) / bounds.height) * 2);
+  const ray = new Raycaster();
+  ray.setFromCamera(pointer, camera);
+  const hit = ray.ray.intersectPlane(new Plane(new Vector3(0, 1, 0), 0), new Vector3());
+  if (hit) ocean.localWaves?.drop(hit.x, hit.z, STONE);
+};
 if (state.paused) state.t = roundTime(state.t);
 
 let inspector: Inspector | null = null;
@@ -53,6 +67,20 @@ function showInspector(show: boolean): void {
     inspector = null;
   }
   fitPanel();
+}
+
+let boat: Boat | null = null;
+/** Puts the boat on its course ahead of the camera, or takes it away. */
+function showBoat(show: boolean): void {
+  if (show && !boat) {
+    boat = new Boat(ocean, camera);
+    scene.add(boat);
+  }
+  if (!show && boat) {
+    boat.removeFromParent();
+    boat.dispose();
+    boat = null;
+  }
 }
 
 let buoys: Buoys | null = null;
@@ -118,6 +146,7 @@ function apply(changes: Partial<AppState>): void {
   if (changes.wireframe !== undefined) ocean.surface.material.wireframe = changes.wireframe;
   if (changes.inspector !== undefined) showInspector(changes.inspector);
   if (changes.buoys !== undefined) showBuoys(changes.buoys);
+  if (changes.boat !== undefined) showBoat(changes.boat);
   if (changes.paused) changes.t = roundTime(state.t); // a paused t is exactly what the URL holds
   hintCaustics(changes.mode ?? state.mode, changes.sunElevation ?? state.sunElevation);
 }
@@ -174,6 +203,7 @@ function fitPanel(): void {
 
 showInspector(state.inspector);
 showBuoys(state.buoys);
+showBoat(state.boat);
 
 // --- size and frames -------------------------------------------------------------------------
 
@@ -211,8 +241,11 @@ renderer.setAnimationLoop((now: number) => {
   controls.update(clock.realStep);
 
   const start = performance.now();
+  boat?.update(state.t); // before the sea steps, so that its wake goes with it
   prepareAppFrame(ocean, camera, state.t); // the sea at t, the eye above the crest, the far plane
   buoys?.update(state.t);
+  boat?.float();
+  sunLight.update();
   const simulated = performance.now();
   renderer.render(scene, camera);
   inspector?.render(renderer);
@@ -251,6 +284,9 @@ const oceanApp = {
   },
   get buoys(): Buoys | null {
     return buoys;
+  },
+  get boat(): Boat | null {
+    return boat;
   },
   /** Sets state values as the panel would (warnings included); false if the ocean rejected them. */
   set(changes: Partial<AppState>): boolean {

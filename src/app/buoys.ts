@@ -1,12 +1,14 @@
 /**
  * A few buoys dropped on the sea ahead of the camera (the panel's "buoys" toggle): each a
  * FloatingBody (src/layers/floatingBody.ts) over ocean.heightAt, drawn as a flat red float with a
- * yellow mast, lit by their own sun (from the ocean's sky) and sky light (the sea's shader does
- * not use lights). Their motion is integrated frame to frame; after a jump in time (a seek, a
- * reload of t) they are put back at rest on the water. dispose() frees their geometry and materials.
+ * yellow mast (lit by the app's SunLight). Their motion is integrated frame to frame; after a jump
+ * in time (a seek, a reload of t) they are put back at rest on the water. As they move they press
+ * on the local waves (src/layers/localWaves.ts) with their footprint, as deep as they float, and
+ * make waves. dispose() frees their geometry and materials and takes them off the water.
  */
-import { BoxGeometry, DirectionalLight, Group, HemisphereLight, Mesh, MeshStandardMaterial, type Camera, Vector3 } from 'three';
+import { BoxGeometry, Group, Mesh, MeshStandardMaterial, type Camera, Vector3 } from 'three';
 import { FloatingBody } from '../layers/floatingBody';
+import type { PressureSource } from '../layers/localWaves';
 import type { Ocean } from '../ocean';
 
 /**
@@ -34,12 +36,12 @@ export class Buoys extends Group {
   private readonly floatMaterial = new MeshStandardMaterial({ color: 0xd8281c, roughness: 0.6 });
   private readonly mastMaterial = new MeshStandardMaterial({ color: 0xf2c81a, roughness: 0.5 });
   private lastTime: number | null = null;
-  private readonly sun = new DirectionalLight(0xfff2dd, 2.5);
+  private readonly pressures: PressureSource[] = [];
+  private readonly axis = new Vector3();
 
   constructor(private readonly ocean: Ocean) {
     super();
     this.name = 'buoys';
-    this.add(this.sun, new HemisphereLight(0xc4daf0, 0x2a4a62, 2));
     for (let i = 0; i < LAYOUT.length; i++) {
       const buoy = new Mesh(this.floatGeometry, this.floatMaterial);
       const mast = new Mesh(this.mastGeometry, this.mastMaterial);
@@ -62,6 +64,12 @@ export class Buoys extends Group {
     });
     this.lastTime = null;
     this.sync();
+    for (const pressure of this.pressures.splice(0)) pressure.remove();
+    for (const body of this.bodies) {
+      const pose = { x: body.position.x, z: body.position.z, heading: 0 };
+      const pressure = this.ocean.localWaves?.addPressure({ length: FLOAT_SIZE[0], beam: FLOAT_SIZE[2], draft: body.restingDraft }, pose);
+      if (pressure) this.pressures.push(pressure);
+    }
   }
 
   /** Moves the buoys to time t (s) of the ocean (call after ocean.update(t)). */
@@ -71,6 +79,13 @@ export class Buoys extends Group {
     if (dt > 0 && dt <= MAX_STEP) for (const body of this.bodies) body.step(dt, this.ocean);
     else if (dt !== 0) for (const body of this.bodies) this.settle(body);
     this.sync();
+    this.pressures.forEach((pressure, i) => {
+      const { position } = this.bodies[i];
+      const below = this.ocean.heightAt(position.x, position.z) - (position.y - FLOAT_SIZE[1] / 2);
+      // Heading: where the float's +x axis points, from +x towards +z.
+      const axis = this.axis.set(1, 0, 0).applyQuaternion(this.bodies[i].orientation);
+      pressure.setPose(position.x, position.z, Math.atan2(axis.z, axis.x), Math.min(Math.max(below, 0), FLOAT_SIZE[1]));
+    });
   }
 
   private settle(body: FloatingBody): void {
@@ -81,7 +96,6 @@ export class Buoys extends Group {
   }
 
   private sync(): void {
-    this.sun.position.copy(this.ocean.sky.sunDirection).multiplyScalar(100);
     this.floats.forEach((buoy, i) => {
       buoy.position.copy(this.bodies[i].position);
       buoy.quaternion.copy(this.bodies[i].orientation);
@@ -89,6 +103,7 @@ export class Buoys extends Group {
   }
 
   dispose(): void {
+    for (const pressure of this.pressures.splice(0)) pressure.remove();
     this.floatGeometry.dispose();
     this.mastGeometry.dispose();
     this.floatMaterial.dispose();

@@ -13,9 +13,10 @@
  *   Space / E           up          Shift / Q   down
  *   hold F              fast (FAST_FACTOR × speed)
  *   mouse wheel         speed (clamped to [MIN_SPEED, MAX_SPEED])
- *   click the canvas    pointer lock (Esc releases, the browser's default); while locked the
- *                       mouse turns the view. Dragging with a button held also turns (for when
- *                       pointer lock is unavailable, e.g. headless browsers).
+ *   drag                turns the view (a button held)
+ *   L                   pointer lock (Esc releases, the browser's default); while locked the
+ *                       mouse turns the view
+ *   click, tap          onClick(x, y) (the app drops a stone there), without moving
  *   touch               one-finger drag turns, two-finger drag moves (up = forward, sideways =
  *                       strafe).
  *
@@ -186,7 +187,7 @@ export function bindingFor(code: string): keyof MoveInput | undefined {
 
 /** The on-screen help for these controls. */
 export const CONTROLS_HELP =
-  'Look: click (Esc frees the mouse) or drag · Move: W A S D · up: Space/E · down: Shift/Q · hold F: fast · wheel: speed';
+  'Look: drag, or L to lock the mouse (Esc frees it) · Move: W A S D · up: Space/E · down: Shift/Q · hold F: fast · wheel: speed · Click the sea: drop a stone';
 
 const TEXT_INPUT_TYPES = new Set(['text', 'number', 'search', 'email', 'url', 'password', 'tel']);
 
@@ -220,9 +221,11 @@ export class FlyControls {
   readonly input: MoveInput = { ...NO_INPUT };
   /** Called whenever the pose changes (position, yaw or pitch). */
   onChange: (() => void) | null = null;
+  /** Called for a click or a tap that did not turn or move the view, at its client coordinates. */
+  onClick: ((clientX: number, clientY: number) => void) | null = null;
 
   private dragging: { pointerId: number; x: number; y: number; moved: number } | null = null;
-  private readonly touches = new Map<number, { x: number; y: number }>();
+  private readonly touches = new Map<number, { x: number; y: number; moved: number }>();
   private readonly cleanup: (() => void)[] = [];
 
   constructor(
@@ -310,6 +313,7 @@ export class FlyControls {
     element.style.touchAction = 'none'; // touch drags turn and move instead of scrolling or zooming
 
     this.on(window, 'keydown', (event) => {
+      if (event.code === 'KeyL' && !isTextInput(event.target) && !this.locked) this.requestLock();
       const binding = bindingFor(event.code);
       if (!binding || isTextInput(event.target) || event.ctrlKey || event.metaKey || event.altKey) return;
       this.input[binding] = true;
@@ -324,7 +328,7 @@ export class FlyControls {
 
     this.on(element, 'pointerdown', (event) => {
       if (event.pointerType === 'touch') {
-        this.touches.set(event.pointerId, { x: event.clientX, y: event.clientY });
+        this.touches.set(event.pointerId, { x: event.clientX, y: event.clientY, moved: 0 });
         capturePointer(element, event.pointerId);
         return;
       }
@@ -350,14 +354,17 @@ export class FlyControls {
     });
     const endPointer = (event: PointerEvent) => {
       if (event.pointerType === 'touch') {
+        const touch = this.touches.get(event.pointerId);
+        const tap = touch !== undefined && touch.moved < 8 && this.touches.size === 1;
         this.touches.delete(event.pointerId);
+        if (tap && event.type === 'pointerup') this.onClick?.(event.clientX, event.clientY);
         return;
       }
       const drag = this.dragging;
       if (!drag || drag.pointerId !== event.pointerId) return;
       this.dragging = null;
-      // A click (no drag) asks for pointer lock; a drag does not, so releasing a drag never locks.
-      if (event.type === 'pointerup' && drag.moved < 4 && !this.locked) this.requestLock();
+      // A click is a press and release that did not turn the view (a drag).
+      if (event.type === 'pointerup' && drag.moved < 4) this.onClick?.(event.clientX, event.clientY);
     };
     this.on(element, 'pointerup', endPointer);
     this.on(element, 'pointercancel', endPointer);
@@ -390,7 +397,7 @@ export class FlyControls {
     if (!previous) return;
     const dx = event.clientX - previous.x;
     const dy = event.clientY - previous.y;
-    this.touches.set(event.pointerId, { x: event.clientX, y: event.clientY });
+    this.touches.set(event.pointerId, { x: event.clientX, y: event.clientY, moved: previous.moved + Math.abs(dx) + Math.abs(dy) });
     if (this.touches.size === 1) {
       this.turnBy(dx, dy, TOUCH_DEGREES_PER_PIXEL);
     } else if (this.touches.size === 2) {

@@ -132,6 +132,7 @@ export class Panel {
     this.bind(time.add(state, 't').name('time t (s)').step(0.001).decimals(2).listen(), 't');
     this.bind(time.add(state, 'inspector').name('inspector tiles'), 'inspector');
     this.bind(time.add(state, 'buoys').name('buoys'), 'buoys');
+    this.bind(time.add(state, 'boat').name('boat (wake)'), 'boat');
     this.register('copyLink', time.add({ copyLink: () => actions.copyLink() }, 'copyLink').name('copy link'));
 
     this.syncDepthControls();

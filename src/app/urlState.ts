@@ -14,7 +14,7 @@
  *                                                               causticColour and scatterColour, the
  *                                                               British spellings, are read too
  *   mode       shading mode (full, fresnel, reflection, refraction, caustics, height)
- *   wireframe  1/0        inspector  1/0        path  auto/gpu/js        buoys  1/0
+ *   wireframe  1/0        inspector  1/0        path  auto/gpu/js        buoys  1/0   boat  1/0
  *   timeScale  ≥ 0        paused     1/0        t     simulation time in seconds
  *   cam        x,y,z,yawDeg,pitchDeg (metres, degrees; see flyControls.ts)
  *   skybox     "generated" (the analytic sky), or the folder URL of six faces px.png … nz.png
@@ -59,6 +59,8 @@ export interface AppState extends SimulationParameters {
   inspector: boolean;
   /** A few floating buoys ahead of the camera (buoys.ts). */
   buoys: boolean;
+  /** A boat going round a circle ahead of the camera, leaving a wake (boat.ts). */
+  boat: boolean;
   path: PathPreference;
   timeScale: number;
   paused: boolean;
@@ -83,6 +85,7 @@ export const DEFAULT_STATE: Readonly<AppState> = Object.freeze({
   wireframe: false,
   inspector: false,
   buoys: false,
+  boat: false,
   path: 'auto' as PathPreference,
   timeScale: 1,
   paused: false,
@@ -138,6 +141,7 @@ export const URL_KEYS: readonly (keyof AppState)[] = [
   'wireframe',
   'inspector',
   'buoys',
+  'boat',
   'path',
   'timeScale',
   'paused',
@@ -261,6 +265,7 @@ export function parseValue<K extends keyof AppState>(key: K, text: string): { va
     case 'wireframe':
     case 'inspector':
     case 'buoys':
+    case 'boat':
     case 'paused': {
       const v = parseFlag(text);
       return v === null ? bad('1 or 0') : ok(v);

@@ -28,20 +28,26 @@ const MAX_STEP = 2;
 /** Seconds without a source after which the grid is cleared and stepping stops. */
 const QUIET_AFTER = 60;
 /** Sub-steps per update at most, when sources move more than a quarter of their length per update. */
-const MAX_SUBSTEPS = 4;
+const MAX_SUBSTEPS = 2;
 
 export interface LocalWavesOptions {
-  /** Texels per side, a power of two. @defaultValue 256 */
+  /** Texels per side, a power of two from 16 to 1024. @defaultValue 128 */
   resolution?: number;
-  /** Side of a texel, m. @defaultValue 0.5 */
+  /** Side of a texel, m, from 0.05 to 10. @defaultValue 1 */
   cellSize?: number;
+  /**
+   * Where they are solved: 'gpu' (needs float32 render targets), 'js', or 'auto': the GPU unless
+   * it renders in software (SwiftShader, llvmpipe), where the JS solver is several times faster.
+   * @defaultValue 'auto'
+   */
+  path?: 'auto' | 'gpu' | 'js';
 }
 
 /** A stone's dip. */
 export interface DropOptions {
-  /** Radius of the dip (the e-folding half width of its Gaussian), m, in [0.1, 20]. @defaultValue 0.6 */
+  /** Radius of the dip (the e-folding half width of its Gaussian), m, in [0.1, 20]. @defaultValue 1 */
   radius?: number;
-  /** Depth of the dip, m, in [0, 5]. @defaultValue 0.3 */
+  /** Depth of the dip, m, in [0, 5]. @defaultValue 0.5 */
   depth?: number;
 }
 
@@ -64,21 +70,27 @@ export interface HullPose {
 
 /** A pressure patch on the local waves (addPressure); move it every frame with setPose(). */
 export interface PressureSource {
-  setPose(x: number, z: number, heading: number): void;
+  /** Moves the hull; `draft` (m) changes how deep it presses, for a body that heaves. */
+  setPose(x: number, z: number, heading: number, draft?: number): void;
   /** Takes it off the sea (the water it pressed down springs back). */
   remove(): void;
 }
 
 type Backend = { kind: 'gpu'; solver: GpuLocalWaves } | { kind: 'js'; solver: CpuLocalWaves; textures: [DataTexture, DataTexture] };
 
+/** A hull's pose and how deep it presses now (m). */
+interface PressedPose extends HullPose {
+  draft: number;
+}
+
 interface Hull {
-  shape: HullShape;
-  pose: HullPose;
+  shape: { length: number; beam: number };
+  pose: PressedPose;
   /**
    * The pose its pressure is applied at now. A hull put on the sea, or on a cleared sea, is taken
    * as already floating there in equilibrium: it makes waves only when it moves.
    */
-  applied: HullPose;
+  applied: PressedPose;
   removed: boolean;
 }
 
@@ -104,8 +116,8 @@ export class LocalWaves implements WaveLayer {
     useGpu: boolean,
     options: LocalWavesOptions = {},
   ) {
-    const resolution = options.resolution ?? 256;
-    const cellSize = options.cellSize ?? 0.5;
+    const resolution = options.resolution ?? 128;
+    const cellSize = options.cellSize ?? 1;
     if (!Number.isInteger(resolution) || resolution < 16 || resolution > 1024 || (resolution & (resolution - 1)) !== 0) {
       throw new ParameterError('localWaves.resolution', resolution, 'a power of two from 16 to 1024');
     }
@@ -172,8 +184,8 @@ export class LocalWaves implements WaveLayer {
    */
   drop(x: number, z: number, options: DropOptions = {}): boolean {
     if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError('drop(x, z)', `${x}, ${z}`, 'finite coordinates in metres');
-    const radius = options.radius ?? 0.6;
-    const depth = options.depth ?? 0.3;
+    const radius = options.radius ?? 1;
+    const depth = options.depth ?? 0.5;
     if (!(radius >= 0.1 && radius <= 20)) throw new ParameterError('drop radius', radius, 'metres from 0.1 to 20');
     if (!(depth >= 0 && depth <= 5)) throw new ParameterError('drop depth', depth, 'metres from 0 to 5');
     const [u, v] = this.toGrid(x, z);
@@ -186,17 +198,15 @@ export class LocalWaves implements WaveLayer {
 
   /** Puts a hull's pressure patch on the sea at `pose`; move it with setPose() as the hull moves. */
   addPressure(shape: HullShape, pose: HullPose): PressureSource {
-    for (const key of ['length', 'beam', 'draft'] as const) {
-      const value = shape[key];
-      const [low, high] = key === 'draft' ? [0, 20] : [0.2, 400];
-      if (!(value >= low && value <= high)) throw new ParameterError(`hull ${key}`, value, `metres from ${low} to ${high}`);
+    for (const key of ['length', 'beam'] as const) {
+      if (!(shape[key] >= 0.2 && shape[key] <= 400)) throw new ParameterError(`hull ${key}`, shape[key], 'metres from 0.2 to 400');
     }
-    const hull: Hull = { shape: { ...shape }, pose: checkPose(pose), applied: checkPose(pose), removed: false };
-    hull.pose = hull.applied;
+    const placed = checkPose({ ...pose, draft: shape.draft });
+    const hull: Hull = { shape: { length: shape.length, beam: shape.beam }, pose: placed, applied: placed, removed: false };
     this.hulls.push(hull);
     return {
-      setPose: (x, z, heading) => {
-        hull.pose = checkPose({ x, z, heading });
+      setPose: (x, z, heading, draft = hull.pose.draft) => {
+        hull.pose = checkPose({ x, z, heading, draft });
       },
       remove: () => {
         hull.removed = true;
@@ -307,9 +317,9 @@ export class LocalWaves implements WaveLayer {
     return Math.min(substeps, MAX_SUBSTEPS);
   }
 
-  private hullImpulse(shape: HullShape, pose: HullPose, sign: 1 | -1): HeightImpulse {
+  private hullImpulse(shape: Hull['shape'], pose: PressedPose, sign: 1 | -1): HeightImpulse {
     const [x, z] = this.toGrid(pose.x, pose.z);
-    return { x, z, cos: Math.cos(pose.heading), sin: Math.sin(pose.heading), halfLength: shape.length / 2, halfBeam: shape.beam / 2, height: sign * shape.draft };
+    return { x, z, cos: Math.cos(pose.heading), sin: Math.sin(pose.heading), halfLength: shape.length / 2, halfBeam: shape.beam / 2, height: sign * pose.draft };
   }
 
   /** World (x, z) in metres from the grid's texel (0, 0). */
@@ -342,19 +352,21 @@ function toLayerFields(
   }
 }
 
-function checkPose(pose: HullPose): HullPose {
-  if (!Number.isFinite(pose.x) || !Number.isFinite(pose.z) || !Number.isFinite(pose.heading)) {
+function checkPose(pose: PressedPose): PressedPose {
+  if (![pose.x, pose.z, pose.heading].every(Number.isFinite)) {
     throw new ParameterError('hull pose', `${pose.x}, ${pose.z}, ${pose.heading}`, 'finite x, z (m) and heading (radians)');
   }
-  return { x: pose.x, z: pose.z, heading: pose.heading };
+  if (!(pose.draft >= 0 && pose.draft <= 20)) throw new ParameterError('hull draft', pose.draft, 'metres from 0 to 20');
+  return { x: pose.x, z: pose.z, heading: pose.heading, draft: pose.draft };
 }
 
-function samePose(a: HullPose, b: HullPose): boolean {
-  return a.x === b.x && a.z === b.z && a.heading === b.heading;
+function samePose(a: PressedPose, b: PressedPose): boolean {
+  return a.x === b.x && a.z === b.z && a.heading === b.heading && a.draft === b.draft;
 }
 
-function interpolatePose(from: HullPose, to: HullPose, fraction: number): HullPose {
+function interpolatePose(from: PressedPose, to: PressedPose, fraction: number): PressedPose {
   // The shorter way round for the heading.
   const turn = Math.atan2(Math.sin(to.heading - from.heading), Math.cos(to.heading - from.heading));
-  return { x: from.x + (to.x - from.x) * fraction, z: from.z + (to.z - from.z) * fraction, heading: from.heading + turn * fraction };
+  const along = (a: number, b: number) => a + (b - a) * fraction;
+  return { x: along(from.x, to.x), z: along(from.z, to.z), heading: from.heading + turn * fraction, draft: along(from.draft, to.draft) };
 }

@@ -23,6 +23,7 @@ import {
 } from '../parameters/parameters';
 import { createCascadeSpectra, type InitialSpectrum } from '../spectrum/initialSpectrum';
 import { FftCascade, type FftBackend } from './fftCascade';
+import { isSoftwareRenderer } from './gpuLocalWaves';
 import { LocalWaves, type LocalWavesOptions } from './localWaves';
 import type { WaveLayer } from './waveLayer';
 import { WhitecapFoam } from './whitecapFoam';
@@ -38,7 +39,7 @@ export interface SimulationOptions {
   worker?: boolean;
   /**
    * Local waves from stones, hulls and floating bodies (localWaves.ts): false for none, or the grid
-   * they are solved on. @defaultValue true (256 texels of 0.5 m)
+   * they are solved on and where. @defaultValue true (128 texels of 1 m, path 'auto')
    */
   localWaves?: boolean | LocalWavesOptions;
 }
@@ -66,6 +67,8 @@ export class OceanSimulation {
     this.useWorker = options.worker ?? typeof Worker !== 'undefined';
     const localWaves = options.localWaves ?? true;
     this.localWaveOptions = localWaves === false ? null : localWaves === true ? {} : localWaves;
+    const localPath = this.localWaveOptions?.path ?? 'auto';
+    if (localPath !== 'auto' && localPath !== 'gpu' && localPath !== 'js') throw new ParameterError('localWaves.path', localPath, "'auto', 'gpu' or 'js'");
     this.rebuild(true);
   }
 
@@ -172,7 +175,8 @@ export class OceanSimulation {
     this.currentFoam?.dispose();
     this.currentFoam = new WhitecapFoam(this.renderer, this.currentLayers, precision === null ? null : precision === 'float32' ? FloatType : HalfFloatType);
     this.lastTime = NaN;
-    this.rebuildLocalWaves(precision === 'float32');
+    const localPath = this.localWaveOptions?.path ?? 'auto';
+    this.rebuildLocalWaves(precision === 'float32' && (localPath === 'gpu' || (localPath === 'auto' && !isSoftwareRenderer(this.renderer))));
   }
 
   /**
