@@ -191,7 +191,8 @@ export class LocalWaves implements WaveLayer {
     const [u, v] = this.toGrid(x, z);
     const size = this.currentFrame.size;
     if (u < 0 || v < 0 || u > size || v > size) return false;
-    this.pendingDrops.push({ x: u, z: v, cos: 1, sin: 0, halfLength: radius, halfBeam: radius, height: -depth });
+    // Kept in world coordinates: the grid may move before the next step.
+    this.pendingDrops.push({ x, z, cos: 1, sin: 0, halfLength: radius, halfBeam: radius, height: -depth });
     this.quietFor = 0;
     return true;
   }
@@ -238,7 +239,7 @@ export class LocalWaves implements WaveLayer {
       const origin: [number, number] = s === substeps ? targetOrigin : this.originTexel; // the grid moves once, in the last sub-step
       const shift = [origin[0] - this.originTexel[0], origin[1] - this.originTexel[1]];
       this.originTexel = origin;
-      const impulses: HeightImpulse[] = s === 1 ? this.pendingDrops.splice(0) : [];
+      const impulses: HeightImpulse[] = s === 1 ? this.pendingDrops.splice(0).map((drop) => this.inGrid(drop)) : [];
       this.hulls.forEach((hull, h) => {
         if (hull.removed) {
           if (s === 1) impulses.push(this.hullImpulse(hull.shape, hull.applied, -1));
@@ -318,8 +319,13 @@ export class LocalWaves implements WaveLayer {
   }
 
   private hullImpulse(shape: Hull['shape'], pose: PressedPose, sign: 1 | -1): HeightImpulse {
-    const [x, z] = this.toGrid(pose.x, pose.z);
-    return { x, z, cos: Math.cos(pose.heading), sin: Math.sin(pose.heading), halfLength: shape.length / 2, halfBeam: shape.beam / 2, height: sign * pose.draft };
+    return this.inGrid({ x: pose.x, z: pose.z, cos: Math.cos(pose.heading), sin: Math.sin(pose.heading), halfLength: shape.length / 2, halfBeam: shape.beam / 2, height: sign * pose.draft });
+  }
+
+  /** An impulse placed in the world, placed on the grid as it is now. */
+  private inGrid(impulse: HeightImpulse): HeightImpulse {
+    const [x, z] = this.toGrid(impulse.x, impulse.z);
+    return { ...impulse, x, z };
   }
 
   /** World (x, z) in metres from the grid's texel (0, 0). */

@@ -490,6 +490,76 @@ test.describe('the app', () => {
     expect(await page.evaluate(() => window.oceanApp.buoys === null && !window.oceanApp.scene.getObjectByName('buoys'))).toBe(true);
   });
 
+  test('a click on the sea drops a stone there: rings spread from the clicked point, and the picture shows them', async ({ page }) => {
+    // A calm sea seen from 20 m looking down 60°, so that the rings stand out.
+    await openApp(page, 'resolution=64&windSpeed=2&cam=0,20,0,0,-60', { width: 480, height: 270 }, false);
+    const before = await pixels(page);
+    await page.mouse.click(240, 150);
+    // Where the click's ray meets the sea, and the local waves there a few seconds on.
+    const result = await page.evaluate(async () => {
+      const { ocean, camera, state, renderer } = window.oceanApp;
+      const t0 = state.t;
+      while (window.oceanApp.state.t < t0 + 3) await new Promise((resolve) => requestAnimationFrame(resolve));
+      const waves = ocean.localWaves!;
+      const { size, origin, resolution } = waves.frame;
+      const { displacement } = waves.fieldsOnCpu(state.t);
+      // The centre of the rings: the centroid of h² (the energy), in world metres.
+      let [sum, x, z, largest] = [0, 0, 0, 0];
+      for (let j = 0; j < resolution; j++) {
+        for (let i = 0; i < resolution; i++) {
+          const h = displacement[4 * (j * resolution + i) + 1];
+          const energy = h * h;
+          [sum, x, z, largest] = [sum + energy, x + energy * (origin[0] + (i * size) / resolution), z + energy * (origin[1] + (j * size) / resolution), Math.max(largest, Math.abs(h))];
+        }
+      }
+      // The clicked point: the ray through the pixel (240, 150) of the 480 × 270 canvas.
+      const bounds = renderer.domElement.getBoundingClientRect();
+      const ndc = [((240 - bounds.left) / bounds.width) * 2 - 1, 1 - ((150 - bounds.top) / bounds.height) * 2];
+      const direction = camera.position.clone().set(ndc[0], ndc[1], 0.5).unproject(camera).sub(camera.position).normalize();
+      const along = -camera.position.y / direction.y;
+      return { largest, centre: [x / sum, z / sum], clicked: [camera.position.x + along * direction.x, camera.position.z + along * direction.z], active: waves.active };
+    });
+    expect(result.active).toBe(true);
+    expect(result.largest).toBeGreaterThan(0.02); // a 0.8 m deep dip 1.2 m wide leaves rings of several centimetres
+    expect(Math.hypot(result.centre[0] - result.clicked[0], result.centre[1] - result.clicked[1])).toBeLessThan(1);
+    // The rings change the picture where they are (measured: a mean difference of several levels).
+    expect(meanAbsDifference(before, await pixels(page))).toBeGreaterThan(1);
+  });
+
+  test('?boat=1 runs a boat round its course; it leaves a wake on the local waves behind it, and the panel takes it away', async ({ page }) => {
+    await openApp(page, 'resolution=64&windSpeed=2&boat=1');
+    const wake = await page.evaluate(async () => {
+      const { boat, ocean, state } = window.oceanApp;
+      const t0 = state.t;
+      while (window.oceanApp.state.t < t0 + 8) await new Promise((resolve) => requestAnimationFrame(resolve));
+      const { x, z } = boat!.position;
+      const pose = boat!.poseAt(state.t);
+      // The height of the local waves 10 m astern and 10 m ahead of the boat, and beside it.
+      const local = (dx: number, dz: number) => {
+        const waves = ocean.localWaves!;
+        const { size, origin, resolution } = waves.frame;
+        const { displacement } = waves.fieldsOnCpu(state.t);
+        let largest = 0;
+        for (let r = -3; r <= 3; r++) {
+          for (let c = -3; c <= 3; c++) {
+            const i = Math.round(((x + dx + c - origin[0]) / size) * resolution);
+            const j = Math.round(((z + dz + r - origin[1]) / size) * resolution);
+            largest = Math.max(largest, Math.abs(displacement[4 * (j * resolution + i) + 1]));
+          }
+        }
+        return largest;
+      };
+      const [cos, sin] = [Math.cos(pose.heading), Math.sin(pose.heading)];
+      return { astern: local(-12 * cos, -12 * sin), ahead: local(25 * cos, 25 * sin), onCourse: Math.hypot(pose.x - x, pose.z - z) };
+    });
+    expect(wake.onCourse).toBeLessThan(3); // where its course puts it (a frame behind at most)
+    expect(wake.astern).toBeGreaterThan(0.02);
+    expect(wake.astern).toBeGreaterThan(3 * wake.ahead); // waves behind, calm water ahead
+    await page.evaluate(() => window.oceanApp.panel.gui.open(true));
+    await page.locator('[data-key="boat"] input').uncheck();
+    expect(await page.evaluate(() => window.oceanApp.boat === null && !window.oceanApp.scene.getObjectByName('boat'))).toBe(true);
+  });
+
   test('?inspector=1 shows the inspector tiles and the panel toggles them', async ({ page }) => {
     await openApp(page, 'resolution=32&inspector=1');
     await expect(page.locator('.inspector-labels > div')).toHaveCount(10);

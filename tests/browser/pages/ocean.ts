@@ -68,7 +68,7 @@ function setup(parameters: Partial<SimulationParameters>, shading: OceanShadingO
   const sim = simulation;
   surface = new OceanSurface(
     { environment, sunDirection: { value: sunDirection } },
-    () => ({ layers: sim.layers, choppiness: sim.parameters.choppiness, foam: sim.foam.texture }),
+    () => ({ layers: sim.surfaceLayers, choppiness: sim.parameters.choppiness, foam: sim.foam.texture }),
     shading,
   );
   scene.add(surface);
@@ -242,7 +242,9 @@ function geometryCheck(t: number, withRestPoints = false) {
   const captureHeight = Math.ceil(count / captureWidth);
   const material = new OceanMaterial({ environment, sunDirection: { value: sunDirection } }, {}, { CAPTURE_POSITIONS: 1 });
   const { choppiness } = sim.parameters;
-  material.bindLayers(sim.layers, choppiness, sim.foam.texture);
+  // Bound as the surface binds them (the local waves first: zero here, no source has touched them).
+  material.bindLayers(sim.surfaceLayers, choppiness, sim.foam.texture);
+  const cascadesFrom = sim.surfaceLayers.length - sim.layers.length;
   for (const name of ['ringFrames', 'ringLayerUvOrigins', 'ringOffsets', 'halfRingCells']) {
     material.uniforms[name].value = mesh.material.uniforms[name].value;
   }
@@ -272,7 +274,7 @@ function geometryCheck(t: number, withRestPoints = false) {
   const layers = sim.layers.map((layer, i) => {
     const fields = new CpuWaveFields(layer.spectrum);
     fields.update(t);
-    const lodBias = material.uniforms.layerLodBias.value[i] as number;
+    const lodBias = material.uniforms.layerLodBias.value[cascadesFrom + i] as number;
     return { size: layer.frame.size, fields, mips: mipChain(fields.displacement, n), lodBias };
   });
   // RMS of the summed height over the largest patch's grid (the sum does not repeat on a smaller one).
