@@ -19,6 +19,10 @@
 //                idle GPU to a 1-pixel readPixels of the canvas: at N = 256 with C = 1, 3 and 4
 //                cascades (patchSizes as in CASCADE_SETS; C = 3 is the default sizes), interleaved
 //                round by round, and at N = 512 with the default 3 cascades.
+//   living       the same frame at N = 256 with the default cascades and a 20 m/s wind, without foam
+//                and local waves ("bare"), with whitecap foam ("foam"), and with foam and local waves
+//                stepping every frame (a hull circling, a stone each second: "foam+local-waves"),
+//                interleaved; living-cost gives what foam and local waves add to the bare frame.
 //   targets      the issue's targets next to the figures (reported, never asserted): per update of
 //                three 256² cascades JS ≤ 9 ms and GPU ≤ 30 ms; a frame with three cascades
 //                ≤ 100 ms at 1280x720.
@@ -416,6 +420,31 @@ async function browserBenchmarks(results) {
         });
       }
     }
+    log(`living surface N=${CASCADE_N}: bare, foam, foam and local waves at ${FRAME_SIZE.width}x${FRAME_SIZE.height}`);
+    const living = await withTimeout(
+      page.evaluate((o) => window.frameBench.frames(o), {
+        resolution: CASCADE_N,
+        ...FRAME_SIZE,
+        warmup: 5,
+        rounds: FRAME_ROUNDS,
+        patchSizeSets: [],
+        variants: [
+          { label: 'bare', options: { windSpeed: 20, foamAmount: 0, localWaves: false }, activeLocalWaves: false },
+          { label: 'foam', options: { windSpeed: 20, localWaves: false }, activeLocalWaves: false },
+          { label: 'foam+local-waves', options: { windSpeed: 20 }, activeLocalWaves: true },
+        ],
+      }),
+      3 * BROWSER_STEP_TIMEOUT_MS,
+      'the living-surface benchmark',
+    );
+    const livingMs = {};
+    for (const frame of living) {
+      const row = stats(frame.samples);
+      livingMs[frame.label] = row.ms;
+      emit({ bench: 'living', N: CASCADE_N, variant: frame.label, size: `${FRAME_SIZE.width}x${FRAME_SIZE.height}`, path: frame.path, ...row, timer: 'readpixels-sync' });
+    }
+    results.livingCost = { foamMs: livingMs.foam - livingMs.bare, foamAndLocalWavesMs: livingMs['foam+local-waves'] - livingMs.bare, targetMs: 15 };
+    emit({ bench: 'living-cost', ...results.livingCost });
     await page.goto(`http://127.0.0.1:${port}/bench/pages/bench.html`);
     await page.waitForFunction(() => document.title === 'ready', null, { timeout: 60_000 });
     if (info.halfFloat) {
@@ -448,6 +477,7 @@ const results = {
   jsBrowserCascades: {},
   gpuCascades: {},
   frameByCascades: {},
+  livingCost: null,
 };
 let exitCode = 0;
 let browserError = null;
@@ -498,6 +528,7 @@ emit({
   gpuSpeedupVsJsBrowser512: ratio(results.jsBrowser[512], gpu(512, 'readPixels')),
   frameMs256At1280x720: results.frame[256] ?? null,
   frameMs512At1280x720: results.frame[512] ?? null,
+  livingCostMs: results.livingCost,
   jsCascadesMs256: byCascades((count) => results.jsCascades[count]),
   jsBrowserCascadesMs256: byCascades((count) => results.jsBrowserCascades[count]),
   gpuCascadesMs256: byCascades(gpuCascades),

@@ -9,7 +9,8 @@
  * the cascade counts alike.
  */
 import { ACESFilmicToneMapping, PerspectiveCamera, Scene, WebGLRenderer } from 'three';
-import { Ocean } from '../../src/ocean';
+import type { PressureSource } from '../../src/layers/localWaves';
+import { Ocean, type OceanOptions } from '../../src/ocean';
 
 export interface FrameOptions {
   resolution: number;
@@ -19,9 +20,16 @@ export interface FrameOptions {
   rounds: number;
   /** One Ocean per entry; undefined keeps the default patch sizes. */
   patchSizeSets: (number[] | undefined)[];
+  /**
+   * Instead of patchSizeSets: one Ocean per entry with these options (default patch sizes), and,
+   * with `activeLocalWaves`, a hull circling ahead of the camera and a stone every second, so that
+   * the local waves step every frame (the living-surface rows).
+   */
+  variants?: { label: string; options: OceanOptions; activeLocalWaves: boolean }[];
 }
 
 export interface FrameSamples {
+  label: string;
   patchSizes: number[];
   cascades: number;
   samples: number[];
@@ -42,16 +50,14 @@ async function frames(options: FrameOptions): Promise<FrameSamples[]> {
   const camera = new PerspectiveCamera(55, options.width / options.height, 0.5, 1e5);
   camera.position.set(0, 12, 0);
   camera.lookAt(60, 0, -80);
-  const subjects = options.patchSizeSets.map((patchSizes) => {
+  const variants =
+    options.variants ?? options.patchSizeSets.map((patchSizes) => ({ label: 'frame', options: patchSizes ? { patchSizes } : {}, activeLocalWaves: false }));
+  const subjects = variants.map(({ label, options: oceanOptions, activeLocalWaves }) => {
     const scene = new Scene();
-    const ocean = new Ocean(renderer, {
-      resolution: options.resolution,
-      seed: 7,
-      path: 'gpu',
-      ...(patchSizes ? { patchSizes } : {}),
-    });
+    const ocean = new Ocean(renderer, { resolution: options.resolution, seed: 7, path: 'gpu', ...oceanOptions });
     scene.add(ocean);
-    return { scene, ocean, samples: [] as number[], calls: 0, triangles: 0 };
+    const hull: PressureSource | null = activeLocalWaves ? (ocean.localWaves?.addPressure({ length: 8, beam: 2.6, draft: 0.6 }, { x: 30, z: -40, heading: 0 }) ?? null) : null;
+    return { label, scene, ocean, hull, samples: [] as number[], calls: 0, triangles: 0 };
   });
   const pixel = new Uint8Array(4);
   const sync = () => gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
@@ -62,6 +68,12 @@ async function frames(options: FrameOptions): Promise<FrameSamples[]> {
       for (const subject of subjects) {
         sync();
         const start = performance.now();
+        if (subject.hull) {
+          // 5 m/s round a 30 m circle ahead of the camera, and a stone every second.
+          const angle = t / 6;
+          subject.hull.setPose(30 + 30 * Math.cos(angle), -40 + 30 * Math.sin(angle), angle + Math.PI / 2);
+          if (round % 30 === 0) subject.ocean.localWaves?.drop(20, -25);
+        }
         subject.ocean.update(t);
         camera.far = Math.max(1e4, 1.5 * subject.ocean.horizonDistance);
         camera.updateProjectionMatrix();
@@ -73,7 +85,8 @@ async function frames(options: FrameOptions): Promise<FrameSamples[]> {
         await new Promise((resolve) => setTimeout(resolve, 0));
       }
     }
-    return subjects.map(({ ocean, samples, calls, triangles }) => ({
+    return subjects.map(({ label, ocean, samples, calls, triangles }) => ({
+      label,
       patchSizes: [...ocean.simulation.parameters.patchSizes],
       cascades: ocean.simulation.layers.length,
       samples,
