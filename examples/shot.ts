@@ -29,8 +29,10 @@
  */
 import { Scene } from 'three';
 import { createAppCamera, createAppOcean, createAppRenderer, loadAppSkybox, prepareAppFrame } from '../src/app/appView';
+import { Boat } from '../src/app/boat';
 import { FlyControls } from '../src/app/flyControls';
 import { Inspector } from '../src/app/inspector';
+import { SunLight } from '../src/app/sunLight';
 import {
   defaultState,
   DEFAULT_STATE,
@@ -96,6 +98,7 @@ OPTIONS.set('skybox', {
 });
 OPTIONS.set('wireframe', { stateKey: 'wireframe', placeholder: '[1|0]', help: 'draw the surface as wireframe', flag: true });
 OPTIONS.set('inspector', { stateKey: 'inspector', placeholder: '[1|0]', help: "the inspector's tiles along the bottom", flag: true });
+OPTIONS.set('boat', { stateKey: 'boat', placeholder: '[1|0]', help: "the app's boat on its course ahead of the camera, with its wake run up to the time", flag: true });
 OPTIONS.set('cam', { stateKey: 'cam', placeholder: 'x,y,z,yaw,pitch', help: "the app's camera: metres and degrees (instead of --camera)" });
 
 function optionNamed(name: string): ShotOption | undefined {
@@ -274,6 +277,10 @@ async function start(): Promise<void> {
   } catch (error) {
     throw new UsageError(`skybox: ${error instanceof Error ? error.message : String(error)}`);
   }
+  // The boat as the app shows it (its wake is run up to each frame's time: localWaves.ts warmUp).
+  const boat = state.boat ? new Boat(ocean, camera) : null;
+  const sunLight = new SunLight(ocean);
+  if (boat) scene.add(boat, sunLight);
   // The inspector's tiles are part of the app's canvas when it is shown.
   const inspector = state.inspector ? new Inspector(ocean, document.body) : null;
 
@@ -282,6 +289,8 @@ async function start(): Promise<void> {
     if (typeof t !== 'number' || !Number.isFinite(t)) throw new Error(`renderFrame: t must be a finite number, got ${t}`);
     // As the app's frame loop.
     prepareAppFrame(ocean, camera, t);
+    boat?.update();
+    sunLight.update();
     renderer.render(scene, camera);
     inspector?.render(renderer);
     // A one-pixel readback waits for the GPU to finish the frame (gl.finish does not, in Chromium).

@@ -241,10 +241,9 @@ renderer.setAnimationLoop((now: number) => {
   controls.update(clock.realStep);
 
   const start = performance.now();
-  boat?.update(state.t); // before the sea steps, so that its wake goes with it
   prepareAppFrame(ocean, camera, state.t); // the sea at t, the eye above the crest, the far plane
   buoys?.update(state.t);
-  boat?.float();
+  boat?.update();
   sunLight.update();
   const simulated = performance.now();
   renderer.render(scene, camera);

@@ -1,7 +1,7 @@
 /**
  * A boat going round a circle ahead of the camera (the panel's "boat" toggle), pressing on the
  * local waves (src/layers/localWaves.ts) so that it leaves a Kelvin wake. Its course is a function
- * of the simulation time, so a paused or reloaded scene puts it at the same place; the local-wave
+ * of the simulation time, so a paused or reloaded scene puts it, and its wake, at the same place; the local-wave
  * grid follows the circle's centre while it runs. It sits on the water at heightAt and tilts with
  * normalAt. dispose() frees its geometry and materials and takes its pressure off the sea.
  */
@@ -26,7 +26,6 @@ export class Boat extends Group {
   private readonly cabinMaterial = new MeshStandardMaterial({ color: 0x33475c, roughness: 0.4 });
   private readonly normal = new Vector3();
   private readonly tilt = new Quaternion();
-  private heading = 0;
 
   constructor(
     private readonly ocean: Ocean,
@@ -43,7 +42,9 @@ export class Boat extends Group {
     hull.add(cabin);
     this.add(hull);
     const start = this.poseAt(ocean.time);
-    this.pressure = ocean.localWaves?.addPressure(HULL, start) ?? null;
+    // Its course is a path of time: the local waves move it themselves, and run its wake up to the
+    // current time after a jump (a reload, a seek, a still from the shot CLI).
+    this.pressure = ocean.localWaves?.addPressure(HULL, start, (t) => this.poseAt(t)) ?? null;
     ocean.localWaves?.follow(this.centre.x, this.centre.z);
   }
 
@@ -53,19 +54,10 @@ export class Boat extends Group {
     return { x: this.centre.x + RADIUS * Math.cos(angle), z: this.centre.z + RADIUS * Math.sin(angle), heading: angle + Math.PI / 2 };
   }
 
-  /** Steers the boat to time t; call before ocean.update(t) so that its wake is stepped with it. */
-  update(t: number): void {
-    const { x, z, heading } = this.poseAt(t);
-    this.pressure?.setPose(x, z, heading);
-    this.heading = heading;
-    this.position.set(x, 0, z);
-  }
-
-  /** Sets the boat on the water of the ocean's current time (call after ocean.update). */
-  float(): void {
-    const { x, z } = this.position;
-    const heading = this.heading;
-    this.position.y = this.ocean.heightAt(x, z);
+  /** Sets the boat on its course and on the water at the ocean's current time (call after ocean.update). */
+  update(): void {
+    const { x, z, heading } = this.poseAt(this.ocean.time);
+    this.position.set(x, this.ocean.heightAt(x, z), z);
     // Heading about y (from +x towards +z is a turn by −heading), then tilted with the water.
     this.quaternion.setFromAxisAngle(new Vector3(0, 1, 0), -heading);
     this.tilt.setFromUnitVectors(new Vector3(0, 1, 0), this.ocean.normalAt(x, z, this.normal));

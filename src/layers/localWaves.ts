@@ -12,8 +12,9 @@
  * The grid moves in whole texels towards its target each update; the waves stay where they are in
  * the world, and what leaves the grid is gone.
  *
- * Time: update(t, dt) steps by dt (dt = 0: paused). A jump (dt < 0 or over MAX_STEP) clears the waves: they are the
- * history of their sources, and a still at time t has none unless its sources ran up to it.
+ * Time: update(t, dt) steps by dt (dt = 0: paused). A jump (dt < 0 or over MAX_STEP, or the first
+ * update) clears the waves: they are the history of their sources. Hulls that follow a path of
+ * time are then run along it up to t (warmUp), so that a still at t shows their wake.
  * When nothing has made a wave for QUIET_AFTER seconds the layer clears and stops stepping (a
  * sea without sources costs nothing).
  */
@@ -27,6 +28,9 @@ import type { LayerFieldsOnCpu, LayerFrame, WaveLayer } from './waveLayer';
 const MAX_STEP = 2;
 /** Seconds without a source after which the grid is cleared and stepping stops. */
 const QUIET_AFTER = 60;
+/** Seconds of a travelling hull's path run after a jump, and the step (localWaves.ts warmUp). */
+const WARM_UP = 20;
+const WARM_UP_STEP = 0.1;
 /** Sub-steps per update at most, when sources move more than a quarter of their length per update. */
 const MAX_SUBSTEPS = 2;
 
@@ -92,6 +96,8 @@ interface Hull {
    */
   applied: PressedPose;
   removed: boolean;
+  /** Where it is at time t, for a hull that follows a path. */
+  path?: (t: number) => HullPose;
 }
 
 export class LocalWaves implements WaveLayer {
@@ -106,6 +112,8 @@ export class LocalWaves implements WaveLayer {
   private readonly pendingDrops: HeightImpulse[] = [];
   private readonly hulls: Hull[] = [];
   private quietFor = Infinity;
+  /** The time of the last update, null before the first. */
+  private time: number | null = null;
   private cpuFields: { displacement: Float32Array; derivatives: Float32Array } | null = null;
   private stepCount = 0;
   private readBackStep = -1;
@@ -197,13 +205,18 @@ export class LocalWaves implements WaveLayer {
     return true;
   }
 
-  /** Puts a hull's pressure patch on the sea at `pose`; move it with setPose() as the hull moves. */
-  addPressure(shape: HullShape, pose: HullPose): PressureSource {
+  /**
+   * Puts a hull's pressure patch on the sea at `pose`; move it with setPose() as the hull moves. Or
+   * give it a `path` of time: it then moves along it by itself, and after a jump in time (a still,
+   * a seek) its wake is run up over the 20 s before, so that the sea at a time does not depend on
+   * what came before.
+   */
+  addPressure(shape: HullShape, pose: HullPose, path?: (t: number) => HullPose): PressureSource {
     for (const key of ['length', 'beam'] as const) {
       if (!(shape[key] >= 0.2 && shape[key] <= 400)) throw new ParameterError(`hull ${key}`, shape[key], 'metres from 0.2 to 400');
     }
     const placed = checkPose({ ...pose, draft: shape.draft });
-    const hull: Hull = { shape: { length: shape.length, beam: shape.beam }, pose: placed, applied: placed, removed: false };
+    const hull: Hull = { shape: { length: shape.length, beam: shape.beam }, pose: placed, applied: placed, removed: false, path };
     this.hulls.push(hull);
     return {
       setPose: (x, z, heading, draft = hull.pose.draft) => {
@@ -215,12 +228,16 @@ export class LocalWaves implements WaveLayer {
     };
   }
 
-  update(_t: number, dt: number): void {
-    if (dt === 0) return; // paused, or the first update
-    if (!(dt > 0 && dt <= MAX_STEP)) {
+  update(t: number, dt: number): void {
+    const jump = this.time === null || dt < 0 || dt > MAX_STEP;
+    this.time = t;
+    if (jump) {
       this.clear();
+      this.warmUp(t);
       return;
     }
+    if (dt === 0) return; // paused
+    for (const hull of this.hulls) if (hull.path && !hull.removed) hull.pose = checkPose({ ...hull.path(t), draft: hull.pose.draft });
     const moving = this.hulls.some((hull) => hull.removed || !samePose(hull.applied, hull.pose));
     if (moving || this.pendingDrops.length > 0) this.quietFor = 0;
     else this.quietFor += dt;
@@ -231,6 +248,32 @@ export class LocalWaves implements WaveLayer {
       this.updateFrameOrigin();
       return;
     }
+    this.advance(dt);
+    this.stepCount++;
+    this.publish();
+  }
+
+  /**
+   * After a jump to time t, the waves of the hulls that follow a path: they are run along it over
+   * the WARM_UP seconds before t in steps of WARM_UP_STEP, from a calm sea, so that a still at t
+   * (and every frame after it) shows the same wake whatever came before.
+   */
+  private warmUp(t: number): void {
+    const travelling = this.hulls.filter((hull) => hull.path);
+    if (travelling.length === 0) return;
+    for (const hull of travelling) hull.pose = hull.applied = checkPose({ ...hull.path!(t - WARM_UP), draft: hull.pose.draft });
+    for (let step = 1; step <= Math.round(WARM_UP / WARM_UP_STEP); step++) {
+      const time = t - WARM_UP + step * WARM_UP_STEP;
+      for (const hull of travelling) hull.pose = checkPose({ ...hull.path!(time), draft: hull.pose.draft });
+      this.advance(WARM_UP_STEP);
+    }
+    this.quietFor = 0;
+    this.stepCount++;
+    this.publish();
+  }
+
+  /** Steps the waves by dt, with the hulls moving from where they pressed to their new poses. */
+  private advance(dt: number): void {
     const substeps = this.substepsFor();
     const starts = this.hulls.map((hull) => hull.applied);
     const targetOrigin = this.originFor(this.target);
@@ -257,8 +300,6 @@ export class LocalWaves implements WaveLayer {
     }
     this.hulls.splice(0, this.hulls.length, ...this.hulls.filter((hull) => !hull.removed));
     this.updateFrameOrigin();
-    this.stepCount++;
-    this.publish();
   }
 
   /**
@@ -286,9 +327,8 @@ export class LocalWaves implements WaveLayer {
     else for (const texture of this.backend.textures) texture.dispose();
   }
 
-  /** Clears every wave (the hulls stay, pressing from their next step on). */
+  /** Clears every wave (the hulls stay, pressing from their next step on; stones not yet dropped still fall). */
   clear(): void {
-    this.pendingDrops.length = 0;
     for (const hull of this.hulls) hull.applied = hull.pose;
     if (this.backend.kind === 'gpu') this.backend.solver.clear();
     else this.backend.solver.clear();

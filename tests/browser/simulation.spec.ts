@@ -84,6 +84,30 @@ test('the local waves on the GPU equal the JS solver, through a stone, a turning
   }
 });
 
+test('a hull on a path: after a jump in time its wake is run up to the time, the same bits whatever came before', async ({ page }) => {
+  const result = await page.evaluate(() => window.harness.localWavesAfterJumps(30));
+  expect(result.finite).toBe(true);
+  expect(result.maxHeight).toBeGreaterThan(0.02); // a wake, not a calm sea
+  expect(result.identical).toBe(true);
+});
+
+test('bad input to the local waves raises errors naming it; a drop off the grid is ignored; nothing NaN', async ({ page }) => {
+  const { messages, droppedOutside, finite } = await page.evaluate(() => window.harness.localWavesBadInput());
+  expect(messages).toEqual([
+    expect.stringMatching(/^drop\(x, z\) must be finite coordinates in metres; got "NaN, 0"$/),
+    expect.stringMatching(/^drop radius must be metres from 0.1 to 20; got 0$/),
+    expect.stringMatching(/^drop depth must be metres from 0 to 5; got -1$/),
+    expect.stringMatching(/^hull length must be metres from 0.2 to 400; got -1$/),
+    expect.stringMatching(/^hull pose must be finite x, z \(m\) and heading \(radians\); got "0, Infinity, 0"$/),
+    expect.stringMatching(/^hull draft must be metres from 0 to 20; got -2$/),
+    expect.stringMatching(/^follow\(x, z\) must be finite coordinates/),
+    expect.stringMatching(/^localWaves.resolution must be a power of two from 16 to 1024; got 100$/),
+    expect.stringMatching(/^localWaves.cellSize must be metres per texel from 0.05 to 10; got 0$/),
+  ]);
+  expect(droppedOutside).toBe(false);
+  expect(finite).toBe(true);
+});
+
 test('the JS path in a Web Worker uploads the same fields as CpuWaveFields', async ({ page }) => {
   const result = await page.evaluate(() => window.harness.workerAgainstDirect({ resolution: 64, seed: 5 }, 42.5));
   expect(result.path).toBe('js-worker');

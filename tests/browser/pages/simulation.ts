@@ -247,7 +247,10 @@ const harness = {
     const paths = [new LocalWaves(renderer, 30, true, options), new LocalWaves(renderer, 30, false, options)];
     const hull = { length: 6, beam: 2, draft: 0.5 };
     const hulls = paths.map((waves) => waves.addPressure(hull, { x: 0, z: 0, heading: 0 }));
-    for (const waves of paths) waves.drop(-10, 6, { radius: 1, depth: 0.5 });
+    for (const waves of paths) {
+      waves.update(0, 0); // the first update starts the clock (a jump: it steps nothing)
+      waves.drop(-10, 6, { radius: 1, depth: 0.5 });
+    }
     const results = [];
     for (let u = 1; u <= updates; u++) {
       const t = u / 10;
@@ -270,6 +273,61 @@ const harness = {
     }
     for (const waves of paths) waves.dispose();
     return results;
+  },
+
+  /**
+   * A hull on a path, the local waves jumped to time t twice (from elsewhere in between): the
+   * fields each time, their largest height, and whether they are the same bits.
+   */
+  localWavesAfterJumps(t: number): { maxHeight: number; identical: boolean; finite: boolean } {
+    // A coarse grid: the run-up is 200 steps, and each costs ~30 ms at N = 128 under SwiftShader.
+    const waves = new LocalWaves(renderer, Infinity, true, { resolution: 64, cellSize: 2 });
+    const path = (time: number) => ({ x: 5 * time - 100, z: 3, heading: 0 });
+    waves.addPressure({ length: 8, beam: 2.6, draft: 0.6 }, path(0), path);
+    waves.follow(0, 0);
+    const fields = () => Float32Array.from(waves.fieldsOnCpu(t).displacement);
+    waves.update(t, 0);
+    const first = fields();
+    waves.update(t + 0.1, 0.1);
+    waves.update(3, 3 - t - 0.1); // a jump back
+    waves.update(t, t - 3); // a jump forward again
+    const second = fields();
+    waves.dispose();
+    let maxHeight = 0;
+    for (let i = 1; i < first.length; i += 4) maxHeight = Math.max(maxHeight, Math.abs(first[i]));
+    return { maxHeight, identical: first.every((v, i) => Object.is(v, second[i])), finite: first.every(Number.isFinite) };
+  },
+
+  /** Bad input to the local waves: each call's error message, or '(no error)'. */
+  localWavesBadInput(): { messages: string[]; droppedOutside: boolean; finite: boolean } {
+    const waves = new LocalWaves(renderer, Infinity, true);
+    const messages: string[] = [];
+    const attempts: (() => unknown)[] = [
+      () => waves.drop(NaN, 0),
+      () => waves.drop(0, 0, { radius: 0 }),
+      () => waves.drop(0, 0, { depth: -1 }),
+      () => waves.addPressure({ length: -1, beam: 1, draft: 1 }, { x: 0, z: 0, heading: 0 }),
+      () => waves.addPressure({ length: 5, beam: 1, draft: 1 }, { x: 0, z: Infinity, heading: 0 }),
+      () => waves.addPressure({ length: 5, beam: 1, draft: 1 }, { x: 0, z: 0, heading: 0 }).setPose(0, 0, 0, -2),
+      () => waves.follow(NaN, 0),
+      () => new LocalWaves(renderer, Infinity, false, { resolution: 100 }),
+      () => new LocalWaves(renderer, Infinity, false, { cellSize: 0 }),
+    ];
+    for (const attempt of attempts) {
+      try {
+        attempt();
+        messages.push('(no error)');
+      } catch (error) {
+        messages.push((error as Error).message);
+      }
+    }
+    const droppedOutside = waves.drop(1e4, 0);
+    waves.drop(3, 4);
+    waves.update(0, 0);
+    waves.update(0.1, 0.1);
+    const finite = waves.fieldsOnCpu(0.1).displacement.every(Number.isFinite);
+    waves.dispose();
+    return { messages, droppedOutside, finite };
   },
 
   memoryAfterCycles(cycles: number): { before: object; during: number; after: object } {
