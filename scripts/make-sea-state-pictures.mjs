@@ -1,5 +1,5 @@
 #!/usr/bin/env node
-// `npm run make-sea-states`: the README's sea-state pictures and table.
+// `npm run make-sea-states`: the README's sea-state pictures and table, and its feature pictures.
 //
 // For every named preset (SEA_PRESETS) and for Beaufort forces 2, 4, 6, 8, 10 and 12
 // (beaufortPreset), renders one picture with the shot CLI (scripts/shot.mjs) into
@@ -21,6 +21,9 @@
 // is checked: a black, blank or flat-coloured sea fails the run (exit code 1). The shot's truecolour
 // PNG (about 0.9 MB) is then stored as a 256-colour one (median cut, a few Lloyd steps, no
 // dithering: about 0.17 MB), so that the eleven pictures stay near 2 MB.
+//
+// The feature pictures (FEATURES: whitecaps in a storm, a boat and its wake, …) are app links
+// rendered with the shot CLI's --query into docs/features/<file>, checked and stored the same way.
 import { spawn } from 'node:child_process';
 import { mkdirSync, readFileSync, statSync, writeFileSync } from 'node:fs';
 import { availableParallelism } from 'node:os';
@@ -33,6 +36,12 @@ import { ensureBuiltApp } from './shot.mjs';
 
 const ROOT = resolve(dirname(fileURLToPath(import.meta.url)), '..');
 const OUT_DIR = join(ROOT, 'docs', 'sea-states');
+const FEATURES_DIR = join(ROOT, 'docs', 'features');
+/** The README's feature pictures: app links (what the app's "copy link" gives), paused at their t. */
+const FEATURES = [
+  { name: 'whitecaps in a storm', file: 'whitecaps.png', query: 'windSpeed=20&seed=7&paused=1&t=30&cam=0,25,0,-53.13,-12' },
+  { name: 'a boat and its wake', file: 'wake.png', query: 'windSpeed=4&seed=7&boat=1&paused=1&t=40&cam=0,30,0,-20,-30' },
+];
 const SHOT = join(ROOT, 'scripts', 'shot.mjs');
 
 const BEAUFORT_FORCES = [2, 4, 6, 8, 10, 12];
@@ -86,6 +95,7 @@ function optionText(value) {
 
 /** The shot CLI's arguments for one sea state: every parameter of the preset, in kebab-case. */
 function shotArguments(state) {
+  if (state.query) return ['--query', state.query, '--size', SIZE, '--out', join(FEATURES_DIR, state.file), '--no-build'];
   const args = [];
   for (const [key, value] of Object.entries(state.parameters)) {
     args.push(`--${key.replace(/[A-Z]/g, (c) => `-${c.toLowerCase()}`)}`, optionText(value));
@@ -285,17 +295,19 @@ function markdown(states, prefix) {
 
 async function main() {
   mkdirSync(OUT_DIR, { recursive: true });
+  mkdirSync(FEATURES_DIR, { recursive: true });
   ensureBuiltApp({ log });
   log('loading the presets and seaState through Vite (ssrLoadModule)');
   const states = await loadSeaStates();
   for (const state of states) state.cam = state.significantWaveHeight > STORM_HS ? STORM_CAM : DEFAULT_CAM;
 
-  log(`rendering ${states.length} pictures, ${SHOT_CONCURRENCY} at a time`);
+  const only = process.argv.includes('--features-only') ? FEATURES : [...states, ...FEATURES];
+  log(`rendering ${only.length} pictures, ${SHOT_CONCURRENCY} at a time`);
   const failures = [];
-  await eachLimited(states, SHOT_CONCURRENCY, async (state) => {
+  await eachLimited(only, SHOT_CONCURRENCY, async (state) => {
     const shotStarted = performance.now();
     await runShot(state);
-    const file = join(OUT_DIR, state.file);
+    const file = join(state.query ? FEATURES_DIR : OUT_DIR, state.file);
     const png = PNG.sync.read(readFileSync(file));
     const { mean, deviation } = seaLuma(png);
     writeFileSync(file, indexedPng(png));
@@ -304,6 +316,10 @@ async function main() {
     if (mean < 8 || deviation < 1) failures.push(`${state.name}: the sea is black or flat (luma ${mean.toFixed(1)} ± ${deviation.toFixed(2)})`);
   });
 
+  if (only === FEATURES) {
+    if (failures.length > 0) throw new Error(`bad pictures:\n  ${failures.join('\n  ')}`);
+    return;
+  }
   const header = '<!-- Made by `npm run make-sea-states` (scripts/make-sea-state-pictures.mjs); do not edit. -->\n\n';
   writeFileSync(join(OUT_DIR, 'table.md'), header + markdown(states, ''));
   process.stdout.write(markdown(states, 'docs/sea-states/'));
