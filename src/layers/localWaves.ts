@@ -80,7 +80,10 @@ export interface PressureSource {
   remove(): void;
 }
 
-type Backend = { kind: 'gpu'; solver: GpuLocalWaves } | { kind: 'js'; solver: CpuLocalWaves; textures: [DataTexture, DataTexture] };
+type Backend =
+  | { kind: 'gpu'; solver: GpuLocalWaves }
+  /** `fields` are the textures' own arrays. */
+  | { kind: 'js'; solver: CpuLocalWaves; textures: [DataTexture, DataTexture]; fields: LayerFieldsOnCpu };
 
 /** A hull's pose and how deep it presses now (m). */
 interface PressedPose extends HullPose {
@@ -114,7 +117,8 @@ export class LocalWaves implements WaveLayer {
   private quietFor = Infinity;
   /** The time of the last update, null before the first. */
   private time: number | null = null;
-  private cpuFields: { displacement: Float32Array; derivatives: Float32Array } | null = null;
+  /** The GPU path's fields read back for queries, and the state they are read from. */
+  private cpuFields: { displacement: Float32Array; derivatives: Float32Array; state: Float32Array } | null = null;
   private stepCount = 0;
   private readBackStep = -1;
 
@@ -145,7 +149,8 @@ export class LocalWaves implements WaveLayer {
         return t;
       };
       const textures: [DataTexture, DataTexture] = [texture(), texture()];
-      this.backend = { kind: 'js', solver: new CpuLocalWaves(this.grid), textures };
+      const fields = { displacement: textures[0].image.data as Float32Array, derivatives: textures[1].image.data as Float32Array };
+      this.backend = { kind: 'js', solver: new CpuLocalWaves(this.grid), textures, fields };
       this.textures = { displacement: { value: textures[0] }, derivatives: { value: textures[1] } };
     }
     this.originTexel = this.originFor(this.target);
@@ -308,16 +313,15 @@ export class LocalWaves implements WaveLayer {
    */
   fieldsOnCpu(_t: number): LayerFieldsOnCpu {
     const n = this.grid.resolution;
-    if (this.backend.kind === 'js') {
-      const [displacement, derivatives] = this.backend.textures;
-      return { displacement: displacement.image.data as Float32Array, derivatives: derivatives.image.data as Float32Array };
-    }
-    this.cpuFields ??= { displacement: new Float32Array(4 * n * n), derivatives: new Float32Array(4 * n * n) };
+    if (this.backend.kind === 'js') return this.backend.fields;
+    this.cpuFields ??= { displacement: new Float32Array(4 * n * n), derivatives: new Float32Array(4 * n * n), state: new Float32Array(4 * n * n) };
     if (this.readBackStep !== this.stepCount) {
       this.readBackStep = this.stepCount;
-      const state = new Float32Array(4 * n * n);
+      const state = this.cpuFields.state;
       if (this.active) this.renderer.readRenderTargetPixels(this.backend.solver.state, 0, 0, n, n, state);
-      toLayerFields(this.cpuFields, (texel) => [state[4 * texel], state[4 * texel + 2], state[4 * texel + 3]]);
+      else state.fill(0);
+      // The state's texels are (η_s, ψ, ∂η_s/∂x, ∂η_s/∂z).
+      toLayerFields(this.cpuFields, state, state.subarray(2), state.subarray(3), 4);
     }
     return this.cpuFields;
   }
@@ -341,9 +345,8 @@ export class LocalWaves implements WaveLayer {
       if (this.active) this.backend.solver.unpack();
       return;
     }
-    const { solver, textures } = this.backend;
-    const fields = { displacement: textures[0].image.data as Float32Array, derivatives: textures[1].image.data as Float32Array };
-    toLayerFields(fields, (texel) => [solver.height[texel], solver.slopeX[texel], solver.slopeZ[texel]]);
+    const { solver, textures, fields } = this.backend;
+    toLayerFields(fields, solver.height, solver.slopeX, solver.slopeZ, 1);
     for (const texture of textures) texture.needsUpdate = true;
   }
 
@@ -384,17 +387,22 @@ export class LocalWaves implements WaveLayer {
   }
 }
 
-/** Writes the layer layout (0, h, 0, 0), (∂h/∂x, ∂h/∂z, 0, 0) from `fieldsAt(texel)` = [h, ∂h/∂x, ∂h/∂z]. */
+/**
+ * Writes the layer layout (0, h, 0, 0), (∂h/∂x, ∂h/∂z, 0, 0) from the height and slopes, texel t's
+ * at index t·stride of each array.
+ */
 function toLayerFields(
   fields: { displacement: Float32Array; derivatives: Float32Array },
-  fieldsAt: (texel: number) => [number, number, number],
+  height: ArrayLike<number>,
+  slopeX: ArrayLike<number>,
+  slopeZ: ArrayLike<number>,
+  stride: number,
 ): void {
   const texels = fields.displacement.length / 4;
   for (let texel = 0; texel < texels; texel++) {
-    const [height, slopeX, slopeZ] = fieldsAt(texel);
-    fields.displacement[4 * texel + 1] = height;
-    fields.derivatives[4 * texel] = slopeX;
-    fields.derivatives[4 * texel + 1] = slopeZ;
+    fields.displacement[4 * texel + 1] = height[texel * stride];
+    fields.derivatives[4 * texel] = slopeX[texel * stride];
+    fields.derivatives[4 * texel + 1] = slopeZ[texel * stride];
   }
 }
 
