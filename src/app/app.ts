@@ -9,7 +9,8 @@
  * <fft-ocean>), so the sea moves at its real speed however slow the frames; a hidden tab or a
  * stall longer than a second does not make it jump; paused keeps t fixed.
  */
-import { Plane, Raycaster, Scene, Vector2, Vector3 } from 'three';
+import { Scene } from 'three';
+import { CLICKED_STONE, seaPointUnder } from '../render/seaPointer';
 import { SimulationClock } from '../timing/simulationClock';
 import { Boat } from './boat';
 import { Buoys } from './buoys';
@@ -41,17 +42,11 @@ scene.add(ocean, sunLight);
 loadAppSkybox(ocean, state.skybox)?.catch((error: Error) => overlay.warn('skybox', `skybox: ${error.message}`));
 
 const [x, y, z, yaw, pitch] = state.cam;
-/** The stone a click drops: a dip 1.2 m wide and 0.8 m deep (localWaves.ts). */
-const STONE = { radius: 1.2, depth: 0.8 };
 const controls = new FlyControls(camera, renderer.domElement, { position: [x, y, z], yaw, pitch });
-// A click on the sea drops a stone there (where the ray through the pixel meets the mean sea level).
+// A click on the sea drops a stone there.
 controls.onClick = (clientX, clientY) => {
-  const bounds = renderer.domElement.getBoundingClientRect();
-  const pointer = new Vector2(((clientX - bounds.left) / bounds.width) * 2 - 1, 1 - ((clientY - bounds.top) / bounds.height) * 2);
-  const ray = new Raycaster();
-  ray.setFromCamera(pointer, camera);
-  const hit = ray.ray.intersectPlane(new Plane(new Vector3(0, 1, 0), 0), new Vector3());
-  if (hit) ocean.localWaves?.drop(hit.x, hit.z, STONE);
+  const hit = seaPointUnder(camera, renderer.domElement, clientX, clientY);
+  if (hit) ocean.localWaves?.drop(hit.x, hit.z, CLICKED_STONE);
 };
 if (state.paused) state.t = roundTime(state.t);
 

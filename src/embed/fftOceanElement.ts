@@ -46,6 +46,7 @@ import { SimulationClock } from '../timing/simulationClock';
 import { formatOptionText, optionKey, parseOptionText, quoteText, type OptionRule } from '../parameters/options';
 import { DEFAULT_SHADING, DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ShadingOptions, type SunOptions } from '../parameters/sceneOptions';
 import type { PathPreference } from '../layers/oceanSimulation';
+import { CLICKED_STONE, seaPointUnder } from '../render/seaPointer';
 import { DEFAULT_PARAMETERS, parseDecimal, SIMULATION_OPTIONS, validateParameters, type SimulationParameters } from '../parameters/parameters';
 
 const PATHS: readonly PathPreference[] = ['auto', 'gpu', 'js'];
@@ -385,6 +386,12 @@ export class FftOceanElement extends ElementBase {
       live.contextLost = false;
       this.activityChanged();
     };
+    // A click (or tap) on the sea drops a stone there, as in the app (local waves).
+    const onClick = (event: MouseEvent) => {
+      const hit = seaPointUnder(camera, canvas, event.clientX, event.clientY);
+      if (hit) ocean.localWaves?.drop(hit.x, hit.z, CLICKED_STONE);
+    };
+    canvas.addEventListener('click', onClick);
     canvas.addEventListener('webglcontextlost', onContextLost);
     canvas.addEventListener('webglcontextrestored', onContextRestored);
     document.addEventListener('visibilitychange', this.onVisibilityChange);
@@ -405,6 +412,7 @@ export class FftOceanElement extends ElementBase {
       onScreen: false, // until the observer's first report, which comes promptly
       contextLost: false,
       removeListeners: () => {
+        canvas.removeEventListener('click', onClick);
         canvas.removeEventListener('webglcontextlost', onContextLost);
         canvas.removeEventListener('webglcontextrestored', onContextRestored);
         document.removeEventListener('visibilitychange', this.onVisibilityChange);

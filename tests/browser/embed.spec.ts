@@ -273,6 +273,26 @@ test('its time follows real time × time-scale when frames are slow', async ({ p
   expect(simulated / real).toBeCloseTo(1.5, 1);
 });
 
+test('a click on its sea drops a stone there: the local waves get rings', async ({ page }) => {
+  await openPage(page);
+  await page.evaluate(async () => {
+    const el = window.embed.create({ resolution: '64', 'wind-speed': '3' });
+    await window.embed.drawn(el, 2);
+  });
+  const box = (await page.locator('fft-ocean').boundingBox())!;
+  await page.mouse.click(box.x + box.width / 2, box.y + box.height * 0.8); // the sea below the horizon
+  const largest = await page.evaluate(async () => {
+    const el = document.querySelector('fft-ocean')!;
+    await window.embed.drawn(el, 6);
+    const waves = el.ocean!.localWaves!;
+    const { displacement } = waves.fieldsOnCpu(0);
+    let largest = 0;
+    for (let i = 1; i < displacement.length; i += 4) largest = Math.max(largest, Math.abs(displacement[i]));
+    return largest;
+  });
+  expect(largest).toBeGreaterThan(0.02); // a 0.8 m deep dip leaves rings of centimetres
+});
+
 test('defining it twice is harmless', async ({ page }) => {
   const { errors } = await openPage(page);
   const result = await page.evaluate(() => {
