@@ -164,6 +164,14 @@ test('heightAt(x, z) is the height of the rendered surface over (x, z), choppy d
   expect(result.maxError / result.rms).toBeLessThan(0.01);
 });
 
+test('heightAt and normalAt include the local waves: after a stone the height differs from the cascades\' by the local field', async ({ page }) => {
+  await openOcean(page);
+  const result = await page.evaluate(() => window.ocean.queriesWithLocalWaves());
+  expect(result.largestLocal).toBeGreaterThan(0.05); // rings of centimetres around the stone
+  expect(result.worstHeight).toBeLessThan(1e-4); // float32 fields, summed in another order
+  expect(result.normalsDiffer).toBe(true);
+});
+
 test.describe('the Ocean API', () => {
   test('horizonDistanceFor(height) is valid before the first render and reaches the farthest vertex drawn', async ({ page }) => {
     await openOcean(page);

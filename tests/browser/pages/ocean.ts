@@ -26,6 +26,7 @@ import { OceanSurface } from '../../../src/render/oceanSurface';
 import { CpuWaveFields } from '../../../src/fft/cpuWaveFields';
 import { OceanSimulation } from '../../../src/layers/oceanSimulation';
 import { blendAngle, COPY_OFFSET, patchBlendUniforms } from '../../../src/layers/patchBlend';
+import { heightAt, normalAt } from '../../../src/layers/surfaceQuery';
 import type { SimulationParameters } from '../../../src/parameters/parameters';
 
 const query = new URLSearchParams(location.search);
@@ -147,6 +148,45 @@ const harness = {
    * horizonDistance then and after the render from the current view, and the farthest vertex from
    * the camera that the vertex shader placed (the skirt's corner).
    */
+  /**
+   * The queries over the local waves: after a stone, heightAt and normalAt of the Ocean against the
+   * same queries over the cascades alone (surfaceQuery.ts), at points around the stone. Without
+   * choppiness the rest point under (x, z) is (x, z) itself, so the difference in height must be the
+   * local field there (bilinear), and the normals must differ where its slopes are. (With it, every
+   * layer is sampled at the rest point the choppy map moves onto (x, z), as the surface does.)
+   */
+  queriesWithLocalWaves(): { largestLocal: number; worstHeight: number; normalsDiffer: boolean } {
+    return withOcean({ resolution: 64, windSpeed: 6, seed: 4, choppiness: 0 }, (ocean) => {
+      const waves = ocean.localWaves!;
+      waves.follow(0, 0);
+      ocean.update(10);
+      waves.drop(3, -2, { radius: 1.2, depth: 0.8 });
+      for (let t = 10.1; t < 13; t += 0.1) ocean.update(t);
+      const { size, origin, resolution } = waves.frame;
+      const local = waves.fieldsOnCpu(ocean.time).displacement;
+      const localAt = (x: number, z: number) => {
+        const [u, v] = [((x - origin[0]) / size) * resolution, ((z - origin[1]) / size) * resolution];
+        const [i, j] = [Math.floor(u), Math.floor(v)];
+        const [fu, fv] = [u - i, v - j];
+        const h = (a: number, b: number) => local[4 * (b * resolution + a) + 1];
+        return (1 - fv) * ((1 - fu) * h(i, j) + fu * h(i + 1, j)) + fv * ((1 - fu) * h(i, j + 1) + fu * h(i + 1, j + 1));
+      };
+      const cascades = ocean.simulation.layers;
+      const { choppiness } = ocean.parameters;
+      let [largestLocal, worstHeight, normalsDiffer] = [0, 0, false];
+      for (let x = -5; x <= 11; x += 0.7) {
+        for (let z = -10; z <= 6; z += 0.7) {
+          const expected = heightAt(cascades, choppiness, ocean.time, x, z);
+          largestLocal = Math.max(largestLocal, Math.abs(localAt(x, z)));
+          worstHeight = Math.max(worstHeight, Math.abs(ocean.heightAt(x, z) - expected - localAt(x, z)));
+          const withLocal = ocean.normalAt(x, z);
+          const without = normalAt(cascades, choppiness, ocean.time, x, z, new Vector3());
+          normalsDiffer ||= withLocal.angleTo(without) > 0.02;
+        }
+      }
+      return { largestLocal, worstHeight, normalsDiffer };
+    });
+  },
   horizonCheck(changes: Partial<SimulationParameters>): { before: number; beforeAtSeaLevel: number; seaLevel: number; after: number; farthest: number } {
     return withOcean(changes, (ocean) => {
       const before = ocean.horizonDistanceFor(camera.position.y);
