@@ -23,6 +23,8 @@
 //                and local waves ("bare"), with whitecap foam ("foam"), and with foam and local waves
 //                stepping every frame (a hull circling, a stone each second: "foam+local-waves"),
 //                interleaved; living-cost gives what foam and local waves add to the bare frame.
+//   queries      1000 points in one heightsAt / velocitiesAt call from the page's main thread, the
+//                fields for the time already computed (firstCallMs: the call that computes them).
 //   targets      the issue's targets next to the figures (reported, never asserted): per update of
 //                three 256² cascades JS ≤ 9 ms and GPU ≤ 30 ms; a frame with three cascades
 //                ≤ 100 ms at 1280x720.
@@ -443,6 +445,18 @@ async function browserBenchmarks(results) {
       livingMs[frame.label] = row.ms;
       emit({ bench: 'living', N: CASCADE_N, variant: frame.label, size: `${FRAME_SIZE.width}x${FRAME_SIZE.height}`, path: frame.path, ...row, timer: 'readpixels-sync' });
     }
+    log('queries: 1000 points, heightsAt and velocitiesAt from the main thread');
+    const queryRuns = await withTimeout(
+      page.evaluate((o) => window.frameBench.queries(o), { resolution: CASCADE_N, points: 1000, rounds: 30 }),
+      BROWSER_STEP_TIMEOUT_MS,
+      'the queries benchmark',
+    );
+    results.queries = {};
+    for (const [name, { firstMs, samples }] of Object.entries(queryRuns)) {
+      const row = stats(samples);
+      results.queries[name] = row.ms;
+      emit({ bench: 'queries', query: name, points: 1000, N: CASCADE_N, firstCallMs: firstMs, ...row, target: name === 'heightsAt' ? 2 : null });
+    }
     results.livingCost = { foamMs: livingMs.foam - livingMs.bare, foamAndLocalWavesMs: livingMs['foam+local-waves'] - livingMs.bare, targetMs: 15 };
     emit({ bench: 'living-cost', ...results.livingCost });
     await page.goto(`http://127.0.0.1:${port}/bench/pages/bench.html`);
@@ -478,6 +492,7 @@ const results = {
   gpuCascades: {},
   frameByCascades: {},
   livingCost: null,
+  queries: null,
 };
 let exitCode = 0;
 let browserError = null;
@@ -529,6 +544,7 @@ emit({
   frameMs256At1280x720: results.frame[256] ?? null,
   frameMs512At1280x720: results.frame[512] ?? null,
   livingCostMs: results.livingCost,
+  queries1000Ms: results.queries,
   jsCascadesMs256: byCascades((count) => results.jsCascades[count]),
   jsBrowserCascadesMs256: byCascades((count) => results.jsBrowserCascades[count]),
   gpuCascadesMs256: byCascades(gpuCascades),

@@ -18,7 +18,7 @@ import { SkyBackground } from './render/skyBackground';
 import { SkyEnvironment, sunAnglesFromDirection, type SunAngles, type SunDirection } from './render/skyEnvironment';
 import { OceanSimulation, type SimulationOptions } from './layers/oceanSimulation';
 import type { LocalWaves } from './layers/localWaves';
-import { heightAt, normalAt } from './layers/surfaceQuery';
+import { heightAt, normalAt, velocityAt } from './layers/surfaceQuery';
 import { optionAliases, unknownOption } from './parameters/options';
 import { ParameterError, SIMULATION_OPTIONS, type SimulationParameters } from './parameters/parameters';
 import { DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ShadingChanges, type ShadingOptions } from './parameters/sceneOptions';
@@ -70,6 +70,12 @@ const OCEAN_OPTION_KEYS: readonly string[] = [
   'localWaves',
 ];
 const SUN_POSITION_KEYS: readonly string[] = ['elevation', 'azimuth', 'direction'];
+
+/** What the batch queries write into. */
+export type WritableNumbers = { length: number; [index: number]: number };
+
+/** The batch queries' one vector, reused (nothing is allocated per point). */
+const scratch = { x: 0, y: 0, z: 0 };
 
 /** Significant wave height (m) and peak period (s) of a sea state. */
 export interface SeaStateSummary {
@@ -263,6 +269,38 @@ export class Ocean extends Object3D {
   }
 
   /**
+   * Velocity (m/s) of the water surface over the world point (x, z) at the current time, in
+   * `target`: the orbital velocity of the surface particle there, over every layer (surfaceQuery.ts).
+   * For a floating body's drag, spray, or what the water carries.
+   */
+  velocityAt(x: number, z: number, target = new Vector3()): Vector3 {
+    this.checkAlive('velocityAt');
+    if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError('velocityAt(x, z)', `${x}, ${z}`, 'finite coordinates');
+    return velocityAt(this.simulation.surfaceLayers, this.simulation.parameters.choppiness, this.currentTime, x, z, target);
+  }
+
+  /**
+   * heightAt for many points at once: `xz` holds x0, z0, x1, z1, … and `out` gets one height per
+   * point (and is returned). Allocates nothing.
+   */
+  heightsAt<T extends WritableNumbers>(xz: ArrayLike<number>, out: T): T {
+    const count = this.checkBatch('heightsAt', xz, out, 1);
+    const { surfaceLayers, parameters } = this.simulation;
+    for (let p = 0; p < count; p++) out[p] = heightAt(surfaceLayers, parameters.choppiness, this.currentTime, xz[2 * p], xz[2 * p + 1]);
+    return out;
+  }
+
+  /** normalAt for many points: three numbers (x, y, z) per point of `xz` in `out`. Allocates nothing. */
+  normalsAt<T extends WritableNumbers>(xz: ArrayLike<number>, out: T): T {
+    return this.batchOfVectors('normalsAt', normalAt, xz, out);
+  }
+
+  /** velocityAt for many points: three numbers (m/s) per point of `xz` in `out`. Allocates nothing. */
+  velocitiesAt<T extends WritableNumbers>(xz: ArrayLike<number>, out: T): T {
+    return this.batchOfVectors('velocitiesAt', velocityAt, xz, out);
+  }
+
+  /**
    * Frees every GPU resource the Ocean made and takes its sea and sky out of it (left in a scene it
    * draws nothing). Every method throws a DisposedError from then on; disposing again does nothing.
    */
@@ -279,6 +317,34 @@ export class Ocean extends Object3D {
 
   private checkAlive(method: string): void {
     if (this.disposed) throw new DisposedError(`Ocean.${method}`);
+  }
+
+  /** Checks a batch query's arrays (`perPoint` numbers out per point); returns the point count. */
+  private checkBatch(method: string, xz: ArrayLike<number>, out: WritableNumbers, perPoint: number): number {
+    this.checkAlive(method);
+    if (xz === null || typeof xz !== 'object' || typeof xz.length !== 'number' || xz.length % 2 !== 0) {
+      throw new ParameterError(`${method}(xz)`, xz, 'an array of x0, z0, x1, z1, … (an even length)');
+    }
+    const count = xz.length / 2;
+    if (out === null || typeof out !== 'object' || !(out.length >= perPoint * count)) {
+      throw new ParameterError(`${method}(xz, out)`, out, `an array of at least ${perPoint * count} numbers (${perPoint} per point)`);
+    }
+    for (let i = 0; i < xz.length; i++) {
+      if (!Number.isFinite(xz[i])) throw new ParameterError(`${method}(xz)[${i}]`, xz[i], 'a finite coordinate in metres');
+    }
+    return count;
+  }
+
+  private batchOfVectors<T extends WritableNumbers>(method: string, query: typeof normalAt, xz: ArrayLike<number>, out: T): T {
+    const count = this.checkBatch(method, xz, out, 3);
+    const { surfaceLayers, parameters } = this.simulation;
+    for (let p = 0; p < count; p++) {
+      query(surfaceLayers, parameters.choppiness, this.currentTime, xz[2 * p], xz[2 * p + 1], scratch);
+      out[3 * p] = scratch.x;
+      out[3 * p + 1] = scratch.y;
+      out[3 * p + 2] = scratch.z;
+    }
+    return out;
   }
 }
 

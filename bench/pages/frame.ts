@@ -103,10 +103,44 @@ async function frames(options: FrameOptions): Promise<FrameSamples[]> {
   }
 }
 
-declare global {
-  interface Window {
-    frameBench: { frames: typeof frames };
+/**
+ * Queries from the main thread as a user makes them: `points` heightsAt / velocitiesAt (one batch
+ * call) over the default sea at N = `resolution`, with the CPU fields already computed for the time
+ * (the first call at a new time computes them; that cost is reported apart, as `firstMs`).
+ */
+async function queries(options: { resolution: number; points: number; rounds: number }): Promise<Record<string, { firstMs: number; samples: number[] }>> {
+  const renderer = new WebGLRenderer();
+  const ocean = new Ocean(renderer, { resolution: options.resolution, seed: 7, path: 'gpu' });
+  const xz = new Float64Array(2 * options.points);
+  for (let p = 0; p < options.points; p++) [xz[2 * p], xz[2 * p + 1]] = [(p % 40) * 3.7 - 70, Math.floor(p / 40) * 4.1 - 50];
+  const out = new Float64Array(3 * options.points);
+  const result: Record<string, { firstMs: number; samples: number[] }> = {};
+  try {
+    for (const [name, query] of [['heightsAt', () => ocean.heightsAt(xz, out)], ['velocitiesAt', () => ocean.velocitiesAt(xz, out)]] as const) {
+      ocean.update(12.5 + Object.keys(result).length);
+      let start = performance.now();
+      query();
+      const firstMs = performance.now() - start;
+      const samples: number[] = [];
+      for (let round = 0; round < options.rounds; round++) {
+        start = performance.now();
+        query();
+        samples.push(performance.now() - start);
+        await new Promise((resolve) => setTimeout(resolve, 0));
+      }
+      result[name] = { firstMs, samples };
+    }
+    return result;
+  } finally {
+    ocean.dispose();
+    renderer.dispose();
   }
 }
-window.frameBench = { frames };
+
+declare global {
+  interface Window {
+    frameBench: { frames: typeof frames; queries: typeof queries };
+  }
+}
+window.frameBench = { frames, queries };
 document.title = 'ready';

@@ -8,6 +8,11 @@
  * ω depends on |k| only (and spectrum.ts stores h̃0*(−k) next to each h̃0(k)), so
  * h̃(−k, t) = conj(h̃(k, t)): evolve() computes h̃ once for each pair of wave vectors ±k and writes
  * the packed spectra of both.
+ *
+ * Velocities (for the queries' velocityAt): the time derivative of the displacement texture,
+ *   ∂h̃/∂t = iω·(h̃0(k)·e^{iωt} − h̃0*(−k)·e^{−iωt}),
+ * with the same ω, packed like the displacement (Dx and Dz are multiples of h̃): (∂Dx/∂t, ∂h/∂t,
+ * ∂Dz/∂t, ∂²Dx/∂z∂t) per texel, computed only when asked (updateVelocities).
  */
 import { fillPhaseTable, PHASE_TABLE_SIZE } from '../spectrum/dispersion';
 import { BatchedInverseFft2D } from './fft';
@@ -45,6 +50,8 @@ export class CpuWaveFields {
   private readonly size: number;
 
   private readonly repeatPeriod: number;
+  /** The velocity texels and the two-field FFT that makes them, once velocities are first asked for. */
+  private velocityFields: { texels: Float32Array; fft: BatchedInverseFft2D } | null = null;
 
   constructor(spectrum: InitialSpectrum) {
     this.repeatPeriod = spectrum.repeatPeriod;
@@ -85,14 +92,33 @@ export class CpuWaveFields {
   /** Computes every field at time t (seconds). Allocates nothing. */
   update(t: number): void {
     fillPhaseTable(this.phaseTable, t, this.repeatPeriod);
-    this.evolve();
+    this.evolve(this.fft, false);
     this.fft.runToTexels(this.textures);
   }
 
-  /** h̃(±k, t) and the four packed spectra at ±k, written into the FFT's input. */
-  private evolve(): void {
+  /**
+   * The time derivative of the displacement at time t (s), RGBA texels (∂Dx/∂t, ∂h/∂t, ∂Dz/∂t,
+   * ∂²Dx/∂z∂t) in m/s, in the layout of `displacement`. Returns the same array every time.
+   */
+  updateVelocities(t: number): Float32Array {
     const n = this.size;
-    const { fft, phaseTable: table, modes, rowPairs, partnerColumns } = this;
+    this.velocityFields ??= { texels: new Float32Array(4 * n * n), fft: new BatchedInverseFft2D(n, 2) };
+    const { texels, fft } = this.velocityFields;
+    fillPhaseTable(this.phaseTable, t, this.repeatPeriod);
+    this.evolve(fft, true);
+    fft.runToTexels([texels]);
+    return texels;
+  }
+
+  /**
+   * h̃(±k, t), or with `velocities` ∂h̃(±k, t)/∂t, and the packed spectra at ±k (four, or the
+   * displacement's two), written into the input of `fft` (whose layout is this.fft's).
+   */
+  private evolve(fft: BatchedInverseFft2D, velocities: boolean): void {
+    const n = this.size;
+    const { phaseTable: table, modes, rowPairs, partnerColumns } = this;
+    // ω = m·ω0 (dispersion.ts), for the velocities.
+    const omega0 = (2 * Math.PI) / this.repeatPeriod;
     const re = fft.inputReal;
     const im = fft.inputImag;
     const stride = fft.rowStride;
@@ -116,9 +142,16 @@ export class CpuWaveFields {
         const er = table[low] * table[high] - table[low + 1] * table[high + 1];
         const ei = table[low] * table[high + 1] + table[low + 1] * table[high];
         // h̃(k) = a·e + b·conj(e) = hr + i·hi, with a = h̃0(k), b = h̃0*(−k) (see MODE_LENGTH);
-        // h̃(−k) = conj(h̃(k)).
-        const hr = modes[t] * er + modes[t + 1] * ei;
-        const hi = modes[t + 2] * er + modes[t + 3] * ei;
+        // h̃(−k) = conj(h̃(k)). Its time derivative: iω·(a·e − b·conj(e)), also conjugate at −k.
+        let hr = modes[t] * er + modes[t + 1] * ei;
+        let hi = modes[t + 2] * er + modes[t + 3] * ei;
+        if (velocities) {
+          const omega = m * omega0;
+          const gr = modes[t + 3] * er - modes[t + 2] * ei;
+          const gi = modes[t] * ei - modes[t + 1] * er;
+          hr = -omega * gi;
+          hi = omega * gr;
+        }
         // The packed spectra of waveFieldLayout.ts as multiples of h̃, at k and at −k, where kx, kz
         // and so ax = kx/k, az = kz/k change sign (1/k does not) and h̃ becomes conj(h̃). λ = 1 here:
         // the surface and the queries scale D and its derivatives by the choppiness.
@@ -138,6 +171,7 @@ export class CpuWaveFields {
         im[at + n] = dzCross * hr;
         re[partnerAt + n] = dzCrossPartner * hi;
         im[partnerAt + n] = dzCrossPartner * hr;
+        if (velocities) continue; // the displacement's two packed spectra are all it needs
         // ∂h/∂x + i·∂h/∂z = (−kz + i·kx)·h̃;   at −k: (kz − i·kx)·conj(h̃)
         re[at + 2 * n] = -kz * hr - kx * hi;
         im[at + 2 * n] = kx * hr - kz * hi;

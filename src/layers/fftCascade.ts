@@ -18,8 +18,8 @@ export class FftCascade implements WaveLayer {
   readonly textures;
   readonly frame: LayerFrame;
   private readonly backend: GpuWaveFields | CpuFieldTextures;
-  /** The JS fields for queries, computed on demand for the time last asked. */
-  private query: { fields: CpuWaveFields; time: number } | null = null;
+  /** The JS fields for queries, computed on demand for the time last asked, and their velocities (for the time they were last asked). */
+  private query: { fields: CpuWaveFields; time: number; velocities: Float32Array | null; velocityTime: number } | null = null;
 
   constructor(
     renderer: WebGLRenderer,
@@ -43,12 +43,26 @@ export class FftCascade implements WaveLayer {
   }
 
   fieldsOnCpu(t: number): LayerFieldsOnCpu {
-    this.query ??= { fields: new CpuWaveFields(this.spectrum), time: NaN };
+    return this.fieldsOnCpuQuery(t).fields;
+  }
+
+  /** The JS fields for queries at time t (computed once per t asked). */
+  private fieldsOnCpuQuery(t: number): NonNullable<FftCascade['query']> {
+    this.query ??= { fields: new CpuWaveFields(this.spectrum), time: NaN, velocities: null, velocityTime: NaN };
     if (this.query.time !== t) {
       this.query.fields.update(t);
       this.query.time = t;
     }
-    return this.query.fields;
+    return this.query;
+  }
+
+  velocitiesOnCpu(t: number): Float32Array {
+    const query = this.fieldsOnCpuQuery(t);
+    if (query.velocityTime !== t) {
+      query.velocities = query.fields.updateVelocities(t);
+      query.velocityTime = t;
+    }
+    return query.velocities!;
   }
 
   /** The fields the textures show now, on the JS path (no computation); the GPU path keeps none. */

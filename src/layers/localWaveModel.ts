@@ -132,6 +132,7 @@ export class CpuLocalWaves {
   /** ω(k) per frequency texel, and the wavenumbers kx, kz of each column and row (0 at Nyquist for slopes). */
   private readonly omega: Float64Array;
   private readonly slopeWavenumber: Float64Array;
+  private velocityFft: BatchedInverseFft2D | null = null;
 
   constructor(readonly grid: LocalWaveGrid) {
     const n = grid.resolution;
@@ -149,6 +150,38 @@ export class CpuLocalWaves {
         this.omega[j * n + i] = angularFrequency(Math.hypot(signedIndex(i, n), signedIndex(j, n)) * dk, grid.depth);
       }
     }
+  }
+
+  /**
+   * ∂η_s/∂t on the grid, from the potential ψ (texel t's at index t·stride of `potential`): per mode
+   * ∂η̂/∂t = ω·ψ̂ (the file's equations), so ∂η/∂t = IFFT(ω·FFT(ψ)). Written as RGBA texels
+   * (0, ∂η/∂t, 0, 0) into `out`, the layout of a layer's velocities.
+   */
+  verticalVelocity(potential: ArrayLike<number>, stride: number, out: Float32Array): void {
+    const n = this.grid.resolution;
+    this.velocityFft ??= new BatchedInverseFft2D(n, 1);
+    const fft = this.velocityFft;
+    for (let j = 0; j < n; j++) {
+      for (let i = 0; i < n; i++) {
+        const at = fft.inputIndex(0, i, j);
+        fft.inputReal[at] = potential[(j * n + i) * stride];
+        fft.inputImag[at] = 0;
+      }
+    }
+    fft.run(); // the inverse transform of a real field is the conjugate of its forward one
+    const norm = 1 / (n * n);
+    const spectrumRe = Float64Array.from({ length: n * n }, (_, t) => fft.outputReal[fft.outputIndex(0, t % n, Math.floor(t / n))] * norm);
+    const spectrumIm = Float64Array.from({ length: n * n }, (_, t) => -fft.outputImag[fft.outputIndex(0, t % n, Math.floor(t / n))] * norm);
+    for (let j = 0; j < n; j++) {
+      for (let i = 0; i < n; i++) {
+        const at = fft.inputIndex(0, i, j);
+        fft.inputReal[at] = this.omega[j * n + i] * spectrumRe[j * n + i];
+        fft.inputImag[at] = this.omega[j * n + i] * spectrumIm[j * n + i];
+      }
+    }
+    fft.run();
+    out.fill(0);
+    for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) out[4 * (j * n + i) + 1] = fft.outputReal[fft.outputIndex(0, i, j)];
   }
 
   /** Clears the sea on the grid. */

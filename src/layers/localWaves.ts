@@ -120,6 +120,10 @@ export class LocalWaves implements WaveLayer {
   /** The GPU path's fields read back for queries, and the state they are read from. */
   private cpuFields: { displacement: Float32Array; derivatives: Float32Array; state: Float32Array } | null = null;
   private stepCount = 0;
+  /** The velocities for queries, and the update they are for. */
+  private velocities: { texels: Float32Array; step: number } | null = null;
+  /** The GPU path's velocities are computed in JS from the read-back potential. */
+  private velocitySolver: CpuLocalWaves | null = null;
   private readBackStep = -1;
 
   constructor(
@@ -324,6 +328,25 @@ export class LocalWaves implements WaveLayer {
       toLayerFields(this.cpuFields, state, state.subarray(2), state.subarray(3), 4);
     }
     return this.cpuFields;
+  }
+
+  /**
+   * ∂h/∂t of the fields fieldsOnCpu gives (the last update's), in the layout of a layer's velocities:
+   * the local waves move the surface only up and down.
+   */
+  velocitiesOnCpu(t: number): Float32Array {
+    const n = this.grid.resolution;
+    this.velocities ??= { texels: new Float32Array(4 * n * n), step: -1 };
+    if (this.velocities.step !== this.stepCount) {
+      this.fieldsOnCpu(t); // on the GPU path, reads the state back
+      if (this.backend.kind === 'js') this.backend.solver.verticalVelocity(this.backend.solver.potential, 1, this.velocities.texels);
+      else {
+        this.velocitySolver ??= new CpuLocalWaves(this.grid);
+        this.velocitySolver.verticalVelocity(this.cpuFields!.state.subarray(1), 4, this.velocities.texels);
+      }
+      this.velocities.step = this.stepCount;
+    }
+    return this.velocities.texels;
   }
 
   dispose(): void {

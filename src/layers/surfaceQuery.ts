@@ -22,6 +22,9 @@ interface SurfaceSample {
   dzdz: number;
   dxdz: number;
   dzdx: number;
+  /** The rest point these are the fields of (set by surfacePointOver). */
+  restX: number;
+  restZ: number;
 }
 
 /**
@@ -50,17 +53,82 @@ export function normalAt<T extends { x: number; y: number; z: number }>(
   out: T,
 ): T {
   const s = surfacePointOver(layers, choppiness, t, x, z);
-  const [ax, ay, az] = [1 + choppiness * s.dxdx, s.slopeX, choppiness * s.dzdx]; // ∂P/∂x0
-  const [bx, by, bz] = [choppiness * s.dxdz, s.slopeZ, 1 + choppiness * s.dzdz]; // ∂P/∂z0
-  const [nx, ny, nz] = [by * az - bz * ay, bz * ax - bx * az, bx * ay - by * ax];
-  const length = Math.hypot(nx, ny, nz);
+  // ∂P/∂x0 = (ax, ay, az), ∂P/∂z0 = (bx, by, bz)
+  const ax = 1 + choppiness * s.dxdx;
+  const ay = s.slopeX;
+  const az = choppiness * s.dzdx;
+  const bx = choppiness * s.dxdz;
+  const by = s.slopeZ;
+  const bz = 1 + choppiness * s.dzdz;
+  const nx = by * az - bz * ay;
+  const ny = bz * ax - bx * az;
+  const nz = bx * ay - by * ax;
+  const length = Math.sqrt(nx * nx + ny * ny + nz * nz);
   out.x = nx / length;
   out.y = ny / length;
   out.z = nz / length;
   return out;
 }
 
-const sample: SurfaceSample = { dx: 0, height: 0, dz: 0, slopeX: 0, slopeZ: 0, dxdx: 0, dzdz: 0, dxdz: 0, dzdx: 0 };
+/**
+ * Velocity (m/s) of the water surface over the world point (x, z) at time t, written into `out`:
+ * the surface particle at the rest point x0 that heightAt finds moves with ∂P/∂t =
+ * (λ·∂Dx/∂t, ∂h/∂t, λ·∂Dz/∂t) (each layer's velocitiesOnCpu, summed and blended as the fields
+ * are; the blend's weights do not change with time). For the Airy waves of linear theory this is
+ * the orbital velocity of the particles at the surface (Dean & Dalrymple 1991, §4.4; for one deep-
+ * water wave of amplitude A at λ = 1, a circle at speed A·ω).
+ */
+export function velocityAt<T extends { x: number; y: number; z: number }>(
+  layers: readonly WaveLayer[],
+  choppiness: number,
+  t: number,
+  x: number,
+  z: number,
+  out: T,
+): T {
+  const rest = surfacePointOver(layers, choppiness, t, x, z);
+  const blended = prepareBlend(layers);
+  velocity.x = velocity.y = velocity.z = 0;
+  for (let i = 0; i < layers.length; i++) {
+    const at = layerTexel(layers[i], rest.restX, rest.restZ);
+    if (at === null) continue;
+    const texels = layers[i].velocitiesOnCpu(t);
+    const n = layers[i].frame.resolution;
+    if (i !== blended) {
+      addVelocity(texels, n, at.u, at.v, 1);
+      continue;
+    }
+    const theta = blendAngle(blendUniforms, rest.restX, rest.restZ);
+    addVelocity(texels, n, at.u, at.v, Math.cos(theta));
+    addVelocity(texels, n, at.u + COPY_OFFSET[0] * n, at.v + COPY_OFFSET[1] * n, Math.sin(theta));
+  }
+  out.x = choppiness * velocity.x;
+  out.y = velocity.y;
+  out.z = choppiness * velocity.z;
+  return out;
+}
+
+const velocity = { x: 0, y: 0, z: 0 };
+
+/** Adds `weight` × the velocity texels' (∂Dx/∂t, ∂h/∂t, ∂Dz/∂t) at texel coordinates (u, v). */
+function addVelocity(texels: Float32Array, n: number, u: number, v: number, weight: number): void {
+  velocity.x += weight * bilinear(texels, n, u, v, 0);
+  velocity.y += weight * bilinear(texels, n, u, v, 1);
+  velocity.z += weight * bilinear(texels, n, u, v, 2);
+}
+
+const texel = { u: 0, v: 0 };
+
+/** Continuous texel coordinates of the world point (x, z) in `layer`, or null outside a local layer. */
+function layerTexel(layer: WaveLayer, x: number, z: number): { u: number; v: number } | null {
+  const { size, origin, resolution, periodic } = layer.frame;
+  texel.u = ((x - origin[0]) / size) * resolution;
+  texel.v = ((z - origin[1]) / size) * resolution;
+  if (!periodic && (texel.u < 0 || texel.v < 0 || texel.u > resolution - 1 || texel.v > resolution - 1)) return null;
+  return texel;
+}
+
+const sample: SurfaceSample = { dx: 0, height: 0, dz: 0, slopeX: 0, slopeZ: 0, dxdx: 0, dzdz: 0, dxdz: 0, dzdx: 0, restX: 0, restZ: 0 };
 
 /**
  * The summed fields at the rest point x0 that the choppy displacement moves onto (x, z),
@@ -91,6 +159,8 @@ function surfacePointOver(layers: readonly WaveLayer[], choppiness: number, t: n
     }
   }
   sampleLayers(layers, blended, t, restX, restZ, sample, true);
+  sample.restX = restX;
+  sample.restZ = restZ;
   return sample;
 }
 
@@ -109,36 +179,40 @@ function prepareBlend(layers: readonly WaveLayer[]): number {
  */
 function sampleLayers(layers: readonly WaveLayer[], blended: number, t: number, x: number, z: number, out: SurfaceSample, derivatives = false): void {
   out.dx = out.height = out.dz = out.slopeX = out.slopeZ = out.dxdx = out.dzdz = out.dxdz = out.dzdx = 0;
-  layers.forEach((layer, i) => {
-    const { size, origin, resolution, periodic } = layer.frame;
-    const u = ((x - origin[0]) / size) * resolution;
-    const v = ((z - origin[1]) / size) * resolution;
-    if (!periodic && (u < 0 || v < 0 || u > resolution - 1 || v > resolution - 1)) return;
-    const fields = layer.fieldsOnCpu(t);
+  for (let i = 0; i < layers.length; i++) {
+    const at = layerTexel(layers[i], x, z);
+    if (at === null) continue;
+    const { u, v } = at;
+    const resolution = layers[i].frame.resolution;
+    const fields = layers[i].fieldsOnCpu(t);
     if (i !== blended) {
       addSample(fields, resolution, u, v, 1, out);
-      return;
+      continue;
     }
     const theta = blendAngle(blendUniforms, x, z);
-    const [copyU, copyV] = [u + COPY_OFFSET[0] * resolution, v + COPY_OFFSET[1] * resolution];
-    addSample(fields, resolution, u, v, Math.cos(theta), out);
-    addSample(fields, resolution, copyU, copyV, Math.sin(theta), out);
-    if (!derivatives) return; // Newton's steps do without them (they converge to the same point)
+    const copyU = u + COPY_OFFSET[0] * resolution;
+    const copyV = v + COPY_OFFSET[1] * resolution;
+    const cos = Math.cos(theta);
+    const sin = Math.sin(theta);
+    addSample(fields, resolution, u, v, cos, out);
+    addSample(fields, resolution, copyU, copyV, sin, out);
+    if (!derivatives) continue; // Newton's steps do without them (they converge to the same point)
     // Every field cos θ·f1 + sin θ·f2 also changes with θ: its derivative gains (−sin θ·f1 + cos θ·f2)·∇θ
     // (for the height's slope, as in ocean.vert). θ turns over hundreds of metres: a central
     // difference over 1 m is exact enough.
-    const change = (c: number) =>
-      -Math.sin(theta) * bilinear(fields.displacement, resolution, u, v, c) + Math.cos(theta) * bilinear(fields.displacement, resolution, copyU, copyV, c);
+    const d = fields.displacement;
+    const dx = -sin * bilinear(d, resolution, u, v, 0) + cos * bilinear(d, resolution, copyU, copyV, 0);
+    const height = -sin * bilinear(d, resolution, u, v, 1) + cos * bilinear(d, resolution, copyU, copyV, 1);
+    const dz = -sin * bilinear(d, resolution, u, v, 2) + cos * bilinear(d, resolution, copyU, copyV, 2);
     const thetaX = blendAngle(blendUniforms, x + 0.5, z) - blendAngle(blendUniforms, x - 0.5, z);
     const thetaZ = blendAngle(blendUniforms, x, z + 0.5) - blendAngle(blendUniforms, x, z - 0.5);
-    const [dx, height, dz] = [change(0), change(1), change(2)];
     out.slopeX += height * thetaX;
     out.slopeZ += height * thetaZ;
     out.dxdx += dx * thetaX;
     out.dzdz += dz * thetaZ;
     out.dxdz += dx * thetaZ;
     out.dzdx += dz * thetaX;
-  });
+  }
 }
 
 /** Adds `weight` × the fields at texel coordinates (u, v) into `out`. */
@@ -166,6 +240,14 @@ function bilinear(data: Float32Array, n: number, u: number, v: number, c: number
   const j0 = Math.floor(v);
   const fu = u - i0;
   const fv = v - j0;
-  const at = (i: number, j: number) => data[4 * ((((j % n) + n) % n) * n + (((i % n) + n) % n)) + c];
-  return (1 - fv) * ((1 - fu) * at(i0, j0) + fu * at(i0 + 1, j0)) + fv * ((1 - fu) * at(i0, j0 + 1) + fu * at(i0 + 1, j0 + 1));
+  // Columns and rows wrapped into [0, n), then the four texels' channel c.
+  const column0 = ((i0 % n) + n) % n;
+  const column1 = (column0 + 1) % n;
+  const row0 = (((j0 % n) + n) % n) * n;
+  const row1 = ((row0 / n + 1) % n) * n;
+  const h00 = data[4 * (row0 + column0) + c];
+  const h10 = data[4 * (row0 + column1) + c];
+  const h01 = data[4 * (row1 + column0) + c];
+  const h11 = data[4 * (row1 + column1) + c];
+  return (1 - fv) * ((1 - fu) * h00 + fu * h10) + fv * ((1 - fu) * h01 + fu * h11);
 }

@@ -41,6 +41,12 @@ export interface WaveLayer {
   update(t: number, dt: number): void;
   /** The fields at time t on the CPU, for queries (computed on demand, then kept for that t). */
   fieldsOnCpu(t: number): LayerFieldsOnCpu;
+  /**
+   * The time derivative of the displacement field at time t on the CPU, for velocityAt: RGBA texels
+   * (∂Dx/∂t, ∂h/∂t, ∂Dz/∂t, ∂²Dx/∂z∂t) in m/s (horizontal parts for a choppiness of 1), in the
+   * texel layout of fieldsOnCpu. Computed on demand, then kept for that t.
+   */
+  velocitiesOnCpu(t: number): Float32Array;
   /** Frees every GPU resource and worker the layer made. */
   dispose(): void;
 }

@@ -172,6 +172,21 @@ test('heightAt and normalAt include the local waves: after a stone the height di
   expect(result.normalsDiffer).toBe(true);
 });
 
+test('the batch queries (heightsAt, normalsAt, velocitiesAt) on the GPU path equal the JS path and the single-point queries', async ({ page }) => {
+  await openOcean(page);
+  const result = await page.evaluate(() => window.ocean.batchQueries());
+  expect(result.largestSpeed).toBeGreaterThan(0.3); // the water moves (m/s)
+  // The queries read the JS path's CPU fields on both paths: the same numbers (float32 out).
+  expect(result.gpuVersusJs).toBeLessThan(1e-5);
+  expect(result.batchVersusSingle).toBeLessThan(1e-5);
+  expect(result.messages).toEqual([
+    'heightsAt(xz) must be an array of x0, z0, x1, z1, … (an even length); got [1, 2, 3]',
+    expect.stringMatching(/^velocitiesAt\(xz, out\) must be an array of at least 3 numbers \(3 per point\); got /),
+    'normalsAt(xz)[1] must be a finite coordinate in metres; got NaN',
+    'velocityAt(x, z) must be finite coordinates; got "Infinity, 0"',
+  ]);
+});
+
 test.describe('the Ocean API', () => {
   test('horizonDistanceFor(height) is valid before the first render and reaches the farthest vertex drawn', async ({ page }) => {
     await openOcean(page);

@@ -21,6 +21,7 @@ function fakeLayer(size: number, resolution: number): WaveLayer {
     frame: { size, origin: [0, 0], periodic: true, resolution },
     update: () => {},
     fieldsOnCpu: () => fields,
+    velocitiesOnCpu: () => fields.displacement,
     dispose: () => {},
   };
 }

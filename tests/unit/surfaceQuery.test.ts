@@ -14,7 +14,11 @@
  */
 import { describe, expect, it } from 'vitest';
 import { blendAngle, COPY_OFFSET, patchBlendUniforms } from '../../src/layers/patchBlend';
-import { heightAt, normalAt } from '../../src/layers/surfaceQuery';
+import { heightAt, normalAt, velocityAt } from '../../src/layers/surfaceQuery';
+import { CpuWaveFields } from '../../src/fft/cpuWaveFields';
+import { validateParameters } from '../../src/parameters/parameters';
+import { GRAVITY } from '../../src/spectrum/dispersion';
+import { createCascadeSpectra } from '../../src/spectrum/initialSpectrum';
 import type { LayerFrame, WaveLayer } from '../../src/layers/waveLayer';
 
 /** A layer with fixed fields (the same at every t), recording the times it was asked for. */
@@ -22,7 +26,7 @@ interface FakeLayer extends WaveLayer {
   readonly times: number[];
 }
 
-function fakeLayer(frame: LayerFrame, displacement: Float32Array, derivatives: Float32Array): FakeLayer {
+function fakeLayer(frame: LayerFrame, displacement: Float32Array, derivatives: Float32Array, velocities = new Float32Array(displacement.length)): FakeLayer {
   const times: number[] = [];
   return {
     times,
@@ -33,16 +37,19 @@ function fakeLayer(frame: LayerFrame, displacement: Float32Array, derivatives: F
       times.push(t);
       return { displacement, derivatives };
     },
+    velocitiesOnCpu: () => velocities,
     dispose: () => {},
   };
 }
 
-/** The wave h = A·cos(k·x + φ) with its λ = 1 fields. */
+/** The wave h = A·cos(k·x + φ − ωt) at t = 0 with its λ = 1 fields. */
 interface Wave {
   amplitude: number;
   kx: number;
   kz: number;
   phase: number;
+  /** rad/s, for the velocities (0: a wave that does not move). */
+  omega?: number;
 }
 
 /** `share` of the wave's fields (layout of waveFieldLayout.ts) sampled on a layer's texels. */
@@ -50,7 +57,8 @@ function waveLayer(wave: Wave, share: number, frame: LayerFrame): FakeLayer {
   const n = frame.resolution;
   const displacement = new Float32Array(4 * n * n);
   const derivatives = new Float32Array(4 * n * n);
-  const { amplitude: a, kx, kz, phase } = wave;
+  const velocities = new Float32Array(4 * n * n);
+  const { amplitude: a, kx, kz, phase, omega = 0 } = wave;
   const k = Math.hypot(kx, kz);
   for (let j = 0; j < n; j++) {
     for (let i = 0; i < n; i++) {
@@ -63,9 +71,11 @@ function waveLayer(wave: Wave, share: number, frame: LayerFrame): FakeLayer {
       // (Dx, h, Dz, ∂Dx/∂z) and (∂h/∂x, ∂h/∂z, ∂Dx/∂x, ∂Dz/∂z) for D = −k̂·A·sin θ.
       displacement.set([(-kx / k) * s, c, (-kz / k) * s, ((-kx * kz) / k) * c], t);
       derivatives.set([-kx * s, -kz * s, ((-kx * kx) / k) * c, ((-kz * kz) / k) * c], t);
+      // Their time derivatives (θ falls by ω per second): ∂c/∂t = ω·s, ∂s/∂t = −ω·c.
+      velocities.set([(kx / k) * omega * c, omega * s, (kz / k) * omega * c, ((-kx * kz) / k) * omega * s], t);
     }
   }
-  return fakeLayer(frame, displacement, derivatives);
+  return fakeLayer(frame, displacement, derivatives, velocities);
 }
 
 /**
@@ -217,5 +227,95 @@ describe('heightAt with a non-periodic layer', () => {
     expect(heightAt([patch], 1, 0, 0, 0)).toBe(0);
     expect(heightAt([patch], 1, 0, 120, 200)).toBe(0);
     expect(Math.abs(heightAt([patch], 1, 0, 105, 205) - 0.25)).toBeLessThan(1e-7);
+  });
+});
+
+/**
+ * Where the surface particle of rest point (x0, z0) is at time t: x0 + (λ·Dx, h, λ·Dz), the fields
+ * sampled bilinearly with REPEAT as the GPU does, the last layer as cos θ·P(x) + sin θ·P(x + o).
+ */
+function particleAt(layers: readonly WaveLayer[], lambda: number, t: number, x0: number, z0: number): number[] {
+  const sum = [0, 0, 0];
+  layers.forEach((layer, i) => {
+    const { size, resolution: n } = layer.frame;
+    const { displacement } = layer.fieldsOnCpu(t);
+    const sample = (u: number, v: number, c: number) => {
+      const [i0, j0] = [Math.floor(u), Math.floor(v)];
+      const at = (a: number, b: number) => displacement[4 * ((((b % n) + n) % n) * n + (((a % n) + n) % n)) + c];
+      const [fu, fv] = [u - i0, v - j0];
+      return (1 - fv) * ((1 - fu) * at(i0, j0) + fu * at(i0 + 1, j0)) + fv * ((1 - fu) * at(i0, j0 + 1) + fu * at(i0 + 1, j0 + 1));
+    };
+    const [u, v] = [(x0 / size) * n, (z0 / size) * n];
+    const last = i === layers.length - 1;
+    const theta = last ? blendAngle(patchBlendUniforms(size), x0, z0) : 0;
+    for (let c = 0; c < 3; c++) {
+      sum[c] += last ? Math.cos(theta) * sample(u, v, c) + Math.sin(theta) * sample(u + COPY_OFFSET[0] * n, v + COPY_OFFSET[1] * n, c) : sample(u, v, c);
+    }
+  });
+  return [x0 + lambda * sum[0], sum[1], z0 + lambda * sum[2]];
+}
+
+describe('velocityAt', () => {
+  it('on one deep-water wave: the surface particles go round circles at speed A·ω (Airy; within 2 %)', () => {
+    // Linear (Airy) theory: at the surface of a deep-water wave of amplitude A and frequency ω the
+    // particles move on circles of radius A at speed A·ω (Dean & Dalrymple 1991, "Water Wave
+    // Mechanics for Engineers and Scientists", §4.4, the orbital velocities u = A·ω·cos θ,
+    // w = A·ω·sin θ at z = 0). With choppiness 1 the surface is that trochoid.
+    const k = (2 * Math.PI) / 40;
+    const wave: Wave = { amplitude: 1.5, kx: 0.6 * k, kz: 0.8 * k, phase: 0.3, omega: Math.sqrt(GRAVITY * k) };
+    const layers = [waveLayer(wave, 1, { size: 80, origin: [0, 0], periodic: true, resolution: 256 }), waveLayer(wave, 0, { size: 400, origin: [0, 0], periodic: true, resolution: 64 })];
+    const out = { x: 0, y: 0, z: 0 };
+    let worst = 0;
+    for (let x = 0; x < 40; x += 3.1) {
+      velocityAt(layers, 1, 0, x, 7, out);
+      worst = Math.max(worst, Math.abs(Math.hypot(out.x, out.y, out.z) / (wave.amplitude * wave.omega!) - 1));
+    }
+    console.log(`velocityAt, one Airy wave: speed within ${(100 * worst).toFixed(3)} % of A·ω`);
+    expect(worst).toBeLessThan(0.02);
+  });
+
+  it('is the time derivative of the displacement of the same surface particle, over a real three-cascade sea (within 2 %)', () => {
+    // The JS path's fields of the default cascades, as a layer each; the particle at the rest point
+    // x0 is at P(x0, t) = x0 + (λ·Dx, h, λ·Dz)(x0, t): its velocity by central difference over ±2 ms.
+    const parameters = validateParameters({ resolution: 64, windSpeed: 12, seed: 5, choppiness: 1.2 });
+    const layers: WaveLayer[] = createCascadeSpectra(parameters).map((spectrum) => {
+      const fields = new CpuWaveFields(spectrum);
+      let shown = NaN;
+      return {
+        textures: { displacement: { value: null }, derivatives: { value: null } },
+        frame: { size: spectrum.patchSize, origin: [0, 0], periodic: true, resolution: spectrum.resolution },
+        update: () => {},
+        fieldsOnCpu: (t: number) => {
+          if (t !== shown) {
+            fields.update(t);
+            shown = t;
+          }
+          return fields;
+        },
+        velocitiesOnCpu: (t: number) => fields.updateVelocities(t),
+        dispose: () => {},
+      };
+    });
+    const lambda = parameters.choppiness;
+    const t = 37.25;
+    const h = 2e-3;
+    const out = { x: 0, y: 0, z: 0 };
+    let worst = 0;
+    let speeds = 0;
+    // Particles picked by their rest points x0: each is at P(x0, t) = x0 + (λ·Dx, h, λ·Dz)(x0, t),
+    // over which velocityAt is asked (it finds x0 again by Newton's method).
+    for (const [x0, z0] of [[3.2, -7.1], [41.5, 12.25], [-120.3, 66.6], [250.75, -310.5], [9.9, 9.9]]) {
+      const [px, , pz] = particleAt(layers, lambda, t, x0, z0);
+      velocityAt(layers, lambda, t, px, pz, out);
+      const before = particleAt(layers, lambda, t - h, x0, z0);
+      const after = particleAt(layers, lambda, t + h, x0, z0);
+      const expected = [0, 1, 2].map((c) => (after[c] - before[c]) / (2 * h));
+      const speed = Math.hypot(...expected);
+      speeds += speed;
+      worst = Math.max(worst, Math.hypot(out.x - expected[0], out.y - expected[1], out.z - expected[2]) / speed);
+    }
+    console.log(`velocityAt against dP/dt of the particle: worst ${(100 * worst).toFixed(3)} % of its speed (mean speed ${(speeds / 5).toFixed(2)} m/s)`);
+    expect(speeds / 5).toBeGreaterThan(0.3); // the particles move (m/s)
+    expect(worst).toBeLessThan(0.02);
   });
 });

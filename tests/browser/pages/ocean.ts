@@ -187,6 +187,54 @@ const harness = {
       return { largestLocal, worstHeight, normalsDiffer };
     });
   },
+  /**
+   * The batch queries on the GPU path against the JS path and against the single-point ones, and
+   * their errors: the largest differences, and each bad call's message.
+   */
+  batchQueries(): { gpuVersusJs: number; batchVersusSingle: number; largestSpeed: number; messages: string[] } {
+    const options = { resolution: 64, windSpeed: 11, seed: 8, worker: false } as const;
+    const oceans = [new Ocean(renderer, { ...options, path: 'gpu' }), new Ocean(renderer, { ...options, path: 'js' })];
+    const xz = new Float64Array(2 * 200);
+    for (let p = 0; p < 200; p++) [xz[2 * p], xz[2 * p + 1]] = [-80 + (p % 20) * 8.3, -50 + Math.floor(p / 20) * 9.7];
+    const results = oceans.map((ocean) => {
+      ocean.update(0);
+      ocean.localWaves!.drop(3, 4);
+      for (let t = 0.1; t < 2; t += 0.1) ocean.update(21 + t);
+      return { heights: ocean.heightsAt(xz, new Float32Array(200)), normals: ocean.normalsAt(xz, new Float32Array(600)), velocities: ocean.velocitiesAt(xz, new Float64Array(600)) };
+    });
+    let [gpuVersusJs, batchVersusSingle, largestSpeed] = [0, 0, 0];
+    const [gpu, js] = results;
+    for (const key of ['heights', 'normals', 'velocities'] as const) {
+      for (let i = 0; i < js[key].length; i++) gpuVersusJs = Math.max(gpuVersusJs, Math.abs(gpu[key][i] - js[key][i]));
+    }
+    const vector = new Vector3();
+    for (let p = 0; p < 200; p++) {
+      const [x, z] = [xz[2 * p], xz[2 * p + 1]];
+      const ocean = oceans[1];
+      batchVersusSingle = Math.max(batchVersusSingle, Math.abs(ocean.heightAt(x, z) - js.heights[p]));
+      ocean.velocityAt(x, z, vector);
+      largestSpeed = Math.max(largestSpeed, vector.length());
+      for (const [c, value] of [vector.x, vector.y, vector.z].entries()) batchVersusSingle = Math.max(batchVersusSingle, Math.abs(value - js.velocities[3 * p + c]));
+      ocean.normalAt(x, z, vector);
+      for (const [c, value] of [vector.x, vector.y, vector.z].entries()) batchVersusSingle = Math.max(batchVersusSingle, Math.abs(value - js.normals[3 * p + c]));
+    }
+    const messages: string[] = [];
+    for (const attempt of [
+      () => oceans[1].heightsAt([1, 2, 3], new Float32Array(2)),
+      () => oceans[1].velocitiesAt([1, 2], new Float32Array(2)),
+      () => oceans[1].normalsAt([1, NaN], new Float32Array(3)),
+      () => oceans[1].velocityAt(Infinity, 0),
+    ]) {
+      try {
+        attempt();
+        messages.push('(no error)');
+      } catch (error) {
+        messages.push((error as Error).message);
+      }
+    }
+    for (const ocean of oceans) ocean.dispose();
+    return { gpuVersusJs, batchVersusSingle, largestSpeed, messages };
+  },
   horizonCheck(changes: Partial<SimulationParameters>): { before: number; beforeAtSeaLevel: number; seaLevel: number; after: number; farthest: number } {
     return withOcean(changes, (ocean) => {
       const before = ocean.horizonDistanceFor(camera.position.y);
