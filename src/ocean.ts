@@ -115,10 +115,17 @@ export class Ocean extends Object3D {
     const sim = this.simulation;
     this.surface = new OceanSurface(
       { environment: this.sky.environment, sunDirection: this.sky.skyUniforms.skySunDirection },
-      () => ({ layers: sim.surfaceLayers, choppiness: sim.parameters.choppiness, foam: sim.foam.texture }),
+      // 6 RMS: a crest that high comes once in ~10⁸ waves (Rayleigh heights); plus the local waves' metre.
+      () => ({
+        layers: sim.surfaceLayers,
+        choppiness: sim.parameters.choppiness,
+        foam: sim.foam.texture,
+        surfaceBound: 6 * this.heightRms + 1,
+        waterHeightAt: (x: number, z: number) => heightAt(sim.surfaceLayers, sim.parameters.choppiness, this.currentTime, x, z),
+      }),
       shading,
     );
-    this.skyBackground = new SkyBackground(this.sky);
+    this.skyBackground = new SkyBackground(this.sky, { backgroundWater: this.surface.backgroundWater, deepWater: this.surface.material.uniforms.scatterColor });
     this.add(this.surface, this.skyBackground);
   }
 

@@ -10,6 +10,7 @@
 #include "sky/environmentLookup.glsl"
 #include "surface/waveLayers.glsl"
 #include "surface/foam.glsl"
+#include "surface/fromBelow.glsl"
 
 uniform vec3 sunDirection;     // towards the sun
 uniform vec3 sunColor;        // radiance of the glint
@@ -22,6 +23,16 @@ uniform float viewDepth;
 uniform float causticPower;
 uniform vec3 causticColor;
 uniform float heightScale;     // metres shown as full white in the height mode
+// Where the eye is (OceanSurface.eyeSide): EYE_ABOVE in the air, EYE_BELOW in the water, EYE_NEAR
+// at the surface, where the near plane may cross it: there the triangles near the eye tell by the
+// side they show it, and farther ones (sub-pixel slivers at grazing angles) follow eyeInWater,
+// whether the eye itself is under the water's height.
+uniform int eyeSide;
+uniform bool eyeInWater;
+#define WATERLINE_REACH 5.0  // metres
+#define EYE_ABOVE 0
+#define EYE_BELOW 1
+#define EYE_NEAR 2
 
 varying vec2 vLayerUv[LAYER_COUNT];
 varying float vCrossDerivative;  // λ·Σ ∂Dx/∂z, see ocean.vert
@@ -96,6 +107,16 @@ void main() {
   #elif SHADING_MODE == SHADING_REFRACTION
   vec3 colour = throughWater(environmentRadiance(refracted), refracted, absorption, scatterColor, viewDepth);
   #else
+  // Seen from below: the horizon grid's triangles face up (counter-clockwise seen from above), so
+  // from under the water they show their back.
+  vec3 fromEye = vWorldPosition - cameraPosition;
+  bool nearEye = dot(fromEye, fromEye) < WATERLINE_REACH * WATERLINE_REACH;
+  if (eyeSide == EYE_BELOW || (eyeSide == EYE_NEAR && (nearEye ? !gl_FrontFacing : eyeInWater))) {
+    gl_FragColor = vec4(surfaceFromBelow(view, choppyNormal(derivatives, dxDz), length(fromEye), iorAir, iorWater, absorption, scatterColor), 1.0);
+    #include <tonemapping_fragment>
+    #include <colorspace_fragment>
+    return;
+  }
   vec3 sky = environmentRadiance(reflected);
   vec3 water = throughWater(environmentRadiance(refracted), refracted, absorption, scatterColor, viewDepth);
   vec3 glint = sunColor * reflectance * pow(max(dot(reflected, sunDirection), 0.0), sunShininess);

@@ -7,7 +7,6 @@
 import { ACESFilmicToneMapping, PerspectiveCamera, WebGLRenderer, type WebGLRendererParameters } from 'three';
 import { Ocean, type OceanOptions } from '../ocean';
 import { skyboxFaceUrls } from '../render/skyEnvironment';
-import { MIN_HEIGHT } from './flyControls';
 import { simulationParameters, type AppState } from './urlState';
 
 /** The app's renderer: antialiased, ACES filmic tone mapping. The caller sets pixel ratio and size. */
@@ -52,18 +51,11 @@ export function loadAppSkybox(ocean: Ocean, skybox: string): Promise<void> | nul
 }
 
 /**
- * Before each render: the sea at time `t`, the eye kept above the crest under it, and the far
- * plane out to the horizon.
+ * Before each render: the sea at time `t` and the far plane out to the horizon. The eye may be on
+ * either side of the surface, or cross it: the sea draws itself from below too.
  */
 export function prepareAppFrame(ocean: Ocean, camera: PerspectiveCamera, t: number): void {
   ocean.update(t);
-  // The controls keep the eye above the mean sea level; near the water it must also stay above the
-  // crest under it. heightAt updates the fields on the CPU, so it is asked only when a crest
-  // (4 standard deviations of the height) could reach the camera.
-  if (camera.position.y < MIN_HEIGHT + 4 * ocean.heightRms) {
-    const water = ocean.heightAt(camera.position.x, camera.position.z);
-    camera.position.y = Math.max(camera.position.y, water + MIN_HEIGHT);
-  }
   fitFarPlane(ocean, camera);
 }
 

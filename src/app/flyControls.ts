@@ -20,8 +20,8 @@
  *   touch               one-finger drag turns, two-finger drag moves (up = forward, sideways =
  *                       strafe).
  *
- * Movement is velocity × dt, so it does not depend on the frame rate. The camera stays at least
- * MIN_HEIGHT above the mean sea level y = 0 and pitch stays within ±MAX_PITCH.
+ * Movement is velocity × dt, so it does not depend on the frame rate. The camera may dive under the
+ * sea down to MIN_HEIGHT (200 m below the mean sea level y = 0), and pitch stays within ±MAX_PITCH.
  *
  * The math (direction, left vector, one movement step, turning) is in pure functions below,
  * unit-tested in Node; FlyControls wires them to DOM events and a three.js camera.
@@ -31,7 +31,7 @@ import type { PerspectiveCamera } from 'three';
 export type Vec3 = [number, number, number];
 
 export const MAX_PITCH = 89;
-export const MIN_HEIGHT = 1;
+export const MIN_HEIGHT = -200;
 export const MIN_SPEED = 0.5;
 export const MAX_SPEED = 500;
 export const DEFAULT_SPEED = 20;

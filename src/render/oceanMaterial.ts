@@ -12,6 +12,9 @@ import { DEFAULT_SHADING, SHADING_MODES, SHADING_OPTIONS, type ShadingChanges, t
 import { shaderSource, withLayerCount } from '../shaderSource';
 import { finestTexel, RING_COUNT } from './horizonGrid';
 
+/** Where the eye is against the sea surface (the uniform eyeSide of ocean.frag). */
+export const EYE_SIDE = { above: 0, below: 1, near: 2 } as const;
+
 /** Shading options as the Ocean takes them: ShadingChanges (src/parameters/sceneOptions.ts). */
 export type OceanShadingOptions = ShadingChanges;
 
@@ -60,6 +63,8 @@ export class OceanMaterial extends ShaderMaterial {
           causticPower: { value: DEFAULT_SHADING.causticPower },
           causticColor: { value: new Vector3(...DEFAULT_SHADING.causticColor) },
           heightScale: { value: 3 },
+          eyeSide: { value: EYE_SIDE.above },
+          eyeInWater: { value: false },
           captureRestPoint: { value: false },
           captureWidth: { value: 1 },
           captureHeight: { value: 1 },

@@ -7,13 +7,19 @@
 import { Mesh, Vector2, Vector3, type Camera, type Scene, type Texture, type WebGLRenderer } from 'three';
 import type { WaveLayer } from '../layers/waveLayer';
 import { cellsPerRingForViewport, createHorizonGridGeometry, farEdgeDistance, RingFrames } from './horizonGrid';
-import { OceanMaterial, type OceanMaterialInputs, type OceanShadingOptions } from './oceanMaterial';
+import { BACKGROUND_WATER } from './skyBackground';
+import { EYE_SIDE, OceanMaterial, type OceanMaterialInputs, type OceanShadingOptions } from './oceanMaterial';
+
+/** Metres from the surface within which the eye is taken to be at the waterline (about a camera's near distance). */
+const WATERLINE_BAND = 0.5;
 
 export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeometry>, OceanMaterial> {
   private cellsPerRing = 0;
   private readonly rings = new RingFrames();
   private readonly viewport = new Vector2();
   private readonly cameraPosition = new Vector3();
+  /** Where the sky background shows the deep water instead of the sky (BACKGROUND_WATER). */
+  readonly backgroundWater = { value: 0 };
 
   /**
    * @param waves the layers to draw and the choppiness, asked before every render (they change
@@ -21,7 +27,15 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
    */
   constructor(
     inputs: OceanMaterialInputs,
-    private readonly waves: () => { layers: readonly WaveLayer[]; choppiness: number; foam: { value: Texture | null } },
+    private readonly waves: () => {
+      layers: readonly WaveLayer[];
+      choppiness: number;
+      foam: { value: Texture | null };
+      /** No crest rises above it and no trough sinks below its negative (m); without it the eye is taken to be above the sea. */
+      surfaceBound?: number;
+      /** The water's height over a point (Ocean.heightAt), asked when the eye is between crest and trough heights. */
+      waterHeightAt?: (x: number, z: number) => number;
+    },
     shading: OceanShadingOptions = {},
   ) {
     super(createHorizonGridGeometry(32), new OceanMaterial(inputs, shading));
@@ -64,13 +78,34 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
   placeRings(camera: Camera): void {
     const position = camera.getWorldPosition(this.cameraPosition);
     const u = this.material.uniforms;
-    const { layers, choppiness, foam } = this.waves();
+    const { layers, choppiness, foam, surfaceBound, waterHeightAt } = this.waves();
     this.material.bindLayers(layers, choppiness, foam);
     this.rings.update(position.x, position.z, position.y, layers, this.cellsPerRing);
     u.ringFrames.value = this.rings.frames;
     u.ringLayerUvOrigins.value = this.rings.uvOrigins;
     u.ringOffsets.value = this.rings.offsets;
     u.halfRingCells.value = this.cellsPerRing / 2;
+    const side = this.eyeSide(position, surfaceBound, waterHeightAt);
+    u.eyeSide.value = side;
+    // What the sky background shows (background.frag): under the water, the depths wherever no
+    // surface is drawn; with the eye at the surface, the depths below the horizon only.
+    this.backgroundWater.value =
+      side === EYE_SIDE.below ? BACKGROUND_WATER.everywhere : side === EYE_SIDE.near ? BACKGROUND_WATER.belowHorizon : BACKGROUND_WATER.none;
+  }
+
+  /**
+   * Which side of the sea the eye is on. A ray from an eye in the air meets the surface first from
+   * above, one from an eye in the water first from below, so one test of the eye decides for the
+   * whole picture; only within WATERLINE_BAND of the surface, where the near plane crosses it, each
+   * triangle tells by the side it shows (ocean.frag). The water's height is asked only between the
+   * highest crest and the lowest trough.
+   */
+  private eyeSide(position: Vector3, surfaceBound: number | undefined, waterHeightAt: ((x: number, z: number) => number) | undefined): number {
+    if (surfaceBound === undefined || position.y > surfaceBound + WATERLINE_BAND) return EYE_SIDE.above;
+    if (position.y < -surfaceBound - WATERLINE_BAND) return EYE_SIDE.below;
+    const above = waterHeightAt === undefined ? 0 : position.y - waterHeightAt(position.x, position.z);
+    this.material.uniforms.eyeInWater.value = above < 0;
+    return above > WATERLINE_BAND ? EYE_SIDE.above : above < -WATERLINE_BAND ? EYE_SIDE.below : EYE_SIDE.near;
   }
 
   dispose(): void {

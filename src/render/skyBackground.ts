@@ -10,15 +10,25 @@
  * is already display-referred (LDR sRGB) and shows as it is. Owns its geometry and material;
  * dispose() frees them (not the SkyEnvironment).
  */
-import { BufferGeometry, Float32BufferAttribute, Matrix3, Matrix4, Mesh, ShaderMaterial, type Camera, type Scene, type WebGLRenderer } from 'three';
+import { BufferGeometry, Float32BufferAttribute, Matrix3, Matrix4, Mesh, ShaderMaterial, Vector3, type Camera, type Scene, type WebGLRenderer } from 'three';
 import { shaderSource } from '../shaderSource';
 import type { SkyEnvironment } from './skyEnvironment';
+
+/** Where the background shows the deep water (the eye under or at the surface) instead of the sky. */
+export const BACKGROUND_WATER = { none: 0, belowHorizon: 1, everywhere: 2 } as const;
 
 /** Drawn after opaque objects with a lower renderOrder (three.js sorts opaque objects by it first). */
 const SKY_RENDER_ORDER = 1000;
 
 export class SkyBackground extends Mesh<BufferGeometry, ShaderMaterial> {
-  constructor(private readonly sky: SkyEnvironment) {
+  /**
+   * @param underWater optional: where the deep water shows instead of the sky (BACKGROUND_WATER,
+   *   set by the OceanSurface before each frame), and its radiance (the sea's scatterColor)
+   */
+  constructor(
+    private readonly sky: SkyEnvironment,
+    underWater: { backgroundWater: { value: number }; deepWater: { value: Vector3 } } = { backgroundWater: { value: BACKGROUND_WATER.none }, deepWater: { value: new Vector3() } },
+  ) {
     const material = new ShaderMaterial({
       name: 'skyBackground',
       vertexShader: shaderSource('sky/background.vert'),
@@ -27,6 +37,8 @@ export class SkyBackground extends Mesh<BufferGeometry, ShaderMaterial> {
         skyEnvironment: sky.environment,
         skyProjectionInverse: { value: new Matrix4() },
         skyCameraRotation: { value: new Matrix3() },
+        backgroundWater: underWater.backgroundWater,
+        deepWater: underWater.deepWater,
       },
       depthWrite: false, // depthTest stays on: LessEqual passes at the far plane where nothing was drawn
     });

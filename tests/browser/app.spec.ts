@@ -643,15 +643,56 @@ test('the inspector draws the real height field: a tile matches the texture it s
   expect(finest.worst).toBeLessThan(0.03);
 });
 
-test('flying low over a rough sea, the eye stays above the crest under it', async ({ page }) => {
-  await openApp(page, 'resolution=64&windSpeed=16&paused=1&t=8&cam=10,1,20,0,-10');
-  await frames(page, 3);
-  const { eye, water, rms } = await page.evaluate(() => {
-    const { camera, ocean } = window.oceanApp;
-    return { eye: camera.position.y, water: ocean.heightAt(camera.position.x, camera.position.z), rms: ocean.heightRms };
+test.describe('under water', () => {
+  /** Mean (r, g, b) of the rows [from, to) of the canvas (its top row first), from raw RGBA read bottom-up. */
+  function rowsMean(data: Buffer, width: number, height: number, from: number, to: number): number[] {
+    const sum = [0, 0, 0];
+    for (let y = from; y < to; y++) {
+      const row = height - 1 - y;
+      for (let x = 0; x < width; x++) for (let c = 0; c < 3; c++) sum[c] += data[4 * (row * width + x) + c];
+    }
+    return sum.map((v) => v / ((to - from) * width));
+  }
+
+  test('the camera dives; 6 m down looking level, the view is the water\'s own colour, darker and greener-blue than the sky, never the sky', async ({ page }) => {
+    await openApp(page, 'resolution=64&windSpeed=8&paused=1&t=5&cam=0,-6,0,0,0', { width: 320, height: 180 }, false);
+    const eye = await page.evaluate(() => window.oceanApp.camera.position.y);
+    expect(eye).toBe(-6); // not pushed back above the water
+    const data = await pixels(page);
+    // Below the horizon: deep water, the sea's scatterColor tone-mapped (about (0, 47, 61)); no pixel
+    // there is as bright as the sky (whose every row is above 120 in blue).
+    const [r, g, b] = rowsMean(data, 320, 180, 100, 180);
+    expect(r).toBeLessThan(15);
+    expect(b).toBeGreaterThan(g);
+    expect(b).toBeLessThan(110);
   });
-  expect(rms).toBeGreaterThan(0.5); // a sea whose crests reach above 1 m
-  expect(eye).toBeGreaterThanOrEqual(water + 1 - 1e-6);
+
+  test('at the surface, the waterline: sky above, water below, one boundary across the picture', async ({ page }) => {
+    await openApp(page, 'resolution=64&windSpeed=8&paused=1&t=5&cam=0,0,0,0,0', { width: 320, height: 180 }, false);
+    // The eye exactly at the water's height under it: the near plane crosses the surface.
+    await page.evaluate(() => {
+      const { ocean, controls } = window.oceanApp;
+      controls.pose = { position: [0, ocean.heightAt(0, 0), 0], yaw: 0, pitch: 0 };
+    });
+    await frames(page, 2);
+    const data = await pixels(page);
+    const top = rowsMean(data, 320, 180, 0, 40);
+    const bottom = rowsMean(data, 320, 180, 140, 180);
+    expect(top[2]).toBeGreaterThan(150); // the sky
+    expect(bottom[2]).toBeLessThan(110); // the water, from inside it
+    // In every column, once the water begins (8 dark pixels in a row) it does not end: no band of
+    // sky colour under the waterline. (Above it the sea seen from above may have dark troughs.)
+    let columnsWithOneBoundary = 0;
+    for (let x = 0; x < 320; x += 8) {
+      const dark = (y: number) => data[4 * ((179 - y) * 320 + x) + 2] < 130;
+      let start = -1;
+      for (let y = 0; y + 8 <= 180 && start < 0; y++) if ([0, 1, 2, 3, 4, 5, 6, 7].every((d) => dark(y + d))) start = y;
+      let clean = start > 0;
+      for (let y = start; clean && y < 180; y++) clean = dark(y);
+      if (clean) columnsWithOneBoundary++;
+    }
+    expect(columnsWithOneBoundary).toBeGreaterThanOrEqual(36); // of 40
+  });
 });
 
 test.describe('failures the app explains', () => {

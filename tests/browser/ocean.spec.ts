@@ -187,6 +187,23 @@ test('the batch queries (heightsAt, normalsAt, velocitiesAt) on the GPU path equ
   ]);
 });
 
+test.describe('under water', () => {
+  for (const ior of [1.333, 1.5]) {
+    test(`Snell's window: looking up from under a calm sea, the sky shows within asin(1/n) of the zenith (n = ${ior}, within 1°)`, async ({ page }) => {
+      // Snell's law at the water–air interface: light from the whole sky reaches the eye through a
+      // cone of half-angle asin(n_air/n_water) (48.6° for water, 41.8° for n = 1.5); outside it the
+      // surface reflects totally (Born & Wolf, "Principles of Optics", §1.5.4).
+      await openOcean(page, 512, 512);
+      const { edgeAngles, centreRed } = await page.evaluate((n) => window.ocean.snellWindow(n), ior);
+      const expected = (Math.asin(1 / ior) * 180) / Math.PI;
+      console.log(`Snell's window at n = ${ior}: edges at ${edgeAngles.map((a) => a.toFixed(2)).join(', ')}° (asin(1/n) = ${expected.toFixed(2)}°)`);
+      expect(centreRed).toBeGreaterThan(50); // the sky, straight up
+      expect(edgeAngles).toHaveLength(4);
+      for (const angle of edgeAngles) expect(Math.abs(angle - expected)).toBeLessThan(1);
+    });
+  }
+});
+
 test.describe('the Ocean API', () => {
   test('horizonDistanceFor(height) is valid before the first render and reaches the farthest vertex drawn', async ({ page }) => {
     await openOcean(page);

@@ -117,9 +117,10 @@ describe('step', () => {
     close(step(start, 0, 0, held({ forward: true }), 10, -1), start);
   });
 
-  it('keeps the camera at least MIN_HEIGHT above the sea', () => {
-    expect(step([0, 2, 0], 0, -60, held({ forward: true }), 10, 1)[1]).toBe(MIN_HEIGHT);
-    expect(step([0, 2, 0], 0, 0, held({ down: true }), 10, 1)[1]).toBe(MIN_HEIGHT);
+  it('dives under the sea, but not deeper than MIN_HEIGHT (200 m down)', () => {
+    expect(step([0, 2, 0], 0, 0, held({ down: true }), 10, 1)[1]).toBeCloseTo(-8, 9);
+    expect(step([0, -195, 0], 0, -60, held({ forward: true }), 10, 1)[1]).toBe(MIN_HEIGHT);
+    expect(step([0, -195, 0], 0, 0, held({ down: true }), 10, 1)[1]).toBe(MIN_HEIGHT);
   });
 });
 

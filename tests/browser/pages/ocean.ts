@@ -60,6 +60,8 @@ const environment = { value: uniformCube.texture };
 
 let simulation: OceanSimulation | null = null;
 let surface: OceanSurface | null = null;
+/** What setup's surface is told bounds the waves (undefined: the eye is taken to be above them). */
+let surfaceBound: number | undefined;
 
 function setup(parameters: Partial<SimulationParameters>, shading: OceanShadingOptions = {}): void {
   surface?.removeFromParent();
@@ -69,7 +71,7 @@ function setup(parameters: Partial<SimulationParameters>, shading: OceanShadingO
   const sim = simulation;
   surface = new OceanSurface(
     { environment, sunDirection: { value: sunDirection } },
-    () => ({ layers: sim.surfaceLayers, choppiness: sim.parameters.choppiness, foam: sim.foam.texture }),
+    () => ({ layers: sim.surfaceLayers, choppiness: sim.parameters.choppiness, foam: sim.foam.texture, surfaceBound }),
     shading,
   );
   scene.add(surface);
@@ -234,6 +236,45 @@ const harness = {
     }
     for (const ocean of oceans) ocean.dispose();
     return { gpuVersusJs, batchVersusSingle, largestSpeed, messages };
+  },
+  /**
+   * Snell's window: a calm sea seen straight up from 1 m under it with a 120° lens, under a
+   * uniform sky, linear output. Returns, along the picture's middle row and column, the angles from
+   * the zenith where the sky's light ends (scanning out from the centre, the first pixel that shows
+   * only deep water: red 0, as scatterColor has none), in degrees.
+   */
+  snellWindow(ior: number): { edgeAngles: number[]; centreRed: number } {
+    surfaceBound = 0.5;
+    setup({ resolution: 64, windSpeed: 0 }, { ior });
+    const fov = 120;
+    const lens = new PerspectiveCamera(fov, 1, 0.1, 1e5);
+    lens.position.set(0, -1, 0);
+    lens.up.set(0, 0, -1);
+    lens.lookAt(0, 10, 0);
+    lens.updateMatrixWorld();
+    renderer.toneMapping = NoToneMapping;
+    renderer.outputColorSpace = LinearSRGBColorSpace;
+    simulation!.update(3);
+    // Twice: the first draw after setup binds the layers (a new LAYER_COUNT recompiles) and shows no sea.
+    renderer.render(scene, lens);
+    renderer.render(scene, lens);
+    const gl = renderer.getContext();
+    const pixels = new Uint8Array(4 * width * height);
+    gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+    surfaceBound = undefined;
+    const red = (x: number, y: number) => pixels[4 * (y * width + x)];
+    const centre = width / 2;
+    const toAngle = (pixelsFromCentre: number) => (Math.atan((pixelsFromCentre / (height / 2)) * Math.tan(((fov / 2) * Math.PI) / 180)) * 180) / Math.PI;
+    const edgeAngles: number[] = [];
+    for (const [dx, dy] of [[1, 0], [-1, 0], [0, 1], [0, -1]]) {
+      for (let r = 0; r < centre; r++) {
+        if (red(centre + dx * r, centre + dy * r) === 0) {
+          edgeAngles.push(toAngle(r - 0.5)); // the edge lies between this pixel's centre and the last lit one's
+          break;
+        }
+      }
+    }
+    return { edgeAngles, centreRed: red(centre, centre) };
   },
   horizonCheck(changes: Partial<SimulationParameters>): { before: number; beforeAtSeaLevel: number; seaLevel: number; after: number; farthest: number } {
     return withOcean(changes, (ocean) => {
