@@ -41,6 +41,7 @@ const FEATURES_DIR = join(ROOT, 'docs', 'features');
 const FEATURES = [
   { name: 'whitecaps in a storm', file: 'whitecaps.png', query: 'windSpeed=20&seed=7&paused=1&t=30&cam=0,25,0,-53.13,-12' },
   { name: 'a boat and its wake', file: 'wake.png', query: 'windSpeed=4&seed=7&boat=1&paused=1&t=40&cam=0,30,0,-20,-30' },
+  { name: 'under water', file: 'underwater.png', query: 'windSpeed=6&seed=7&paused=1&t=12.5&cam=0,-4,0,-150,45' },
 ];
 const SHOT = join(ROOT, 'scripts', 'shot.mjs');
 

@@ -28,6 +28,11 @@ for (const [width, height] of [
   }
 }
 
+test('under water at 400x225', async ({ page }) => {
+  await shot(page, 'view=underwater', 400, 225);
+  await expect(page.locator('canvas')).toHaveScreenshot('underwater-400x225.png', TOLERANCE);
+});
+
 // The debug modes that reproduce the course report's figures.
 for (const [name, query] of [
   ['fresnel (report Figure 7)', 'mode=fresnel'],

@@ -13,6 +13,8 @@ export const VIEWS: Record<string, [[number, number, number], [number, number, n
   default: [[0, 9, 0], [80, -2, 70]],
   horizon: [[0, 2, 0], [-100, 1.5, -30]],
   high: [[0, 2000, 0], [2000, 700, 1500]],
+  // 4 m under the surface, looking up 50°: Snell's window over the surface seen from below.
+  underwater: [[0, -4, 0], [-8, 6, -3]],
 };
 
 const query = new URLSearchParams(location.search);
