@@ -112,9 +112,10 @@ const velocity = { x: 0, y: 0, z: 0 };
 
 /** Adds `weight` × the velocity texels' (∂Dx/∂t, ∂h/∂t, ∂Dz/∂t) at texel coordinates (u, v). */
 function addVelocity(texels: Float32Array, n: number, u: number, v: number, weight: number): void {
-  velocity.x += weight * bilinear(texels, n, u, v, 0);
-  velocity.y += weight * bilinear(texels, n, u, v, 1);
-  velocity.z += weight * bilinear(texels, n, u, v, 2);
+  placeTaps(primary, n, u, v);
+  velocity.x += weight * tap(texels, primary, 0);
+  velocity.y += weight * tap(texels, primary, 1);
+  velocity.z += weight * tap(texels, primary, 2);
 }
 
 const texel = { u: 0, v: 0 };
@@ -144,7 +145,7 @@ function surfacePointOver(layers: readonly WaveLayer[], choppiness: number, t: n
     sampleLayers(layers, blended, t, restX, restZ, sample);
     const residualX = restX + choppiness * sample.dx - x;
     const residualZ = restZ + choppiness * sample.dz - z;
-    if (Math.abs(residualX) + Math.abs(residualZ) < 1e-7) break;
+    if (Math.abs(residualX) + Math.abs(residualZ) < 1e-6) break; // a micrometre
     const jxx = 1 + choppiness * sample.dxdx;
     const jzz = 1 + choppiness * sample.dzdz;
     const jxz = choppiness * sample.dxdz;
@@ -168,10 +169,18 @@ const blendUniforms = new Float32Array(12);
 
 /** Which layer is drawn blended, and its blend's uniforms (patchBlend.ts); set once per query. */
 function prepareBlend(layers: readonly WaveLayer[]): number {
+  // The same list as the last query (the usual case): the same blend.
+  if (layers === blendFor.layers && (blendFor.blended < 0 || layers[blendFor.blended].frame.size === blendFor.size)) return blendFor.blended;
   const blended = largestPeriodicLayer(layers);
   if (blended >= 0) patchBlendUniforms(layers[blended].frame.size, blendUniforms);
+  blendFor.layers = layers;
+  blendFor.blended = blended;
+  blendFor.size = blended >= 0 ? layers[blended].frame.size : 0;
   return blended;
 }
+
+/** The layer list prepareBlend last prepared, its blended layer and that layer's size. */
+const blendFor: { layers: readonly WaveLayer[] | null; blended: number; size: number } = { layers: null, blended: -1, size: 0 };
 
 /**
  * Sums every layer's fields at the rest point (x, z) into `out`; `blended` from prepareBlend. With
@@ -182,28 +191,27 @@ function sampleLayers(layers: readonly WaveLayer[], blended: number, t: number, 
   for (let i = 0; i < layers.length; i++) {
     const at = layerTexel(layers[i], x, z);
     if (at === null) continue;
-    const { u, v } = at;
     const resolution = layers[i].frame.resolution;
     const fields = layers[i].fieldsOnCpu(t);
+    placeTaps(primary, resolution, at.u, at.v);
     if (i !== blended) {
-      addSample(fields, resolution, u, v, 1, out);
+      addSample(fields, primary, 1, out, derivatives);
       continue;
     }
+    placeTaps(copy, resolution, at.u + COPY_OFFSET[0] * resolution, at.v + COPY_OFFSET[1] * resolution);
     const theta = blendAngle(blendUniforms, x, z);
-    const copyU = u + COPY_OFFSET[0] * resolution;
-    const copyV = v + COPY_OFFSET[1] * resolution;
     const cos = Math.cos(theta);
     const sin = Math.sin(theta);
-    addSample(fields, resolution, u, v, cos, out);
-    addSample(fields, resolution, copyU, copyV, sin, out);
+    addSample(fields, primary, cos, out, derivatives);
+    addSample(fields, copy, sin, out, derivatives);
     if (!derivatives) continue; // Newton's steps do without them (they converge to the same point)
     // Every field cos θ·f1 + sin θ·f2 also changes with θ: its derivative gains (−sin θ·f1 + cos θ·f2)·∇θ
     // (for the height's slope, as in ocean.vert). θ turns over hundreds of metres: a central
     // difference over 1 m is exact enough.
     const d = fields.displacement;
-    const dx = -sin * bilinear(d, resolution, u, v, 0) + cos * bilinear(d, resolution, copyU, copyV, 0);
-    const height = -sin * bilinear(d, resolution, u, v, 1) + cos * bilinear(d, resolution, copyU, copyV, 1);
-    const dz = -sin * bilinear(d, resolution, u, v, 2) + cos * bilinear(d, resolution, copyU, copyV, 2);
+    const dx = -sin * tap(d, primary, 0) + cos * tap(d, copy, 0);
+    const height = -sin * tap(d, primary, 1) + cos * tap(d, copy, 1);
+    const dz = -sin * tap(d, primary, 2) + cos * tap(d, copy, 2);
     const thetaX = blendAngle(blendUniforms, x + 0.5, z) - blendAngle(blendUniforms, x - 0.5, z);
     const thetaZ = blendAngle(blendUniforms, x, z + 0.5) - blendAngle(blendUniforms, x, z - 0.5);
     out.slopeX += height * thetaX;
@@ -215,39 +223,67 @@ function sampleLayers(layers: readonly WaveLayer[], blended: number, t: number, 
   }
 }
 
-/** Adds `weight` × the fields at texel coordinates (u, v) into `out`. */
-function addSample(fields: LayerFieldsOnCpu, n: number, u: number, v: number, weight: number, out: SurfaceSample): void {
+/**
+ * Adds `weight` × the fields at the taps into `out`: with `all`, every field; without, only what
+ * Newton's steps need (the horizontal displacement and its Jacobian).
+ */
+function addSample(fields: LayerFieldsOnCpu, taps: Taps, weight: number, out: SurfaceSample, all: boolean): void {
   const { displacement, derivatives } = fields;
-  out.dx += weight * bilinear(displacement, n, u, v, 0);
-  out.height += weight * bilinear(displacement, n, u, v, 1);
-  out.dz += weight * bilinear(displacement, n, u, v, 2);
-  const crossDerivative = weight * bilinear(displacement, n, u, v, 3);
+  out.dx += weight * tap(displacement, taps, 0);
+  out.dz += weight * tap(displacement, taps, 2);
+  const crossDerivative = weight * tap(displacement, taps, 3);
   out.dxdz += crossDerivative;
   out.dzdx += crossDerivative;
-  out.slopeX += weight * bilinear(derivatives, n, u, v, 0);
-  out.slopeZ += weight * bilinear(derivatives, n, u, v, 1);
-  out.dxdx += weight * bilinear(derivatives, n, u, v, 2);
-  out.dzdz += weight * bilinear(derivatives, n, u, v, 3);
+  out.dxdx += weight * tap(derivatives, taps, 2);
+  out.dzdz += weight * tap(derivatives, taps, 3);
+  if (!all) return;
+  out.height += weight * tap(displacement, taps, 1);
+  out.slopeX += weight * tap(derivatives, taps, 0);
+  out.slopeZ += weight * tap(derivatives, taps, 1);
 }
 
 /**
- * Bilinear sample with wrap-around of channel c of an RGBA N×N field at continuous texel
- * coordinates (u, v), where texel (i, j) holds the field at (u, v) = (i, j) — the same
- * interpolation the GPU does for the surface (see horizonGrid.ts).
+ * The four texels and weights of a bilinear sample with wrap-around of an RGBA N×N field at
+ * continuous texel coordinates (u, v), where texel (i, j) holds the field at (u, v) = (i, j): the
+ * same interpolation the GPU does for the surface (see horizonGrid.ts). Placed once per point and
+ * layer, then read for each channel.
  */
-function bilinear(data: Float32Array, n: number, u: number, v: number, c: number): number {
+interface Taps {
+  /** Indices of channel 0 of texels (i, j), (i + 1, j), (i, j + 1), (i + 1, j + 1). */
+  at00: number;
+  at10: number;
+  at01: number;
+  at11: number;
+  w00: number;
+  w10: number;
+  w01: number;
+  w11: number;
+}
+
+const primary: Taps = { at00: 0, at10: 0, at01: 0, at11: 0, w00: 0, w10: 0, w01: 0, w11: 0 };
+const copy: Taps = { ...primary };
+
+function placeTaps(taps: Taps, n: number, u: number, v: number): void {
   const i0 = Math.floor(u);
   const j0 = Math.floor(v);
   const fu = u - i0;
   const fv = v - j0;
-  // Columns and rows wrapped into [0, n), then the four texels' channel c.
+  // Columns and rows wrapped into [0, n).
   const column0 = ((i0 % n) + n) % n;
   const column1 = (column0 + 1) % n;
-  const row0 = (((j0 % n) + n) % n) * n;
-  const row1 = ((row0 / n + 1) % n) * n;
-  const h00 = data[4 * (row0 + column0) + c];
-  const h10 = data[4 * (row0 + column1) + c];
-  const h01 = data[4 * (row1 + column0) + c];
-  const h11 = data[4 * (row1 + column1) + c];
-  return (1 - fv) * ((1 - fu) * h00 + fu * h10) + fv * ((1 - fu) * h01 + fu * h11);
+  const row0 = ((j0 % n) + n) % n;
+  const row1 = (row0 + 1) % n;
+  taps.at00 = 4 * (row0 * n + column0);
+  taps.at10 = 4 * (row0 * n + column1);
+  taps.at01 = 4 * (row1 * n + column0);
+  taps.at11 = 4 * (row1 * n + column1);
+  taps.w00 = (1 - fv) * (1 - fu);
+  taps.w10 = (1 - fv) * fu;
+  taps.w01 = fv * (1 - fu);
+  taps.w11 = fv * fu;
+}
+
+/** Channel c of an RGBA field at the taps. */
+function tap(data: Float32Array, taps: Taps, c: number): number {
+  return taps.w00 * data[taps.at00 + c] + taps.w10 * data[taps.at10 + c] + taps.w01 * data[taps.at01 + c] + taps.w11 * data[taps.at11 + c];
 }
