@@ -16,7 +16,7 @@ import { OceanSurface } from './render/oceanSurface';
 import type { OceanShadingOptions } from './render/oceanMaterial';
 import { SkyBackground } from './render/skyBackground';
 import { SkyEnvironment, sunAnglesFromDirection, type SunAngles, type SunDirection } from './render/skyEnvironment';
-import { OceanSimulation, type SimulationOptions } from './layers/oceanSimulation';
+import { OceanSimulation, type PathPreference, type SimulationOptions, type SimulationPath } from './layers/oceanSimulation';
 import type { LocalWaves } from './layers/localWaves';
 import { heightAt, normalAt, velocityAt } from './layers/surfaceQuery';
 import { optionAliases, unknownOption } from './parameters/options';
@@ -197,6 +197,23 @@ export class Ocean extends Object3D {
 
   get parameters(): Readonly<SimulationParameters> {
     return this.simulation.parameters;
+  }
+
+  /**
+   * The FFT path: the preference (the `path` option or setPath), the one running
+   * ('gpu-rgba32f', 'gpu-rgba16f', 'js' or 'js-worker') and, when it is not the best the preference
+   * asks for, why ('' when it is): e.g. "MAX_DRAW_BUFFERS is 4 (the GPU FFT writes 8 at once)".
+   */
+  get path(): { preference: PathPreference; running: SimulationPath; reason: string } {
+    this.checkAlive('path');
+    const { pathPreference: preference, path: running, pathReason: reason } = this.simulation;
+    return { preference, running, reason };
+  }
+
+  /** Changes the FFT path: 'auto' (the GPU where it can, else JS), 'gpu' or 'js'; the sea is rebuilt on it. */
+  setPath(preference: PathPreference): void {
+    this.checkAlive('setPath');
+    this.simulation.pathPreference = preference;
   }
 
   /**

@@ -253,7 +253,8 @@ renderer.setAnimationLoop((now: number) => {
   averager.add(rendered, simulated - start, rendered - simulated);
   if (rendered - lastStatus > 250) {
     const time = { t: state.t, paused: state.paused, timeScale: state.timeScale, ratio: clock.timeRatio };
-    overlay.show(describeSeaState(ocean), ocean.simulation.path, averager.latest, time, controls.speed);
+    const { pathReason, pathPreference } = ocean.simulation;
+    overlay.show(describeSeaState(ocean), ocean.simulation.path, averager.latest, time, controls.speed, pathPreference === 'js' ? '' : pathReason);
     lastStatus = rendered;
   }
   panel.update();

@@ -102,8 +102,9 @@ export class StatusOverlay {
   }
 
   /** The status: FFT path, frame rate and CPU timings on one line; time and camera speed on the next. */
-  show(seaState: string, path: SimulationPath, timings: FrameTimings | null, time: TimeStatus, speed: number): void {
-    const parts = [seaState, `FFT: ${PATH_LABELS[path] ?? path}`];
+  /** `reason`: why the path is not the best asked for (SimulationPath's pathReason), shown after it. */
+  show(seaState: string, path: SimulationPath, timings: FrameTimings | null, time: TimeStatus, speed: number, reason = ''): void {
+    const parts = [seaState, `FFT: ${PATH_LABELS[path] ?? path}${reason ? ` (${reason})` : ''}`];
     if (timings) {
       parts.push(
         `${timings.fps.toFixed(0)} fps`,

@@ -26,16 +26,23 @@ export class CpuFieldTextures {
   private readonly fields: CpuWaveFields | null = null;
   private readonly worker: Worker | null = null;
   private inFlight = false;
+  /** Whether the mipmap levels are computed in JS (float textures that filter but cannot be rendered to). */
+  private readonly levelsInJs: boolean;
   /** Arrays to send to the worker for its next result (they travel back and forth, never reallocated). */
   private spare: { displacement: Float32Array; derivatives: Float32Array } | null;
 
   constructor(renderer: WebGLRenderer, spectrum: InitialSpectrum, useWorker: boolean) {
     const n = spectrum.resolution;
     const filterable = renderer.extensions.has('OES_texture_float_linear');
+    // generateMipmap renders into the texture: RGBA32F must also be renderable (EXT_color_buffer_float),
+    // or it fails (GL_INVALID_OPERATION) and the levels hold garbage. There the levels are made
+    // here, by the same 2×2 box filter, and uploaded with the texture.
+    const mipmapped = filterable && renderer.extensions.has('EXT_color_buffer_float');
+    this.levelsInJs = filterable && !mipmapped;
     // Without a worker the textures show CpuWaveFields' own arrays: nothing is copied.
     this.fields = useWorker ? null : new CpuWaveFields(spectrum);
     const [displacement, derivatives] = FIELD_TEXTURES.map((name) =>
-      fieldTexture(this.fields?.[name] ?? new Float32Array(4 * n * n), n, filterable, name),
+      fieldTexture(this.fields?.[name] ?? new Float32Array(4 * n * n), n, filterable, mipmapped, name),
     );
     this.displacement = displacement;
     this.derivatives = derivatives;
@@ -78,8 +85,10 @@ export class CpuFieldTextures {
   }
 
   private markUpdated(): void {
-    this.displacement.needsUpdate = true;
-    this.derivatives.needsUpdate = true;
+    for (const texture of [this.displacement, this.derivatives]) {
+      if (this.levelsInJs) setMipmapLevels(texture);
+      texture.needsUpdate = true;
+    }
   }
 
   dispose(): void {
@@ -89,12 +98,40 @@ export class CpuFieldTextures {
   }
 }
 
-function fieldTexture(data: Float32Array, n: number, filterable: boolean, name: string): DataTexture {
+/**
+ * The texture's mipmap chain down to 1×1, from its image: each level the mean of 2×2 texels of the
+ * one above, wrapping (the fields repeat), as generateMipmap's box filter does. Reuses the levels'
+ * arrays from one update to the next.
+ */
+function setMipmapLevels(texture: DataTexture): void {
+  const data = texture.image.data as Float32Array;
+  let size = texture.image.width;
+  const levels = texture.mipmaps as { data: Float32Array; width: number; height: number }[];
+  levels[0] = { data, width: size, height: size };
+  for (let level = 1; size > 1; level++) {
+    const above = levels[level - 1].data;
+    const half = size / 2;
+    if (levels[level]?.width !== half) levels[level] = { data: new Float32Array(4 * half * half), width: half, height: half };
+    const below = levels[level].data;
+    for (let j = 0; j < half; j++) {
+      for (let i = 0; i < half; i++) {
+        const a = 4 * (2 * j * size + 2 * i);
+        const b = a + 4 * size;
+        for (let c = 0; c < 4; c++) below[4 * (j * half + i) + c] = 0.25 * (above[a + c] + above[a + 4 + c] + above[b + c] + above[b + 4 + c]);
+      }
+    }
+    size = half;
+  }
+}
+
+function fieldTexture(data: Float32Array, n: number, filterable: boolean, mipmapped: boolean, name: string): DataTexture {
   const texture = new DataTexture(data, n, n, RGBAFormat, FloatType);
   texture.name = name;
   texture.wrapS = texture.wrapT = RepeatWrapping;
   texture.magFilter = filterable ? LinearFilter : NearestFilter;
+  // Filterable: mipmapped, by the GPU where it can render to the texture, else by setMipmapLevels.
   texture.minFilter = filterable ? LinearMipmapLinearFilter : NearestFilter;
-  texture.generateMipmaps = filterable;
+  texture.generateMipmaps = mipmapped;
+  if (filterable && !mipmapped) setMipmapLevels(texture);
   return texture;
 }

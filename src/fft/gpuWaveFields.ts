@@ -64,10 +64,24 @@ interface FftPass {
 
 /** Which GPU precision this renderer can render to, best first; null when neither works. */
 export function supportedGpuPrecision(renderer: WebGLRenderer): GpuPrecision | null {
-  if (!renderer.capabilities.isWebGL2) return null;
-  if (renderer.extensions.has('EXT_color_buffer_float')) return 'float32';
-  if (renderer.extensions.has('EXT_color_buffer_half_float')) return 'float16';
-  return null;
+  return gpuSupport(renderer).precision;
+}
+
+/** Colour attachments each FFT pass writes at once (LayeredSpectra: two array textures of four layers). */
+export const FFT_DRAW_BUFFERS = 8;
+
+/**
+ * What the GPU path can use on this renderer, and why not the best: the precision (null: none)
+ * and, when it is not RGBA32F, the reason in words.
+ */
+export function gpuSupport(renderer: WebGLRenderer): { precision: GpuPrecision | null; reason: string } {
+  const gl = renderer.getContext();
+  if (!renderer.capabilities.isWebGL2 || !(gl instanceof WebGL2RenderingContext)) return { precision: null, reason: 'no WebGL 2' };
+  const drawBuffers = gl.getParameter(gl.MAX_DRAW_BUFFERS) as number;
+  if (drawBuffers < FFT_DRAW_BUFFERS) return { precision: null, reason: `MAX_DRAW_BUFFERS is ${drawBuffers} (the GPU FFT writes ${FFT_DRAW_BUFFERS} at once)` };
+  if (renderer.extensions.has('EXT_color_buffer_float')) return { precision: 'float32', reason: '' };
+  if (renderer.extensions.has('EXT_color_buffer_half_float')) return { precision: 'float16', reason: 'no EXT_color_buffer_float: half floats' };
+  return { precision: null, reason: 'no float render targets (EXT_color_buffer_float, EXT_color_buffer_half_float)' };
 }
 
 export class GpuWaveFields {

@@ -14,7 +14,7 @@
  * and frees them in dispose().
  */
 import { FloatType, HalfFloatType, type WebGLRenderer } from 'three';
-import { supportedGpuPrecision } from '../fft/gpuWaveFields';
+import { gpuSupport, type GpuPrecision } from '../fft/gpuWaveFields';
 import {
   ParameterError,
   SHADER_ONLY_PARAMETERS,
@@ -53,6 +53,8 @@ export class OceanSimulation {
   private localWavesTime = NaN;
   private currentSurfaceLayers: readonly WaveLayer[] = [];
   private currentPath!: SimulationPath;
+  /** Why the path is not the preferred one's best ('' when it is). */
+  private currentReason = '';
   private preference: PathPreference;
   private readonly useWorker: boolean;
   private lastTime = NaN;
@@ -109,6 +111,11 @@ export class OceanSimulation {
     return this.currentPath;
   }
 
+  /** Why the running path is not the best the preference asks for, in words ('' when it is). */
+  get pathReason(): string {
+    return this.currentReason;
+  }
+
   /** Switches between the GPU and JS paths ('auto' picks the best available). */
   set pathPreference(preference: PathPreference) {
     this.preference = checkPreference(preference);
@@ -162,15 +169,25 @@ export class OceanSimulation {
   private rebuild(newSpectra: boolean): void {
     const params = this.currentParameters;
     const spectra = newSpectra ? createCascadeSpectra(params) : this.spectra;
-    const precision = this.preference === 'js' ? null : supportedGpuPrecision(this.renderer);
-    if (this.preference === 'gpu' && precision === null) {
-      console.warn('three-fft-ocean: this WebGL context cannot render to float textures; using the JS path.');
-    }
-    const backend: FftBackend = precision ? { kind: 'gpu', precision } : { kind: 'js', worker: this.useWorker };
-    this.currentPath = precision ? (precision === 'float32' ? 'gpu-rgba32f' : 'gpu-rgba16f') : this.useWorker ? 'js-worker' : 'js';
+    const support = this.preference === 'js' ? { precision: null, reason: 'asked for' } : gpuSupport(this.renderer);
+    let precision: GpuPrecision | null = support.precision;
+    this.currentReason = support.reason;
     // Build the new layers before freeing the old ones, so three.js can reuse compiled programs.
     const previous = this.currentLayers;
-    this.currentLayers = spectra.map((spectrum) => new FftCascade(this.renderer, spectrum, backend));
+    try {
+      this.currentLayers = spectra.map((spectrum) => new FftCascade(this.renderer, spectrum, backendFor(precision, this.useWorker)));
+    } catch (error) {
+      if (precision === null) throw error;
+      // The GPU path failed to build here (an adapter check, a framebuffer): the JS path instead.
+      precision = null;
+      this.currentReason = `the GPU path failed: ${error instanceof Error ? error.message : String(error)}`;
+      this.currentLayers = spectra.map((spectrum) => new FftCascade(this.renderer, spectrum, backendFor(null, this.useWorker)));
+    }
+    this.currentPath = precision ? (precision === 'float32' ? 'gpu-rgba32f' : 'gpu-rgba16f') : this.useWorker ? 'js-worker' : 'js';
+    if (this.currentReason !== '' && this.preference !== 'js' && !warned.has(this.currentReason)) {
+      warned.add(this.currentReason);
+      console.warn(`three-fft-ocean: ${this.currentReason}; using the ${PATH_NAMES[this.currentPath]} path.`);
+    }
     for (const layer of previous) layer.dispose();
     this.currentFoam?.dispose();
     this.currentFoam = new WhitecapFoam(this.renderer, this.currentLayers, precision === null ? null : precision === 'float32' ? FloatType : HalfFloatType);
@@ -193,6 +210,15 @@ export class OceanSimulation {
     }
     this.currentSurfaceLayers = this.currentLocalWaves ? [this.currentLocalWaves, ...this.currentLayers] : this.currentLayers;
   }
+}
+
+/** Each fallback's reason is printed once per page. */
+const warned = new Set<string>();
+
+const PATH_NAMES: Record<SimulationPath, string> = { 'gpu-rgba32f': 'GPU RGBA32F', 'gpu-rgba16f': 'GPU RGBA16F', js: 'JS', 'js-worker': 'JS (worker)' };
+
+function backendFor(precision: GpuPrecision | null, worker: boolean): FftBackend {
+  return precision ? { kind: 'gpu', precision } : { kind: 'js', worker };
 }
 
 function checkPreference(preference: PathPreference): PathPreference {

@@ -8,6 +8,7 @@ import { DEFAULT_PARAMETERS } from '../../src/parameters/parameters';
 import { beaufortPreset, SEA_PRESETS } from '../../src/spectrum/presets';
 import { seaState } from '../../src/spectrum/seaState';
 import { slowFrames } from './slowFrames';
+import { withHiddenCapabilities } from './hiddenCapabilities';
 import { withoutWebGL2 } from './withoutWebGL2';
 
 type Vec3 = [number, number, number];
@@ -709,6 +710,32 @@ test.describe('failures the app explains', () => {
     await expect.poll(() => page.evaluate(() => window.oceanApp.ocean.sky.usingFaces), { timeout: 30_000 }).toBe(true);
     await expect(page.locator('.notice.warning', { hasText: 'skybox' })).toHaveCount(0);
   });
+
+  for (const [device, hidden, running, reason] of [
+    ['MAX_DRAW_BUFFERS of 4 (all WebGL2 promises)', { maxDrawBuffers: 4 }, /^js/, /MAX_DRAW_BUFFERS is 4/],
+    ['no EXT_color_buffer_float', { extensions: ['EXT_color_buffer_float'] }, /^gpu-rgba16f$/, /no EXT_color_buffer_float: half floats/],
+    ['no float render targets at all', { extensions: ['EXT_color_buffer_float', 'EXT_color_buffer_half_float'] }, /^js/, /no float render targets/],
+  ] as const) {
+    test(`on a device with ${device} the sea falls back, says why, and looks the same`, async ({ page }) => {
+      const query = 'resolution=64&paused=1&t=7.5';
+      await openApp(page, query, { width: 320, height: 180 }, false);
+      await frames(page, 3);
+      const reference = await pixels(page);
+      const weaker = await page.context().newPage();
+      await withHiddenCapabilities(weaker, hidden);
+      await openApp(weaker, query, { width: 320, height: 180 }, false);
+      await frames(weaker, 6); // the JS worker's fields arrive a frame or two later
+      const report = await weaker.evaluate(() => window.oceanApp.ocean.path);
+      expect(report.preference).toBe('auto');
+      expect(report.running).toMatch(running);
+      expect(report.reason).toMatch(reason);
+      await expect(weaker.locator('#status')).toContainText(report.reason);
+      // The same sea: the paths agree to 1e-6 of the heights (RGBA16F to half-float precision).
+      const difference = meanAbsDifference(reference, await pixels(weaker));
+      console.log(`${device}: ${report.running} (${report.reason}), mean difference from RGBA32F ${difference.toFixed(3)} levels`);
+      expect(difference).toBeLessThan(1);
+    });
+  }
 
   test('without WebGL2 the page explains instead of showing a blank canvas', async ({ page }) => {
     await withoutWebGL2(page);

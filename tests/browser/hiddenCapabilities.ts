@@ -1,0 +1,26 @@
+import type { Page } from '@playwright/test';
+
+/**
+ * Makes the page's WebGL2 contexts report less than they have, as a weaker device would: a smaller
+ * MAX_DRAW_BUFFERS (WebGL2 guarantees 4), and extensions that are missing. The context itself is
+ * the real one; only what it reports is changed.
+ */
+export async function withHiddenCapabilities(page: Page, hidden: { maxDrawBuffers?: number; extensions?: readonly string[] }): Promise<void> {
+  await page.addInitScript((hidden) => {
+    const prototype = WebGL2RenderingContext.prototype;
+    const getParameter = prototype.getParameter;
+    const getExtension = prototype.getExtension;
+    const getSupportedExtensions = prototype.getSupportedExtensions;
+    const missing = new Set(hidden.extensions ?? []);
+    prototype.getParameter = function (this: WebGL2RenderingContext, name: number) {
+      if (name === this.MAX_DRAW_BUFFERS && hidden.maxDrawBuffers !== undefined) return hidden.maxDrawBuffers;
+      return getParameter.call(this, name);
+    };
+    prototype.getExtension = function (this: WebGL2RenderingContext, name: string) {
+      return missing.has(name) ? null : (getExtension as (this: WebGL2RenderingContext, name: string) => unknown).call(this, name);
+    } as typeof getExtension;
+    prototype.getSupportedExtensions = function (this: WebGL2RenderingContext) {
+      return (getSupportedExtensions.call(this) ?? []).filter((name) => !missing.has(name));
+    };
+  }, hidden);
+}
