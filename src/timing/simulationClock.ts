@@ -6,17 +6,23 @@
  *
  * A frame advances simulated time by the real time since the previous frame × the rate asked for
  * (the time scale; 0 while paused), so the sea moves at the same speed at 60 frames per second and
- * at 3. Only a gap longer than LONG_GAP (a breakpoint, a main thread stalled by something else, a
- * frame loop that stopped without restart()) is not simulated, or the sea would jump: it counts as
- * one ordinary frame, the last frame time that was not a gap.
+ * at 3, and at one frame every few seconds (a slow device): frames that are all slow are simulated
+ * as they are. Only a gap is not, or the sea would jump: a frame longer than LONG_GAP that also
+ * takes over GAP_FACTOR times the frame before it (a breakpoint, a main thread stalled by something
+ * else, a frame loop that stopped without restart()), or any frame over LONGEST_FRAME (a hidden
+ * tab). It counts as one ordinary frame, the last frame time that was not a gap.
  *
  * It also measures the time ratio actually achieved (simulated seconds per real second, over
  * about RATIO_INTERVAL of frames), which differs from the rate asked for only when gaps were cut
  * short; timeRatio reports it then, for a status line to show.
  */
 
-/** Longest time between two frames that is simulated as it is, seconds. */
+/** Frames up to this long are always simulated as they are, seconds. */
 export const LONG_GAP = 1;
+/** A longer frame is a gap when it also takes more than this many times the frame before it. */
+export const GAP_FACTOR = 4;
+/** Frames longer than this are always gaps, seconds. */
+export const LONGEST_FRAME = 10;
 /** Real seconds of frames that one measurement of the time ratio spans (at least). */
 export const RATIO_INTERVAL = 1;
 /** timeRatio reports a ratio that differs from the rate asked for by more than this fraction. */
@@ -29,6 +35,8 @@ export class SimulationClock {
   private last: number | null = null;
   private ordinaryStep = FIRST_ORDINARY_STEP;
   private lastRealStep = 0;
+  /** The real length of the last frame that had one (a repeated timestamp has none), seconds. */
+  private previousReal = 0;
   /** The measurement under way: real seconds, simulated seconds and the simulated seconds asked for. */
   private real = 0;
   private simulated = 0;
@@ -49,8 +57,9 @@ export class SimulationClock {
     }
     const real = Math.max(0, (nowMs - last) / 1000);
     this.lastRealStep = real;
-    const gap = real > LONG_GAP;
+    const gap = real > LONGEST_FRAME || (real > LONG_GAP && real > GAP_FACTOR * this.previousReal);
     // A frame with the same timestamp as the previous one says nothing about the frame rate.
+    if (real > 0) this.previousReal = real;
     if (!gap && real > 0) this.ordinaryStep = real;
     const simulated = (gap ? this.ordinaryStep : real) * rate;
     this.measure(real, simulated, real * rate);

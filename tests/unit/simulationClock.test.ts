@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { LONG_GAP, RATIO_INTERVAL, SimulationClock } from '../../src/timing/simulationClock';
+import { GAP_FACTOR, LONG_GAP, LONGEST_FRAME, RATIO_INTERVAL, SimulationClock } from '../../src/timing/simulationClock';
 
 /** Runs frames at these timestamps (ms) at `rate`; returns each frame's simulated step. */
 function run(clock: SimulationClock, timestamps: number[], rate = 1): number[] {
@@ -50,11 +50,29 @@ describe('SimulationClock: long gaps', () => {
     expect(clock.advance(66 + 60_250, 2)).toBeCloseTo(0.5, 12); // and time follows real time again
   });
 
-  it(`a gap of exactly ${LONG_GAP} s is simulated as it is; a little more is not`, () => {
+  it(`a frame of exactly ${LONG_GAP} s is simulated as it is; a longer one that follows short ones is not`, () => {
     const clock = new SimulationClock();
     expect(run(clock, [0, 20, 20 + LONG_GAP * 1000])).toEqual([0, 0.02, LONG_GAP]);
-    expect(clock.advance(20 + LONG_GAP * 2000 + 1, 1)).toBeCloseTo(LONG_GAP, 12); // the 1 s frame was ordinary
-    expect(clock.advance(20 + LONG_GAP * 3000 + 2, 1)).toBeCloseTo(LONG_GAP, 12);
+    const other = new SimulationClock();
+    run(other, [0, 200]);
+    expect(other.advance(200 + GAP_FACTOR * 200 + 1001, 1)).toBeCloseTo(0.2, 12); // over 1 s and over 4× the 200 ms frame
+  });
+
+  it('frames that are all slow are simulated as they are: at 0.8, 0.5 and 0.2 frames per second time follows real time', () => {
+    for (const fps of [0.8, 0.5, 0.2]) {
+      const clock = new SimulationClock();
+      run(clock, [0, 16]);
+      const added = run(clock, frames(16, 1000 / fps, 12).slice(1), 1);
+      // The first slow frame after 60 Hz ones is a sudden stall (counted as 16 ms); then every frame is real.
+      expect(added[0]).toBeCloseTo(0.016, 12);
+      for (const step of added.slice(1)) expect(step).toBeCloseTo(1 / fps, 9);
+    }
+  });
+
+  it(`a frame over ${LONGEST_FRAME} s is a gap whatever came before (a hidden tab)`, () => {
+    const clock = new SimulationClock();
+    run(clock, [0, 8000, 16_000]); // two 8 s frames: a very slow device, simulated as they are
+    expect(clock.advance(16_000 + LONGEST_FRAME * 1000 + 1, 1)).toBeCloseTo(8, 12);
   });
 
   it('before any ordinary frame a gap counts as a 60 Hz frame; frames with one timestamp do not make the ordinary frame 0', () => {
@@ -101,10 +119,18 @@ describe('SimulationClock: the time ratio', () => {
     expect(clock.timeRatio).toBeNull();
   });
 
-  it('a clock that is slow at every frame (each over the long gap) says how slow', () => {
+  it('a clock at one frame every 2 s runs at the rate asked for: no ratio to report', () => {
     const clock = new SimulationClock();
     run(clock, [0, 100]); // one ordinary 100 ms frame
-    run(clock, frames(100, 2000, 10)); // then 2 s frames
-    expect(clock.timeRatio).toBeCloseTo(0.1 / 2, 12);
+    run(clock, frames(100, 2000, 10)); // then 2 s frames: the first is a stall, the others are real
+    expect(clock.timeRatio).toBeNull();
+  });
+
+  it('stalls now and then (each 4× the frame before and over 1 s) say how slow time ran', () => {
+    const clock = new SimulationClock();
+    const times = [0];
+    for (let i = 0; i < 6; i++) times.push(times[times.length - 1] + 200, times[times.length - 1] + 200 + 1500); // 200 ms, then a 1.5 s stall
+    run(clock, times);
+    expect(clock.timeRatio).toBeCloseTo((0.2 + 0.2) / (0.2 + 1.5), 1);
   });
 });
