@@ -11,6 +11,7 @@
 #include "surface/waveLayers.glsl"
 #include "surface/foam.glsl"
 #include "surface/fromBelow.glsl"
+#include <fog_pars_fragment>
 
 uniform vec3 sunDirection;     // towards the sun
 uniform vec3 sunColor;        // radiance of the glint
@@ -130,5 +131,6 @@ void main() {
   gl_FragColor = vec4(colour, 1.0);
   #include <tonemapping_fragment>
   #include <colorspace_fragment>
+  #include <fog_fragment>
 #endif
 }

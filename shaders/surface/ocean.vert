@@ -33,6 +33,7 @@ flat varying float vRing;
 // rather than looked up per fragment.
 flat varying vec3 vInnerRing;
 varying float vLod;
+#include <fog_pars_vertex>
 #ifdef CAPTURE_POSITIONS
 uniform float captureWidth;
 uniform float captureHeight;
@@ -75,6 +76,8 @@ void main() {
   gl_Position = vec4(target / vec2(captureWidth, captureHeight) * 2.0 - 1.0, 0.0, 1.0);
   gl_PointSize = 1.0;
 #else
-  gl_Position = projectionMatrix * viewMatrix * vec4(world, 1.0);
+  vec4 mvPosition = viewMatrix * vec4(world, 1.0);
+  gl_Position = projectionMatrix * mvPosition;
+  #include <fog_vertex>
 #endif
 }

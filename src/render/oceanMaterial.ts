@@ -38,8 +38,10 @@ export class OceanMaterial extends ShaderMaterial {
       vertexShader: withLayerCount(shaderSource('surface/ocean.vert'), 1),
       fragmentShader: withLayerCount(shaderSource('surface/ocean.frag'), 1),
       side: DoubleSide,
+      fog: true,
       uniforms: UniformsUtils.merge([
         UniformsLib.common, // unused, keeps three's chunks happy
+        UniformsLib.fog, // scene.fog, as three's own materials take it (fog: true below)
         {
           ringFrames: { value: new Float32Array(4 * (RING_COUNT + 1)) },
           ringLayerUvOrigins: { value: new Float32Array(2 * (RING_COUNT + 1)) },

@@ -187,6 +187,22 @@ test('the batch queries (heightsAt, normalsAt, velocitiesAt) on the GPU path equ
   ]);
 });
 
+test('the sea honours scene.fog (Fog and FogExp2) as three\'s materials do: far water takes the fog colour, near water hardly', async ({ page }) => {
+  await openOcean(page);
+  const { near, far } = await page.evaluate(() => window.ocean.fogCheck());
+  const [clearNear, clearFar] = [near[0], far[0]];
+  // Magenta fog: red and blue rise, green falls. Fog from 40 m to 400 m: none at 20 m, all at 2 km.
+  expect(Math.abs(near[1][0] - clearNear[0]) + Math.abs(near[1][1] - clearNear[1])).toBeLessThan(3);
+  expect(far[1][0]).toBeGreaterThan(240);
+  expect(far[1][1]).toBeLessThan(15);
+  // FogExp2 at 0.01/m: 1 − e^{−0.04} = 4 % at 20 m, all at 2 km.
+  expect(near[2][0]).toBeGreaterThan(clearNear[0]);
+  expect(near[2][1]).toBeLessThan(clearNear[1] + 1);
+  expect(far[2][0]).toBeGreaterThan(240);
+  expect(far[2][1]).toBeLessThan(15);
+  expect(clearFar[1]).toBeGreaterThan(60); // without fog the far sea is not magenta
+});
+
 test.describe('under water', () => {
   for (const ior of [1.333, 1.5]) {
     test(`Snell's window: looking up from under a calm sea, the sky shows within asin(1/n) of the zenith (n = ${ior}, within 1°)`, async ({ page }) => {

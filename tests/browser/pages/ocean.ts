@@ -6,6 +6,8 @@ import {
   ACESFilmicToneMapping,
   Color,
   FloatType,
+  Fog,
+  FogExp2,
   LinearSRGBColorSpace,
   NoToneMapping,
   PerspectiveCamera,
@@ -275,6 +277,33 @@ const harness = {
       }
     }
     return { edgeAngles, centreRed: red(centre, centre) };
+  },
+  /**
+   * scene.fog on the sea: the picture from 10 m up with no fog, with a Fog (40 m to 400 m) and with
+   * a FogExp2 (density 0.01), all of magenta. Returns, for a pixel 20 m ahead on the sea and one
+   * ~2 km ahead, each picture's colour (0–255).
+   */
+  fogCheck(): { near: number[][]; far: number[][]; nearDistance: number; farDistance: number } {
+    setup({ resolution: 64, windSpeed: 6 });
+    view([0, 10, 0], [100, 5, 0]);
+    const magenta = new Color(1, 0, 1);
+    const fogs = [null, new Fog(magenta, 40, 400), new FogExp2(magenta, 0.01)];
+    // Rows where the ray meets the sea ~20 m and ~2 km ahead (the camera looks 2.9° down).
+    const rowAt = (distance: number) => {
+      const down = Math.atan2(10, distance) - Math.atan2(5, 100);
+      return Math.round(height / 2 + (Math.tan(down) / Math.tan((camera.fov * Math.PI) / 360)) * (height / 2));
+    };
+    const near: number[][] = [];
+    const far: number[][] = [];
+    for (const fog of fogs) {
+      scene.fog = fog;
+      harness.render(3);
+      harness.render(3);
+      near.push(harness.pixel(width / 2, rowAt(20)));
+      far.push(harness.pixel(width / 2, rowAt(2000)));
+    }
+    scene.fog = null;
+    return { near, far, nearDistance: 20, farDistance: 2000 };
   },
   horizonCheck(changes: Partial<SimulationParameters>): { before: number; beforeAtSeaLevel: number; seaLevel: number; after: number; farthest: number } {
     return withOcean(changes, (ocean) => {
