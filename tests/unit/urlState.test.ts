@@ -1,4 +1,5 @@
 import { describe, expect, it } from 'vitest';
+import { MIN_HEIGHT } from '../../src/app/flyControls';
 import { DEFAULT_PARAMETERS, SIMULATION_OPTIONS } from '../../src/parameters/parameters';
 import { colorToLinear } from '../../src/parameters/sceneOptions';
 import {
@@ -49,6 +50,7 @@ function changed(): AppState {
     wireframe: true,
     inspector: true,
     buoys: true,
+    boat: true,
     path: 'js',
     timeScale: 0.5,
     paused: true,
@@ -130,8 +132,9 @@ describe('serializeState / parseState', () => {
     expect(parseState('paused=1&wireframe=true&inspector=0').state).toMatchObject({ paused: true, wireframe: true, inspector: false });
   });
 
-  it('clamps the camera height and pitch the way the controls do', () => {
-    expect(parseState('cam=1,-5,2,370,120').state.cam).toEqual([1, 1, 2, 10, 89]);
+  it('clamps the camera depth and pitch the way the controls do', () => {
+    expect(parseState('cam=1,-5,2,370,120').state.cam).toEqual([1, -5, 2, 10, 89]); // diving is allowed
+    expect(parseState('cam=1,-500,2,0,0').state.cam).toEqual([1, MIN_HEIGHT, 2, 0, 0]);
   });
 
   it('stores t to the millisecond, so roundTime(t) round-trips exactly', () => {
