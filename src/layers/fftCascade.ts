@@ -17,6 +17,7 @@ export type FftBackend = { kind: 'gpu'; precision: GpuPrecision } | { kind: 'js'
 export class FftCascade implements WaveLayer {
   readonly textures;
   readonly frame: LayerFrame;
+  readonly movesSideways = true;
   private readonly backend: GpuWaveFields | CpuFieldTextures;
   /** The JS fields for queries, computed on demand for the time last asked, and their velocities (for the time they were last asked). */
   private query: { fields: CpuWaveFields; time: number; velocities: Float32Array | null; velocityTime: number } | null = null;

@@ -106,6 +106,8 @@ interface Hull {
 export class LocalWaves implements WaveLayer {
   readonly textures;
   readonly grid: LocalWaveGrid;
+  /** The local waves move the surface only up and down. */
+  readonly movesSideways = false;
   private readonly backend: Backend;
   private readonly currentFrame: { size: number; origin: [number, number]; periodic: false; resolution: number };
   /** The grid's texel (0, 0) in whole texels of the world. */

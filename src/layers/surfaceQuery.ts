@@ -34,7 +34,7 @@ interface SurfaceSample {
  * breaking crests) several points land on (x, z) and the one nearest the start is returned.
  */
 export function heightAt(layers: readonly WaveLayer[], choppiness: number, t: number, x: number, z: number): number {
-  return surfacePointOver(layers, choppiness, t, x, z).height;
+  return surfacePointOver(layers, choppiness, t, x, z, FIELDS.values).height;
 }
 
 /**
@@ -52,7 +52,7 @@ export function normalAt<T extends { x: number; y: number; z: number }>(
   z: number,
   out: T,
 ): T {
-  const s = surfacePointOver(layers, choppiness, t, x, z);
+  const s = surfacePointOver(layers, choppiness, t, x, z, FIELDS.all);
   // ∂P/∂x0 = (ax, ay, az), ∂P/∂z0 = (bx, by, bz)
   const ax = 1 + choppiness * s.dxdx;
   const ay = s.slopeX;
@@ -86,7 +86,7 @@ export function velocityAt<T extends { x: number; y: number; z: number }>(
   z: number,
   out: T,
 ): T {
-  const rest = surfacePointOver(layers, choppiness, t, x, z);
+  const rest = surfacePointOver(layers, choppiness, t, x, z, FIELDS.newton);
   const blended = prepareBlend(layers);
   velocity.x = velocity.y = velocity.z = 0;
   for (let i = 0; i < layers.length; i++) {
@@ -137,12 +137,12 @@ const sample: SurfaceSample = { dx: 0, height: 0, dz: 0, slopeX: 0, slopeZ: 0, d
  * folds over itself (Jacobian ≤ 0, breaking crests) several points land on (x, z) and the one
  * nearest the start is taken. The result is shared: read it before the next query.
  */
-function surfacePointOver(layers: readonly WaveLayer[], choppiness: number, t: number, x: number, z: number): SurfaceSample {
+function surfacePointOver(layers: readonly WaveLayer[], choppiness: number, t: number, x: number, z: number, what: number): SurfaceSample {
   const blended = prepareBlend(layers);
   let restX = x;
   let restZ = z;
   for (let iteration = 0; iteration < 20; iteration++) {
-    sampleLayers(layers, blended, t, restX, restZ, sample);
+    sampleLayers(layers, blended, t, restX, restZ, sample, FIELDS.newton);
     const residualX = restX + choppiness * sample.dx - x;
     const residualZ = restZ + choppiness * sample.dz - z;
     if (Math.abs(residualX) + Math.abs(residualZ) < 1e-6) break; // a micrometre
@@ -151,19 +151,29 @@ function surfacePointOver(layers: readonly WaveLayer[], choppiness: number, t: n
     const jxz = choppiness * sample.dxdz;
     const determinant = jxx * jzz - jxz * jxz;
     if (determinant > 0.05) {
-      restX -= (jzz * residualX - jxz * residualZ) / determinant;
-      restZ -= (jxx * residualZ - jxz * residualX) / determinant;
+      const stepX = (jzz * residualX - jxz * residualZ) / determinant;
+      const stepZ = (jxx * residualZ - jxz * residualX) / determinant;
+      restX -= stepX;
+      restZ -= stepZ;
+      // Newton converges quadratically: a step this small leaves the point far closer still.
+      if (Math.abs(stepX) + Math.abs(stepZ) < 1e-6) break;
     } else {
       // Near a fold Newton steps explode: fall back to a damped fixed-point step.
       restX -= 0.5 * residualX;
       restZ -= 0.5 * residualZ;
     }
   }
-  sampleLayers(layers, blended, t, restX, restZ, sample, true);
+  if (what !== FIELDS.newton) sampleLayers(layers, blended, t, restX, restZ, sample, what);
   sample.restX = restX;
   sample.restZ = restZ;
   return sample;
 }
+
+/**
+ * What sampleLayers sums: what Newton's steps need (the horizontal displacement and its Jacobian),
+ * the values too (height, slopes), or all, with the blend weights' own change in the derivatives.
+ */
+const FIELDS = { newton: 0, values: 1, all: 2 } as const;
 
 const blendUniforms = new Float32Array(12);
 
@@ -183,27 +193,30 @@ function prepareBlend(layers: readonly WaveLayer[]): number {
 const blendFor: { layers: readonly WaveLayer[] | null; blended: number; size: number } = { layers: null, blended: -1, size: 0 };
 
 /**
- * Sums every layer's fields at the rest point (x, z) into `out`; `blended` from prepareBlend. With
- * `derivatives`, the slopes and Jacobian terms include the blend's own change too.
+ * Sums every layer's fields at the rest point (x, z) into `out`, `what` of them (FIELDS); `blended`
+ * from prepareBlend. With FIELDS.all the slopes and Jacobian terms include the blend's own change.
  */
-function sampleLayers(layers: readonly WaveLayer[], blended: number, t: number, x: number, z: number, out: SurfaceSample, derivatives = false): void {
+function sampleLayers(layers: readonly WaveLayer[], blended: number, t: number, x: number, z: number, out: SurfaceSample, what: number): void {
+  const derivatives = what === FIELDS.all;
+  const values = what !== FIELDS.newton;
   out.dx = out.height = out.dz = out.slopeX = out.slopeZ = out.dxdx = out.dzdz = out.dxdz = out.dzdx = 0;
   for (let i = 0; i < layers.length; i++) {
+    if (!values && !layers[i].movesSideways) continue; // nothing Newton's steps need
     const at = layerTexel(layers[i], x, z);
     if (at === null) continue;
     const resolution = layers[i].frame.resolution;
     const fields = layers[i].fieldsOnCpu(t);
     placeTaps(primary, resolution, at.u, at.v);
     if (i !== blended) {
-      addSample(fields, primary, 1, out, derivatives);
+      addSample(fields, primary, 1, out, values);
       continue;
     }
     placeTaps(copy, resolution, at.u + COPY_OFFSET[0] * resolution, at.v + COPY_OFFSET[1] * resolution);
     const theta = blendAngle(blendUniforms, x, z);
     const cos = Math.cos(theta);
     const sin = Math.sin(theta);
-    addSample(fields, primary, cos, out, derivatives);
-    addSample(fields, copy, sin, out, derivatives);
+    addSample(fields, primary, cos, out, values);
+    addSample(fields, copy, sin, out, values);
     if (!derivatives) continue; // Newton's steps do without them (they converge to the same point)
     // Every field cos θ·f1 + sin θ·f2 also changes with θ: its derivative gains (−sin θ·f1 + cos θ·f2)·∇θ
     // (for the height's slope, as in ocean.vert). θ turns over hundreds of metres: a central

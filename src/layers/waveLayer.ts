@@ -37,6 +37,11 @@ export interface WaveLayer {
     readonly derivatives: { value: Texture | null };
   };
   readonly frame: LayerFrame;
+  /**
+   * False for a layer that only moves the surface up and down (its Dx, Dz and their derivatives are
+   * 0, as the local waves'): the queries then leave it out while they look for the rest point.
+   */
+  readonly movesSideways: boolean;
   /** Advances the layer to time t (s); dt is the step since the last update (0 for a jump). */
   update(t: number, dt: number): void;
   /** The fields at time t on the CPU, for queries (computed on demand, then kept for that t). */

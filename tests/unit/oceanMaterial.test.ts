@@ -19,6 +19,7 @@ function fakeLayer(size: number, resolution: number): WaveLayer {
   return {
     textures: { displacement: { value: texture() }, derivatives: { value: texture() } },
     frame: { size, origin: [0, 0], periodic: true, resolution },
+    movesSideways: true,
     update: () => {},
     fieldsOnCpu: () => fields,
     velocitiesOnCpu: () => fields.displacement,

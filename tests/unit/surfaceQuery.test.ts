@@ -32,6 +32,7 @@ function fakeLayer(frame: LayerFrame, displacement: Float32Array, derivatives: F
     times,
     textures: { displacement: { value: null }, derivatives: { value: null } },
     frame,
+    movesSideways: true,
     update: () => {},
     fieldsOnCpu: (t: number) => {
       times.push(t);
@@ -284,6 +285,7 @@ describe('velocityAt', () => {
       return {
         textures: { displacement: { value: null }, derivatives: { value: null } },
         frame: { size: spectrum.patchSize, origin: [0, 0], periodic: true, resolution: spectrum.resolution },
+        movesSideways: true,
         update: () => {},
         fieldsOnCpu: (t: number) => {
           if (t !== shown) {
