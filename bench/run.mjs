@@ -21,7 +21,7 @@
 //                round by round, and at N = 512 with the default 3 cascades.
 //   living       the same frame at N = 256 with the default cascades and a 20 m/s wind, without foam
 //                and local waves ("bare"), with whitecap foam ("foam"), and with foam and local waves
-//                stepping every frame (a hull circling, a stone each second: "foam+local-waves"),
+//                (a 256² grid) stepping every frame (a hull circling, a stone each second: "foam+local-waves"),
 //                interleaved; living-cost gives what foam and local waves add to the bare frame.
 //   queries      1000 points in one heightsAt / velocitiesAt call from the page's main thread, the
 //                fields for the time already computed (firstCallMs: the call that computes them).
@@ -32,6 +32,8 @@
 //                keyed by cascade count.
 //
 // If the browser part fails, the Node rows and the summary are still printed and the exit code is 1.
+// `npm run bench -- --only=queries,living` runs only the groups named (fft2d, fields, cascades,
+// frame, living, queries); the summary then has nulls for the others.
 import { createServer as createNetServer } from 'node:net';
 import { chromium } from '@playwright/test';
 import FFT from 'fft.js';
@@ -53,9 +55,19 @@ const CASCADE_COUNTS = [1, 3, 4];
 const CASCADE_N = 256;
 /** Browser rounds of the cascades bench (each round times every cascade count and path once). */
 const CASCADE_ROUNDS = 40;
+/** The local-wave grid of the living-surface frame (the issue's 256², of 1 m texels). */
+const LOCAL_WAVES_N = 256;
 const TARGETS = { jsCascades3Ms256: 9, gpuCascades3Ms256: 30, frameMs256Cascades3: 100 };
 const FIRST_PORT = 5180;
 
+const GROUPS = ['fft2d', 'fields', 'cascades', 'frame', 'living', 'queries'];
+const onlyArgument = process.argv.slice(2).find((argument) => argument.startsWith('--only='));
+const only = onlyArgument ? onlyArgument.slice('--only='.length).split(',') : GROUPS;
+for (const group of only) {
+  if (!GROUPS.includes(group)) throw new Error(`--only: unknown group '${group}' (allowed: ${GROUPS.join(', ')})`);
+}
+/** True when the group of benchmarks is to run (all unless --only names some). */
+const wanted = (group) => only.includes(group);
 const started = performance.now();
 const log = (message) => process.stderr.write(`bench: ${message}\n`);
 const emit = (row) => process.stdout.write(`${JSON.stringify(row)}\n`);
@@ -212,7 +224,7 @@ async function nodeBenchmarks(results) {
     const { validateParameters } = await server.ssrLoadModule('/src/parameters/parameters.ts');
     const { createCascadeSpectra } = await server.ssrLoadModule('/src/spectrum/initialSpectrum.ts');
 
-    for (const n of SIZES) {
+    for (const n of wanted('fft2d') ? SIZES : []) {
       log(`fft2d N=${n}: js vs fft.js`);
       const matrix = randomMatrix(n, n);
       const js = jsFft2d(BatchedInverseFft2D, n, matrix);
@@ -232,7 +244,7 @@ async function nodeBenchmarks(results) {
       emit({ bench: 'fft2d-ratio', N: n, jsSpeedup: speedup, maxRelDiff: Number(difference.toPrecision(3)) });
     }
 
-    for (const n of SIZES) {
+    for (const n of wanted('fields') ? SIZES : []) {
       log(`fields N=${n}: CpuWaveFields.update in Node`);
       const params = validateParameters({ resolution: n });
       const fields = new CpuWaveFields(createCascadeSpectra(params)[0]);
@@ -243,6 +255,7 @@ async function nodeBenchmarks(results) {
       emit({ bench: 'fields', N: n, path: 'js', ...row });
     }
 
+    if (!wanted('cascades')) return;
     log(`cascades N=${CASCADE_N}: CpuWaveFields.update of each cascade in Node, C = ${CASCADE_COUNTS.join(', ')}`);
     const tasks = CASCADE_COUNTS.map((count) => {
       const params = validateParameters({ resolution: CASCADE_N, patchSizes: CASCADE_SETS[count] });
@@ -344,7 +357,7 @@ async function browserBenchmarks(results) {
       return { timerQuery: samples.gpuTimerQuery ? stats(samples.gpuTimerQuery).ms : null, readPixels: row.ms };
     };
 
-    for (const n of SIZES) {
+    for (const n of wanted('fields') ? SIZES : []) {
       log(`fields N=${n}: GPU (rgba32f) and JS in Chromium`);
       const samples = await runFields({
         resolution: n,
@@ -358,107 +371,115 @@ async function browserBenchmarks(results) {
       results.jsBrowser[n] = jsRow.ms;
       emit({ bench: 'fields', N: n, path: 'js-browser', ...jsRow });
     }
-    log(`cascades N=${CASCADE_N}: GPU (rgba32f) and JS of every cascade in Chromium, C = ${CASCADE_COUNTS.join(', ')}`);
-    const cascadeSamples = await withTimeout(
-      page.evaluate((o) => window.bench.cascades(o), {
-        resolution: CASCADE_N,
-        patchSizeSets: CASCADE_COUNTS.map((count) => CASCADE_SETS[count]),
-        gpu: 'float32',
-        js: true,
-        warmupRounds: BROWSER_WARMUP_ROUNDS,
-        rounds: CASCADE_ROUNDS,
-      }),
-      2 * BROWSER_STEP_TIMEOUT_MS,
-      `the cascades benchmark at N=${CASCADE_N}`,
-    );
-    for (const samples of cascadeSamples) {
-      const head = { bench: 'cascades', N: CASCADE_N, cascades: samples.cascades, patchSizes: samples.patchSizes };
-      results.gpuCascades[samples.cascades] = emitGpu(head, 'gpu-rgba32f', samples);
+    if (wanted('cascades')) {
+      log(`cascades N=${CASCADE_N}: GPU (rgba32f) and JS of every cascade in Chromium, C = ${CASCADE_COUNTS.join(', ')}`);
+      const cascadeSamples = await withTimeout(
+        page.evaluate((o) => window.bench.cascades(o), {
+          resolution: CASCADE_N,
+          patchSizeSets: CASCADE_COUNTS.map((count) => CASCADE_SETS[count]),
+          gpu: 'float32',
+          js: true,
+          warmupRounds: BROWSER_WARMUP_ROUNDS,
+          rounds: CASCADE_ROUNDS,
+        }),
+        2 * BROWSER_STEP_TIMEOUT_MS,
+        `the cascades benchmark at N=${CASCADE_N}`,
+      );
+      for (const samples of cascadeSamples) {
+        const head = { bench: 'cascades', N: CASCADE_N, cascades: samples.cascades, patchSizes: samples.patchSizes };
+        results.gpuCascades[samples.cascades] = emitGpu(head, 'gpu-rgba32f', samples);
+      }
+      for (const samples of cascadeSamples) {
+        const row = stats(samples.js);
+        results.jsBrowserCascades[samples.cascades] = row.ms;
+        emit({ bench: 'cascades', N: CASCADE_N, cascades: samples.cascades, patchSizes: samples.patchSizes, path: 'js-browser', ...row });
+      }
     }
-    for (const samples of cascadeSamples) {
-      const row = stats(samples.js);
-      results.jsBrowserCascades[samples.cascades] = row.ms;
-      emit({ bench: 'cascades', N: CASCADE_N, cascades: samples.cascades, patchSizes: samples.patchSizes, path: 'js-browser', ...row });
-    }
-
     await page.goto(`http://127.0.0.1:${port}/bench/pages/frame.html`);
     await page.waitForFunction(() => document.title === 'ready', null, { timeout: 60_000 });
-    const frameRuns = [
-      { resolution: CASCADE_N, counts: CASCADE_COUNTS },
-      { resolution: 512, counts: [null] }, // the default patch sizes (3 cascades)
-    ];
-    for (const { resolution: n, counts } of frameRuns) {
-      const what = counts[0] === null ? 'default cascades' : `C = ${counts.join(', ')} cascades`;
-      log(`frame N=${n}, ${what}: simulation + sky + surface at ${FRAME_SIZE.width}x${FRAME_SIZE.height}`);
-      const frames = await withTimeout(
+    if (wanted('frame')) {
+      const frameRuns = [
+        { resolution: CASCADE_N, counts: CASCADE_COUNTS },
+        { resolution: 512, counts: [null] }, // the default patch sizes (3 cascades)
+      ];
+      for (const { resolution: n, counts } of frameRuns) {
+        const what = counts[0] === null ? 'default cascades' : `C = ${counts.join(', ')} cascades`;
+        log(`frame N=${n}, ${what}: simulation + sky + surface at ${FRAME_SIZE.width}x${FRAME_SIZE.height}`);
+        const frames = await withTimeout(
+          page.evaluate((o) => window.frameBench.frames(o), {
+            resolution: n,
+            ...FRAME_SIZE,
+            warmup: 5,
+            rounds: FRAME_ROUNDS,
+            patchSizeSets: counts.map((count) => (count === null ? undefined : CASCADE_SETS[count])),
+          }),
+          counts.length * BROWSER_STEP_TIMEOUT_MS,
+          `the frame benchmark at N=${n}`,
+        );
+        for (const frame of frames) {
+          const row = stats(frame.samples);
+          if (n === CASCADE_N) results.frameByCascades[frame.cascades] = row.ms;
+          // frameMs256At1280x720 has always been the 3-cascade frame (CASCADE_SETS[3], the default sizes).
+          if (n !== CASCADE_N || frame.cascades === 3) results.frame[n] = row.ms;
+          emit({
+            bench: 'frame',
+            N: n,
+            cascades: frame.cascades,
+            patchSizes: frame.patchSizes,
+            size: `${FRAME_SIZE.width}x${FRAME_SIZE.height}`,
+            path: frame.path,
+            ...row,
+            drawCalls: frame.calls,
+            vertices: frame.vertices,
+            triangles: frame.triangles,
+            simulationPasses: frame.simulationPasses,
+            timer: 'readpixels-sync',
+          });
+        }
+      }
+    }
+    if (wanted('living')) {
+      log(`living surface N=${CASCADE_N}: bare, foam, foam and local waves at ${FRAME_SIZE.width}x${FRAME_SIZE.height}`);
+      const living = await withTimeout(
         page.evaluate((o) => window.frameBench.frames(o), {
-          resolution: n,
+          resolution: CASCADE_N,
           ...FRAME_SIZE,
           warmup: 5,
           rounds: FRAME_ROUNDS,
-          patchSizeSets: counts.map((count) => (count === null ? undefined : CASCADE_SETS[count])),
+          patchSizeSets: [],
+          variants: [
+            { label: 'bare', options: { windSpeed: 20, foamAmount: 0, localWaves: false }, activeLocalWaves: false },
+            { label: 'foam', options: { windSpeed: 20, localWaves: false }, activeLocalWaves: false },
+            { label: 'foam+local-waves', options: { windSpeed: 20, localWaves: { resolution: LOCAL_WAVES_N } }, activeLocalWaves: true },
+          ],
         }),
-        counts.length * BROWSER_STEP_TIMEOUT_MS,
-        `the frame benchmark at N=${n}`,
+        3 * BROWSER_STEP_TIMEOUT_MS,
+        'the living-surface benchmark',
       );
-      for (const frame of frames) {
+      const livingMs = {};
+      for (const frame of living) {
         const row = stats(frame.samples);
-        if (n === CASCADE_N) results.frameByCascades[frame.cascades] = row.ms;
-        // frameMs256At1280x720 has always been the 3-cascade frame (CASCADE_SETS[3], the default sizes).
-        if (n !== CASCADE_N || frame.cascades === 3) results.frame[n] = row.ms;
-        emit({
-          bench: 'frame',
-          N: n,
-          cascades: frame.cascades,
-          patchSizes: frame.patchSizes,
-          size: `${FRAME_SIZE.width}x${FRAME_SIZE.height}`,
-          path: frame.path,
-          ...row,
-          drawCalls: frame.calls,
-          vertices: frame.vertices,
-          triangles: frame.triangles,
-          simulationPasses: frame.simulationPasses,
-          timer: 'readpixels-sync',
-        });
+        livingMs[frame.label] = row.ms;
+        emit({ bench: 'living', N: CASCADE_N, variant: frame.label, size: `${FRAME_SIZE.width}x${FRAME_SIZE.height}`, path: frame.path, ...row, timer: 'readpixels-sync' });
+      }
+      results.livingCost = { foamMs: livingMs.foam - livingMs.bare, foamAndLocalWavesMs: livingMs['foam+local-waves'] - livingMs.bare, targetMs: 15 };
+      emit({ bench: 'living-cost', ...results.livingCost });
+    }
+    if (wanted('queries')) {
+      log('queries: 1000 points, heightsAt and velocitiesAt from the main thread');
+      const queryRuns = await withTimeout(
+        page.evaluate((o) => window.frameBench.queries(o), { resolution: CASCADE_N, points: 1000, rounds: 30 }),
+        BROWSER_STEP_TIMEOUT_MS,
+        'the queries benchmark',
+      );
+      results.queries = {};
+      for (const [name, { firstMs, samples }] of Object.entries(queryRuns)) {
+        const row = stats(samples);
+        results.queries[name] = row.ms;
+        emit({ bench: 'queries', query: name, points: 1000, N: CASCADE_N, firstCallMs: firstMs, ...row, target: name === 'heightsAt' ? 2 : null });
       }
     }
-    log(`living surface N=${CASCADE_N}: bare, foam, foam and local waves at ${FRAME_SIZE.width}x${FRAME_SIZE.height}`);
-    const living = await withTimeout(
-      page.evaluate((o) => window.frameBench.frames(o), {
-        resolution: CASCADE_N,
-        ...FRAME_SIZE,
-        warmup: 5,
-        rounds: FRAME_ROUNDS,
-        patchSizeSets: [],
-        variants: [
-          { label: 'bare', options: { windSpeed: 20, foamAmount: 0, localWaves: false }, activeLocalWaves: false },
-          { label: 'foam', options: { windSpeed: 20, localWaves: false }, activeLocalWaves: false },
-          { label: 'foam+local-waves', options: { windSpeed: 20 }, activeLocalWaves: true },
-        ],
-      }),
-      3 * BROWSER_STEP_TIMEOUT_MS,
-      'the living-surface benchmark',
-    );
-    const livingMs = {};
-    for (const frame of living) {
-      const row = stats(frame.samples);
-      livingMs[frame.label] = row.ms;
-      emit({ bench: 'living', N: CASCADE_N, variant: frame.label, size: `${FRAME_SIZE.width}x${FRAME_SIZE.height}`, path: frame.path, ...row, timer: 'readpixels-sync' });
-    }
-    log('queries: 1000 points, heightsAt and velocitiesAt from the main thread');
-    const queryRuns = await withTimeout(
-      page.evaluate((o) => window.frameBench.queries(o), { resolution: CASCADE_N, points: 1000, rounds: 30 }),
-      BROWSER_STEP_TIMEOUT_MS,
-      'the queries benchmark',
-    );
-    results.queries = {};
-    for (const [name, { firstMs, samples }] of Object.entries(queryRuns)) {
-      const row = stats(samples);
-      results.queries[name] = row.ms;
-      emit({ bench: 'queries', query: name, points: 1000, N: CASCADE_N, firstCallMs: firstMs, ...row, target: name === 'heightsAt' ? 2 : null });
-    }
-    results.livingCost = { foamMs: livingMs.foam - livingMs.bare, foamAndLocalWavesMs: livingMs['foam+local-waves'] - livingMs.bare, targetMs: 15 };
-    emit({ bench: 'living-cost', ...results.livingCost });
+    if (!wanted('fields')) return;
     await page.goto(`http://127.0.0.1:${port}/bench/pages/bench.html`);
     await page.waitForFunction(() => document.title === 'ready', null, { timeout: 60_000 });
     if (info.halfFloat) {

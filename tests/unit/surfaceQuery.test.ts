@@ -256,6 +256,51 @@ function particleAt(layers: readonly WaveLayer[], lambda: number, t: number, x0:
   return [x0 + lambda * sum[0], sum[1], z0 + lambda * sum[2]];
 }
 
+/** The JS path's fields of the cascades of `parameters`, as a layer each. */
+function realSeaLayers(parameters: ReturnType<typeof validateParameters>): WaveLayer[] {
+  return createCascadeSpectra(parameters).map((spectrum) => {
+    const fields = new CpuWaveFields(spectrum);
+    let shown = NaN;
+    return {
+      textures: { displacement: { value: null }, derivatives: { value: null } },
+      frame: { size: spectrum.patchSize, origin: [0, 0], periodic: true, resolution: spectrum.resolution },
+      movesSideways: true,
+      update: () => {},
+      fieldsOnCpu: (t: number) => {
+        if (t !== shown) {
+          fields.update(t);
+          shown = t;
+        }
+        return fields;
+      },
+      velocitiesOnCpu: (t: number) => fields.updateVelocities(t),
+      dispose: () => {},
+    };
+  });
+}
+
+describe('heightAt over a real sea', () => {
+  it('gives the height of the surface particle that lies over the point (within 10 µm, storm, λ = 1.2)', () => {
+    // Particles picked by their rest points x0 lie at P(x0) = x0 + (λ·Dx, h, λ·Dz)(x0) (the
+    // definition of the choppy surface, Tessendorf 2001 eq. 29): heightAt over P(x0) must find x0
+    // again, where the height is h(x0). Newton's steps stop within ~10 µm of x0 (surfaceQuery.ts).
+    const parameters = validateParameters({ resolution: 256, windSpeed: 20, seed: 11, choppiness: 1.2 });
+    const layers = realSeaLayers(parameters);
+    const t = 12.5;
+    let worst = 0;
+    let heights = 0;
+    for (let p = 0; p < 200; p++) {
+      const [x0, z0] = [(p % 20) * 6.1 - 61, Math.floor(p / 20) * 7.3 - 36];
+      const [px, height, pz] = particleAt(layers, parameters.choppiness, t, x0, z0);
+      worst = Math.max(worst, Math.abs(heightAt(layers, parameters.choppiness, t, px, pz) - height));
+      heights += Math.abs(height);
+    }
+    console.log(`heightAt over 200 particles of a 20 m/s sea: worst ${(worst * 1e6).toFixed(2)} µm off (mean |h| ${(heights / 200).toFixed(2)} m)`);
+    expect(heights / 200).toBeGreaterThan(0.5); // a real storm sea (m)
+    expect(worst).toBeLessThan(1e-5);
+  });
+});
+
 describe('velocityAt', () => {
   it('on one deep-water wave: the surface particles go round circles at speed A·ω (Airy; within 2 %)', () => {
     // Linear (Airy) theory: at the surface of a deep-water wave of amplitude A and frequency ω the
@@ -279,25 +324,7 @@ describe('velocityAt', () => {
     // The JS path's fields of the default cascades, as a layer each; the particle at the rest point
     // x0 is at P(x0, t) = x0 + (λ·Dx, h, λ·Dz)(x0, t): its velocity by central difference over ±2 ms.
     const parameters = validateParameters({ resolution: 64, windSpeed: 12, seed: 5, choppiness: 1.2 });
-    const layers: WaveLayer[] = createCascadeSpectra(parameters).map((spectrum) => {
-      const fields = new CpuWaveFields(spectrum);
-      let shown = NaN;
-      return {
-        textures: { displacement: { value: null }, derivatives: { value: null } },
-        frame: { size: spectrum.patchSize, origin: [0, 0], periodic: true, resolution: spectrum.resolution },
-        movesSideways: true,
-        update: () => {},
-        fieldsOnCpu: (t: number) => {
-          if (t !== shown) {
-            fields.update(t);
-            shown = t;
-          }
-          return fields;
-        },
-        velocitiesOnCpu: (t: number) => fields.updateVelocities(t),
-        dispose: () => {},
-      };
-    });
+    const layers = realSeaLayers(parameters);
     const lambda = parameters.choppiness;
     const t = 37.25;
     const h = 2e-3;
