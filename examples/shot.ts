@@ -29,10 +29,10 @@
  */
 import { Scene } from 'three';
 import { createAppCamera, createAppOcean, createAppRenderer, loadAppSkybox, prepareAppFrame } from '../src/app/appView';
-import { Boat } from '../src/app/boat';
+import { Boat, centreAhead } from '../src/objects/boat';
 import { FlyControls } from '../src/app/flyControls';
 import { Inspector } from '../src/app/inspector';
-import { SunLight } from '../src/app/sunLight';
+import { SunLight } from '../src/objects/sunLight';
 import {
   defaultState,
   DEFAULT_STATE,
@@ -278,7 +278,7 @@ async function start(): Promise<void> {
     throw new UsageError(`skybox: ${error instanceof Error ? error.message : String(error)}`);
   }
   // The boat as the app shows it (its wake is run up to each frame's time: localWaves.ts warmUp).
-  const boat = state.boat ? new Boat(ocean, camera) : null;
+  const boat = state.boat ? new Boat(ocean, centreAhead(camera)) : null;
   const sunLight = new SunLight(ocean);
   if (boat) scene.add(boat, sunLight);
   // The inspector's tiles are part of the app's canvas when it is shown.

@@ -1,7 +1,8 @@
 /**
  * The Ocean in an ordinary three.js scene: your renderer, camera, lights and controls; the sea is
  * one Object3D that also draws its sky behind everything, and a crate floats on it: a FloatingBody
- * that heaves, pitches and rolls from the buoyancy at points of its bottom (ocean.heightAt).
+ * that heaves, pitches and rolls from the buoyancy at points of its bottom (ocean.heightAt), and
+ * pushes on the local waves as it moves.
  *
  * Query parameters (for tests and screenshots): t=<seconds> freezes time, seed=<n>.
  */
@@ -57,6 +58,8 @@ const crate = new Mesh(new BoxGeometry(2, 1, 2), new MeshStandardMaterial({ colo
 scene.add(crate);
 const crateBody = new FloatingBody({ mass: 1000, size: [2, 1, 2], samples: 3 });
 crateBody.position.y = 0.5 - crateBody.restingDraft;
+// As it heaves and rolls it pushes the water: rings spread from it on the local waves.
+crateBody.pressOn(ocean.localWaves);
 let lastTime: number | null = null;
 
 /** Moves the crate by the time since the last frame (at most 0.25 s: a hidden tab does not throw it). */

@@ -12,12 +12,12 @@
 import { Scene } from 'three';
 import { CLICKED_STONE, seaPointUnder } from '../render/seaPointer';
 import { SimulationClock } from '../timing/simulationClock';
-import { Boat } from './boat';
-import { Buoys } from './buoys';
+import { Boat, centreAhead } from '../objects/boat';
+import { Buoys } from '../objects/buoys';
 import { createAppCamera, createAppOcean, createAppRenderer, loadAppSkybox, prepareAppFrame } from './appView';
 import { CONTROLS_HELP, FlyControls } from './flyControls';
 import { Inspector } from './inspector';
-import { SunLight } from './sunLight';
+import { SunLight } from '../objects/sunLight';
 import { Panel } from './panel';
 import { describeSeaState, PATH_LABELS, StatusOverlay, TimingAverager } from './statusOverlay';
 import { parseState, roundTime, serializeState, type AppState } from './urlState';
@@ -68,7 +68,7 @@ let boat: Boat | null = null;
 /** Puts the boat on its course ahead of the camera, or takes it away. */
 function showBoat(show: boolean): void {
   if (show && !boat) {
-    boat = new Boat(ocean, camera);
+    boat = new Boat(ocean, centreAhead(camera));
     scene.add(boat);
   }
   if (!show && boat) {

@@ -19,6 +19,9 @@
  *   time-scale (default 1)                    simulated seconds per real second
  *   paused (boolean)                          freezes time; the view still redraws on changes
  *   camera-height (metres, default 8)         height of the viewpoint above the mean sea level
+ *   boat (boolean)                            a boat circling ahead of the view, leaving a wake on
+ *                                             the local waves (src/objects/boat.ts)
+ * A click or tap on the sea drops a stone there: rings spread on the local waves.
  *
  * A bad value logs a console warning that names the attribute and quotes the value as written
  * (its first 40 characters), and the last good value stays.
@@ -42,6 +45,8 @@
  */
 import { ACESFilmicToneMapping, PerspectiveCamera, Scene, WebGLRenderer } from 'three';
 import { Ocean } from '../ocean';
+import { Boat } from '../objects/boat';
+import { SunLight } from '../objects/sunLight';
 import { SimulationClock } from '../timing/simulationClock';
 import { formatOptionText, optionKey, parseOptionText, quoteText, type OptionRule } from '../parameters/options';
 import { DEFAULT_SHADING, DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ShadingOptions, type SunOptions } from '../parameters/sceneOptions';
@@ -80,6 +85,7 @@ export const FFT_OCEAN_ATTRIBUTES = [
   'time-scale',
   'paused',
   'camera-height',
+  'boat',
 ] as const;
 export type FftOceanAttribute = (typeof FFT_OCEAN_ATTRIBUTES)[number];
 
@@ -92,6 +98,7 @@ interface Settings {
   timeScale: number;
   paused: boolean;
   cameraHeight: number;
+  boat: boolean;
 }
 
 const DEFAULT_SETTINGS: Readonly<Omit<Settings, Group>> = {
@@ -99,6 +106,7 @@ const DEFAULT_SETTINGS: Readonly<Omit<Settings, Group>> = {
   timeScale: 1,
   paused: false,
   cameraHeight: 8,
+  boat: false,
 };
 
 /** What exists while the element is on the page and WebGL 2 works. */
@@ -115,6 +123,8 @@ interface Live {
   /** Whether a part of the element is inside the viewport. */
   onScreen: boolean;
   contextLost: boolean;
+  /** The boat and the light it is lit by, while the boat attribute is on. */
+  boat: { boat: Boat; light: SunLight } | null;
 }
 
 // The background is a sky-and-sea placeholder until the first frame (or without WebGL 2).
@@ -299,12 +309,14 @@ export class FftOceanElement extends ElementBase {
       }
       s.cameraHeight = value;
     } else if (name === 'paused') {
-      // A boolean attribute; paused="false" is read as not paused, as people write it.
-      const paused = raw !== null && raw.trim().toLowerCase() !== 'false';
+      const paused = booleanAttribute(raw);
       if (paused !== s.paused) {
         s.paused = paused;
         this.clock.restart();
       }
+    } else if (name === 'boat') {
+      s.boat = booleanAttribute(raw);
+      if (this.live) this.showBoat(this.live);
     }
     this.invalidate();
   }
@@ -411,6 +423,7 @@ export class FftOceanElement extends ElementBase {
       intersectionObserver,
       onScreen: false, // until the observer's first report, which comes promptly
       contextLost: false,
+      boat: null,
       removeListeners: () => {
         canvas.removeEventListener('click', onClick);
         canvas.removeEventListener('webglcontextlost', onContextLost);
@@ -419,6 +432,7 @@ export class FftOceanElement extends ElementBase {
       },
     };
     this.live = live;
+    this.showBoat(live);
     this.clock.restart();
     this.resize();
     resizeObserver.observe(this);
@@ -434,6 +448,7 @@ export class FftOceanElement extends ElementBase {
       live.resizeObserver.disconnect();
       live.intersectionObserver.disconnect();
       live.removeListeners();
+      this.showBoat(live, false);
       live.scene.remove(live.ocean);
       live.ocean.dispose();
       live.renderer.dispose();
@@ -445,6 +460,23 @@ export class FftOceanElement extends ElementBase {
     this.message = null;
     this.clock.restart();
     this.needsDraw = true;
+  }
+
+  /** Puts the boat (and its light) in the scene, or takes it out and frees it, as `show` says. */
+  private showBoat(live: Live, show = this.settings.boat): void {
+    if (show && !live.boat) {
+      const boat = new Boat(live.ocean, (t) => {
+        const view = viewDrift(t, this.optionSetting('sun', 'sunAzimuth') as number);
+        return { x: view.x + BOAT_AHEAD * Math.cos(view.heading), z: view.z + BOAT_AHEAD * Math.sin(view.heading) };
+      });
+      live.boat = { boat, light: new SunLight(live.ocean) };
+      live.scene.add(boat, live.boat.light);
+    } else if (!show && live.boat) {
+      live.scene.remove(live.boat.boat, live.boat.light);
+      live.boat.boat.dispose();
+      live.boat = null;
+    }
+    this.invalidate();
   }
 
   private fail(text: string, error: unknown): void {
@@ -520,6 +552,8 @@ export class FftOceanElement extends ElementBase {
     this.needsDraw = false;
     placeCamera(camera, this.simulatedTime, this.settings.cameraHeight, this.optionSetting('sun', 'sunAzimuth') as number);
     ocean.update(this.simulatedTime);
+    live.boat?.boat.update();
+    live.boat?.light.update();
     // The far plane must reach the horizon.
     camera.far = Math.max(1e4, 1.5 * ocean.horizonDistanceFor(camera.position.y));
     camera.updateProjectionMatrix();
@@ -535,12 +569,10 @@ export class FftOceanElement extends ElementBase {
  * turning slowly. A function of simulated time only, so it stands still when paused.
  */
 export function placeCamera(camera: PerspectiveCamera, t: number, height: number, sunAzimuthDeg: number): void {
-  const yaw = ((sunAzimuthDeg - 30) * Math.PI) / 180 + 0.12 * Math.sin((2 * Math.PI * t) / 120);
+  const { x, z, heading } = viewDrift(t, sunAzimuthDeg);
+  const yaw = heading + 0.12 * Math.sin((2 * Math.PI * t) / 120);
   const forwardX = Math.cos(yaw);
   const forwardZ = Math.sin(yaw);
-  const travelled = 1.5 * t;
-  const x = travelled * Math.cos((sunAzimuthDeg - 30) * (Math.PI / 180));
-  const z = travelled * Math.sin((sunAzimuthDeg - 30) * (Math.PI / 180));
   camera.position.set(x, height, z);
   const pitch = (-6 * Math.PI) / 180;
   const distance = 100;
@@ -550,6 +582,23 @@ export function placeCamera(camera: PerspectiveCamera, t: number, height: number
     z + distance * Math.cos(pitch) * forwardZ,
   );
   camera.updateMatrixWorld();
+}
+
+/** Where the default view is on the sea at time t (s), and the heading (rad) it drifts along. */
+function viewDrift(t: number, sunAzimuthDeg: number): { x: number; z: number; heading: number } {
+  const heading = ((sunAzimuthDeg - 30) * Math.PI) / 180;
+  const travelled = VIEW_DRIFT_SPEED * t;
+  return { x: travelled * Math.cos(heading), z: travelled * Math.sin(heading), heading };
+}
+
+/** m/s */
+const VIEW_DRIFT_SPEED = 1.5;
+/** How far ahead of the drifting view the boat's circle is centred (m). */
+const BOAT_AHEAD = 60;
+
+/** A boolean attribute: present is true, except written "false", as people write it. */
+function booleanAttribute(raw: string | null): boolean {
+  return raw !== null && raw.trim().toLowerCase() !== 'false';
 }
 
 function errorMessage(error: unknown): string {

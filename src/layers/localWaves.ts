@@ -22,6 +22,7 @@ import { ClampToEdgeWrapping, DataTexture, FloatType, LinearFilter, NearestFilte
 import { ParameterError } from '../parameters/options';
 import { GpuLocalWaves } from './gpuLocalWaves';
 import { CpuLocalWaves, MAX_IMPULSES_PER_STEP, type HeightImpulse, type LocalWaveGrid } from './localWaveModel';
+import { heightAt } from './surfaceQuery';
 import type { LayerFieldsOnCpu, LayerFrame, WaveLayer } from './waveLayer';
 
 /** The longest step taken as a step; a longer dt (a hidden tab, a jump) clears the waves. */
@@ -114,6 +115,8 @@ export class LocalWaves implements WaveLayer {
   private originTexel: [number, number];
   private target: [number, number] = [0, 0];
   private followingCamera = true;
+  /** What the grid follows when given a path of time (follow(path)), else null. */
+  private followPath: ((t: number) => { x: number; z: number }) | null = null;
   private readonly pendingDrops: HeightImpulse[] = [];
   private readonly hulls: Hull[] = [];
   private quietFor = Infinity;
@@ -127,6 +130,8 @@ export class LocalWaves implements WaveLayer {
   /** The GPU path's velocities are computed in JS from the read-back potential. */
   private velocitySolver: CpuLocalWaves | null = null;
   private readBackStep = -1;
+  /** This layer as a list of layers, for the queries. */
+  private readonly asLayers: readonly WaveLayer[] = [this];
 
   constructor(
     private readonly renderer: WebGLRenderer,
@@ -168,6 +173,14 @@ export class LocalWaves implements WaveLayer {
     return this.currentFrame;
   }
 
+  /**
+   * The height of the local waves alone at the world point (x, z), m (0 outside the grid): what
+   * they add to the sea there (for a floating body that presses on them, floatingBody.ts).
+   */
+  heightAt(x: number, z: number): number {
+    return heightAt(this.asLayers, 0, this.time ?? 0, x, z);
+  }
+
   /** 'gpu' or 'js': where the waves are solved. */
   get path(): 'gpu' | 'js' {
     return this.backend.kind;
@@ -180,16 +193,31 @@ export class LocalWaves implements WaveLayer {
 
   /**
    * Centres the grid on the world point (x, z) from the next update on (in whole texels), and stops
-   * it following the camera; follow(null) makes it follow the camera again (the default).
+   * it following the camera; follow(null) makes it follow the camera again (the default). Or give
+   * it a path of time, (t) => ({ x, z }): the grid is then where the path is at each update, and
+   * during the run-up after a jump in time too (for a still of a hull whose waves move with it).
    */
-  follow(x: number | null, z?: number): void {
+  follow(x: number | null | ((t: number) => { x: number; z: number }), z?: number): void {
+    this.followPath = null;
     if (x === null) {
       this.followingCamera = true;
       return;
     }
-    if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError('follow(x, z)', `${x}, ${z}`, 'finite coordinates in metres, or null for the camera');
-    this.target = [x, z as number];
     this.followingCamera = false;
+    if (typeof x === 'function') {
+      this.followPath = x;
+      return;
+    }
+    if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError('follow(x, z)', `${x}, ${z}`, 'finite coordinates in metres, null for the camera, or a path (t) => ({ x, z })');
+    this.target = [x, z as number];
+  }
+
+  /** Aims the grid at where its path is at time t (for a grid that follows one). */
+  private aimAt(t: number): void {
+    if (this.followPath === null) return;
+    const { x, z } = this.followPath(t);
+    if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError(`the followed path at t = ${t}`, `${x}, ${z}`, 'finite coordinates in metres');
+    this.target = [x, z];
   }
 
   /** Where the camera is, for a grid that follows it (Ocean calls this before each update). */
@@ -242,6 +270,7 @@ export class LocalWaves implements WaveLayer {
   update(t: number, dt: number): void {
     const jump = this.time === null || dt < 0 || dt > MAX_STEP;
     this.time = t;
+    this.aimAt(t);
     if (jump) {
       this.clear();
       this.warmUp(t);
@@ -273,9 +302,15 @@ export class LocalWaves implements WaveLayer {
     const travelling = this.hulls.filter((hull) => hull.path);
     if (travelling.length === 0) return;
     for (const hull of travelling) hull.pose = hull.applied = checkPose({ ...hull.path!(t - WARM_UP), draft: hull.pose.draft });
+    if (this.followPath) {
+      // The sea is calm: the grid can start where its path is.
+      this.aimAt(t - WARM_UP);
+      this.originTexel = this.originFor(this.target);
+    }
     for (let step = 1; step <= Math.round(WARM_UP / WARM_UP_STEP); step++) {
       const time = t - WARM_UP + step * WARM_UP_STEP;
       for (const hull of travelling) hull.pose = checkPose({ ...hull.path!(time), draft: hull.pose.draft });
+      this.aimAt(time);
       this.advance(WARM_UP_STEP);
     }
     this.quietFor = 0;

@@ -7,6 +7,7 @@ import { expect, test, type Page } from '@playwright/test';
 import { DEFAULT_PARAMETERS } from '../../src/parameters/parameters';
 import { beaufortPreset, SEA_PRESETS } from '../../src/spectrum/presets';
 import { seaState } from '../../src/spectrum/seaState';
+import { boatWake } from './boatWake';
 import { slowFrames } from './slowFrames';
 import { withHiddenCapabilities } from './hiddenCapabilities';
 import { withoutWebGL2 } from './withoutWebGL2';
@@ -527,30 +528,11 @@ test.describe('the app', () => {
 
   test('?boat=1 runs a boat round its course; it leaves a wake on the local waves behind it, and the panel takes it away', async ({ page }) => {
     await openApp(page, 'resolution=64&windSpeed=2&boat=1');
-    const wake = await page.evaluate(async () => {
-      const { boat, ocean, state } = window.oceanApp;
-      const t0 = state.t;
+    await page.evaluate(async () => {
+      const t0 = window.oceanApp.state.t;
       while (window.oceanApp.state.t < t0 + 8) await new Promise((resolve) => requestAnimationFrame(resolve));
-      const { x, z } = boat!.position;
-      const pose = boat!.poseAt(state.t);
-      // The height of the local waves 10 m astern and 10 m ahead of the boat, and beside it.
-      const local = (dx: number, dz: number) => {
-        const waves = ocean.localWaves!;
-        const { size, origin, resolution } = waves.frame;
-        const { displacement } = waves.fieldsOnCpu(state.t);
-        let largest = 0;
-        for (let r = -3; r <= 3; r++) {
-          for (let c = -3; c <= 3; c++) {
-            const i = Math.round(((x + dx + c - origin[0]) / size) * resolution);
-            const j = Math.round(((z + dz + r - origin[1]) / size) * resolution);
-            largest = Math.max(largest, Math.abs(displacement[4 * (j * resolution + i) + 1]));
-          }
-        }
-        return largest;
-      };
-      const [cos, sin] = [Math.cos(pose.heading), Math.sin(pose.heading)];
-      return { astern: local(-12 * cos, -12 * sin), ahead: local(25 * cos, 25 * sin), onCourse: Math.hypot(pose.x - x, pose.z - z) };
     });
+    const wake = await boatWake(page, 'app');
     expect(wake.onCourse).toBeLessThan(3); // where its course puts it (a frame behind at most)
     expect(wake.astern).toBeGreaterThan(0.02);
     expect(wake.astern).toBeGreaterThan(3 * wake.ahead); // waves behind, calm water ahead

@@ -1,5 +1,6 @@
 import { expect, test, type Page } from '@playwright/test';
 import { DEFAULT_PARAMETERS } from '../../src/parameters/parameters';
+import { boatWake } from './boatWake';
 import { slowFrames } from './slowFrames';
 import { withoutWebGL2 } from './withoutWebGL2';
 
@@ -291,6 +292,39 @@ test('a click on its sea drops a stone there: the local waves get rings', async 
     return largest;
   });
   expect(largest).toBeGreaterThan(0.02); // a 0.8 m deep dip leaves rings of centimetres
+});
+
+test('boat: a boat circles ahead of the drifting view with a wake behind it; removing the attribute takes it off the sea', async ({ page }) => {
+  const { errors } = await openPage(page);
+  const result = await page.evaluate(async () => {
+    const el = window.embed.create({ resolution: '64', 'wind-speed': '2', paused: '', boat: '' });
+    el.time = 40; // a still: the wake is run up over the 20 s before (localWaves.ts)
+    await window.embed.drawn(el);
+    const boat = el.scene!.getObjectByName('boat')!;
+    const camera = el.camera!;
+    // In view: in front of the camera and inside its frustum.
+    const seen = boat.position.clone().project(camera);
+    return { seen: [seen.x, seen.y, seen.z], distance: boat.position.distanceTo(camera.position), lit: !!el.scene!.getObjectByName('sun light') };
+  });
+  expect(Math.abs(result.seen[0])).toBeLessThan(1);
+  expect(Math.abs(result.seen[1])).toBeLessThan(1);
+  expect(result.seen[2]).toBeLessThan(1);
+  expect(result.distance).toBeGreaterThan(20);
+  expect(result.distance).toBeLessThan(110);
+  expect(result.lit).toBe(true);
+  const wake = await boatWake(page, 'element');
+  expect(wake.onCourse).toBeLessThan(1e-6); // a still: exactly where its course puts it
+  expect(wake.astern).toBeGreaterThan(0.02);
+  expect(wake.astern).toBeGreaterThan(3 * wake.ahead); // waves behind, calm water ahead
+  const after = await page.evaluate(async () => {
+    const el = document.querySelector('fft-ocean')!;
+    el.removeAttribute('boat');
+    el.time = 60;
+    await window.embed.drawn(el, el.frameCount + 1);
+    return { boat: !!el.scene!.getObjectByName('boat'), light: !!el.scene!.getObjectByName('sun light') };
+  });
+  expect(after).toEqual({ boat: false, light: false });
+  expect(errors).toEqual([]);
 });
 
 test('defining it twice is harmless', async ({ page }) => {

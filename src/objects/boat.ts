@@ -1,9 +1,11 @@
 /**
- * A boat going round a circle ahead of the camera (the panel's "boat" toggle), pressing on the
- * local waves (src/layers/localWaves.ts) so that it leaves a Kelvin wake. Its course is a function
- * of the simulation time, so a paused or reloaded scene puts it, and its wake, at the same place; the local-wave
- * grid follows the circle's centre while it runs. It sits on the water at heightAt and tilts with
- * normalAt. dispose() frees its geometry and materials and takes its pressure off the sea.
+ * A boat going round a circle (the app's "boat" toggle, <fft-ocean boat>, the shot CLI's --boat),
+ * pressing on the local waves (src/layers/localWaves.ts) so that it leaves a Kelvin wake. Its
+ * course is a function of the simulation time, so a paused or reloaded scene puts it, and its wake,
+ * at the same place. The circle's centre is fixed ahead of the camera (the app) or moves with a
+ * drifting view (the element); the local-wave grid follows it. The boat sits on the water at
+ * heightAt and tilts with normalAt. dispose() frees its geometry and materials and takes its
+ * pressure off the sea.
  */
 import { BoxGeometry, Group, Mesh, MeshStandardMaterial, Quaternion, Vector3, type Camera } from 'three';
 import type { PressureSource } from '../layers/localWaves';
@@ -16,9 +18,20 @@ const SPEED = 5;
 /** The circle: its radius, and how far ahead of the camera its centre is (m). */
 const RADIUS = 30;
 const AHEAD = 45;
+/** Half the interval (s) over which the heading is taken from the course. */
+const HEADING_STEP = 0.05;
+
+/** Where the centre of the boat's circle is at time t (s), m. */
+export type CourseCentre = (t: number) => { x: number; z: number };
+
+/** A centre that stays AHEAD metres in front of where the camera is now, on the sea. */
+export function centreAhead(camera: Camera): CourseCentre {
+  const forward = camera.getWorldDirection(new Vector3()).setY(0).normalize();
+  const centre = { x: camera.position.x + AHEAD * forward.x, z: camera.position.z + AHEAD * forward.z };
+  return () => centre;
+}
 
 export class Boat extends Group {
-  private readonly centre = new Vector3();
   private readonly pressure: PressureSource | null;
   private readonly hullGeometry = new BoxGeometry(HULL.length, 1.4, HULL.beam);
   private readonly cabinGeometry = new BoxGeometry(2.6, 1.2, 2);
@@ -29,12 +42,10 @@ export class Boat extends Group {
 
   constructor(
     private readonly ocean: Ocean,
-    camera: Camera,
+    private readonly centreAt: CourseCentre,
   ) {
     super();
     this.name = 'boat';
-    const forward = camera.getWorldDirection(new Vector3()).setY(0).normalize();
-    this.centre.copy(camera.position).setY(0).addScaledVector(forward, AHEAD);
     const hull = new Mesh(this.hullGeometry, this.hullMaterial);
     hull.position.y = 0.7 - HULL.draft;
     const cabin = new Mesh(this.cabinGeometry, this.cabinMaterial);
@@ -45,13 +56,25 @@ export class Boat extends Group {
     // Its course is a path of time: the local waves move it themselves, and run its wake up to the
     // current time after a jump (a reload, a seek, a still from the shot CLI).
     this.pressure = ocean.localWaves?.addPressure(HULL, start, (t) => this.poseAt(t)) ?? null;
-    ocean.localWaves?.follow(this.centre.x, this.centre.z);
+    // The grid follows the circle's centre, by time too: a still's run-up moves it as the centre moved.
+    ocean.localWaves?.follow(centreAt);
   }
 
-  /** Where the course puts the boat at time t (s): anticlockwise seen from above, heading along it. */
+  /**
+   * Where the course puts the boat at time t (s): anticlockwise round the centre seen from above,
+   * heading where it goes (along the circle plus the centre's own drift: a central difference).
+   */
   poseAt(t: number): { x: number; z: number; heading: number } {
+    const [x, z] = this.placeAt(t);
+    const [xAfter, zAfter] = this.placeAt(t + HEADING_STEP);
+    const [xBefore, zBefore] = this.placeAt(t - HEADING_STEP);
+    return { x, z, heading: Math.atan2(zAfter - zBefore, xAfter - xBefore) };
+  }
+
+  private placeAt(t: number): [number, number] {
     const angle = (SPEED / RADIUS) * t;
-    return { x: this.centre.x + RADIUS * Math.cos(angle), z: this.centre.z + RADIUS * Math.sin(angle), heading: angle + Math.PI / 2 };
+    const centre = this.centreAt(t);
+    return [centre.x + RADIUS * Math.cos(angle), centre.z + RADIUS * Math.sin(angle)];
   }
 
   /** Sets the boat on its course and on the water at the ocean's current time (call after ocean.update). */

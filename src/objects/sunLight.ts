@@ -1,5 +1,5 @@
 /**
- * Light for the app's own objects (buoys, the boat): a sun from the ocean's sky and a sky/sea
+ * Light for the objects on the sea (buoys, the boat): a sun from the ocean's sky and a sky/sea
  * hemisphere light. The sea's shader does not use three.js lights; MeshStandardMaterial does.
  */
 import { DirectionalLight, Group, HemisphereLight } from 'three';

@@ -3,12 +3,11 @@
  * FloatingBody (src/layers/floatingBody.ts) over ocean.heightAt, drawn as a flat red float with a
  * yellow mast (lit by the app's SunLight). Their motion is integrated frame to frame; after a jump
  * in time (a seek, a reload of t) they are put back at rest on the water. As they move they press
- * on the local waves (src/layers/localWaves.ts) with their footprint, as deep as they float, and
- * make waves. dispose() frees their geometry and materials and takes them off the water.
+ * on the local waves (FloatingBody.pressOn) and make waves. dispose() frees their geometry and
+ * materials and takes them off the water.
  */
 import { BoxGeometry, Group, Mesh, MeshStandardMaterial, type Camera, Vector3 } from 'three';
 import { FloatingBody } from '../layers/floatingBody';
-import type { PressureSource } from '../layers/localWaves';
 import type { Ocean } from '../ocean';
 
 /**
@@ -36,8 +35,6 @@ export class Buoys extends Group {
   private readonly floatMaterial = new MeshStandardMaterial({ color: 0xd8281c, roughness: 0.6 });
   private readonly mastMaterial = new MeshStandardMaterial({ color: 0xf2c81a, roughness: 0.5 });
   private lastTime: number | null = null;
-  private readonly pressures: PressureSource[] = [];
-  private readonly axis = new Vector3();
 
   constructor(private readonly ocean: Ocean) {
     super();
@@ -60,16 +57,11 @@ export class Buoys extends Group {
     this.bodies.forEach((body, i) => {
       const [ahead, across] = LAYOUT[i];
       body.position.copy(camera.position).addScaledVector(forward, ahead).addScaledVector(right, across);
-      this.settle(body);
+      body.pressOn(this.ocean.localWaves);
+      body.settle(this.ocean);
     });
     this.lastTime = null;
     this.sync();
-    for (const pressure of this.pressures.splice(0)) pressure.remove();
-    for (const body of this.bodies) {
-      const pose = { x: body.position.x, z: body.position.z, heading: 0 };
-      const pressure = this.ocean.localWaves?.addPressure({ length: FLOAT_SIZE[0], beam: FLOAT_SIZE[2], draft: body.restingDraft }, pose);
-      if (pressure) this.pressures.push(pressure);
-    }
   }
 
   /** Moves the buoys to time t (s) of the ocean (call after ocean.update(t)). */
@@ -77,22 +69,8 @@ export class Buoys extends Group {
     const dt = this.lastTime === null ? 0 : t - this.lastTime;
     this.lastTime = t;
     if (dt > 0 && dt <= MAX_STEP) for (const body of this.bodies) body.step(dt, this.ocean);
-    else if (dt !== 0) for (const body of this.bodies) this.settle(body);
+    else if (dt !== 0) for (const body of this.bodies) body.settle(this.ocean);
     this.sync();
-    this.pressures.forEach((pressure, i) => {
-      const { position } = this.bodies[i];
-      const below = this.ocean.heightAt(position.x, position.z) - (position.y - FLOAT_SIZE[1] / 2);
-      // Heading: where the float's +x axis points, from +x towards +z.
-      const axis = this.axis.set(1, 0, 0).applyQuaternion(this.bodies[i].orientation);
-      pressure.setPose(position.x, position.z, Math.atan2(axis.z, axis.x), Math.min(Math.max(below, 0), FLOAT_SIZE[1]));
-    });
-  }
-
-  private settle(body: FloatingBody): void {
-    body.position.y = this.ocean.heightAt(body.position.x, body.position.z) + FLOAT_SIZE[1] / 2 - body.restingDraft;
-    body.velocity.set(0, 0, 0);
-    body.angularVelocity.set(0, 0, 0);
-    body.orientation.identity();
   }
 
   private sync(): void {
@@ -103,7 +81,7 @@ export class Buoys extends Group {
   }
 
   dispose(): void {
-    for (const pressure of this.pressures.splice(0)) pressure.remove();
+    for (const body of this.bodies) body.pressOn(null);
     this.floatGeometry.dispose();
     this.mastGeometry.dispose();
     this.floatMaterial.dispose();
