@@ -89,19 +89,28 @@ export const FFT_OCEAN_ATTRIBUTES = [
 ] as const;
 export type FftOceanAttribute = (typeof FFT_OCEAN_ATTRIBUTES)[number];
 
-/** The element's current (last good) settings: the options its attributes set, and its own. */
-interface Settings {
-  simulation: Partial<SimulationParameters>;
-  sun: Partial<SunOptions>;
-  shading: Partial<ShadingOptions>;
+/** The element's own attributes (beside the options), as its settings hold them. */
+export interface ElementSettings {
+  /** Which simulation path runs: 'auto', 'gpu' or 'js' (the Ocean's path option). @defaultValue 'auto' */
   path: PathPreference;
+  /** Simulated seconds per real second. @defaultValue 1 */
   timeScale: number;
+  /** A boolean attribute: time stands still; the view still redraws on changes. @defaultValue false */
   paused: boolean;
+  /** Height of the viewpoint above the mean sea level, m, (0, 10000]. @defaultValue 8 */
   cameraHeight: number;
+  /** A boolean attribute: a boat circling ahead of the view, leaving a wake on the local waves. @defaultValue false */
   boat: boolean;
 }
 
-const DEFAULT_SETTINGS: Readonly<Omit<Settings, Group>> = {
+/** The element's current (last good) settings: the options its attributes set, and its own. */
+interface Settings extends ElementSettings {
+  simulation: Partial<SimulationParameters>;
+  sun: Partial<SunOptions>;
+  shading: Partial<ShadingOptions>;
+}
+
+export const ELEMENT_DEFAULTS: Readonly<ElementSettings> = {
   path: 'auto',
   timeScale: 1,
   paused: false,
@@ -176,7 +185,7 @@ export class FftOceanElement extends ElementBase {
     return FFT_OCEAN_ATTRIBUTES;
   }
 
-  private readonly settings: Settings = { simulation: {}, sun: {}, shading: {}, ...DEFAULT_SETTINGS };
+  private readonly settings: Settings = { simulation: {}, sun: {}, shading: {}, ...ELEMENT_DEFAULTS };
   private readonly root: ShadowRoot;
   private live: Live | null = null;
   private message: HTMLElement | null = null;
@@ -286,7 +295,7 @@ export class FftOceanElement extends ElementBase {
         return;
       }
     } else if (name === 'path') {
-      const value = (raw === null ? DEFAULT_SETTINGS.path : raw.trim()) as PathPreference;
+      const value = (raw === null ? ELEMENT_DEFAULTS.path : raw.trim()) as PathPreference;
       if (!PATHS.includes(value)) {
         reject(`it must be one of ${PATHS.join(', ')}`, s.path);
         return;
@@ -295,14 +304,14 @@ export class FftOceanElement extends ElementBase {
       const ocean = this.live?.ocean;
       if (ocean && ocean.simulation.pathPreference !== value) ocean.simulation.pathPreference = value;
     } else if (name === 'time-scale') {
-      const value = raw === null ? DEFAULT_SETTINGS.timeScale : parseDecimal(raw);
+      const value = raw === null ? ELEMENT_DEFAULTS.timeScale : parseDecimal(raw);
       if (!Number.isFinite(value)) {
         reject('it must be a finite number (simulated seconds per second)', s.timeScale);
         return;
       }
       s.timeScale = value;
     } else if (name === 'camera-height') {
-      const value = raw === null ? DEFAULT_SETTINGS.cameraHeight : parseDecimal(raw);
+      const value = raw === null ? ELEMENT_DEFAULTS.cameraHeight : parseDecimal(raw);
       if (!Number.isFinite(value) || value <= 0 || value > 10000) {
         reject('it must be a number of metres above 0 and at most 10000', s.cameraHeight);
         return;

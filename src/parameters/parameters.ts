@@ -45,9 +45,9 @@ export interface SimulationParameters {
   /** JONSWAP peak enhancement γ, [1, 10] (1 is Pierson–Moskowitz's shape). @defaultValue 3.3 */
   peakEnhancement: number;
   /**
-   * Directional spreading of the wind sea. @defaultValue 'donelan-banner': measured with a
-   * wave-staff array (Donelan, Hamilton & Hui 1985), with Banner's (1990) extension that keeps short
-   * waves broadly spread, so the surface does not look combed.
+   * Directional spreading of the wind sea. The default was measured with a wave-staff array
+   * (Donelan, Hamilton & Hui 1985), with Banner's (1990) extension that keeps short waves broadly
+   * spread, so the surface does not look combed. @defaultValue 'donelan-banner'
    */
   spreading: SpreadingModel;
   /** Exponent s of the 'cos-2s' spreading, [0, 1000]. @defaultValue 10 */

@@ -74,7 +74,7 @@ export interface ShadingOptions {
    * ColorInput, and the alias causticColour. @defaultValue [0.12, 0.12, 0.12]
    */
   causticColor: Rgb;
-  /** @defaultValue 'full' */
+  /** What the sea shows: 'full' shading, or one of its terms alone, to inspect it. @defaultValue 'full' */
   shadingMode: ShadingMode;
 }
 

@@ -1,0 +1,163 @@
+/**
+ * The README's option tables come from the one source of truth: the option tables (rules, units,
+ * what is allowed), the defaults, and the TSDoc of the option interfaces (what each option means
+ * and its @defaultValue). This test builds the tables and fails when the README's differ;
+ * `npm run docs` writes them. It also checks every @defaultValue against the default in force, so
+ * that the typed API docs cannot drift either.
+ */
+import { readFileSync, writeFileSync } from 'node:fs';
+import { describe, expect, it } from 'vitest';
+import { ELEMENT_DEFAULTS, FFT_OCEAN_ATTRIBUTES } from '../../src/embed/fftOceanElement';
+import type { OptionRule } from '../../src/parameters/options';
+import { DEFAULT_PARAMETERS, SIMULATION_OPTIONS } from '../../src/parameters/parameters';
+import { DEFAULT_SHADING, DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS } from '../../src/parameters/sceneOptions';
+
+const root = new URL('../../', import.meta.url);
+const source = (path: string) => readFileSync(new URL(path, root), 'utf8');
+
+/** What the TSDoc of one member of an interface says: its text, and its @defaultValue as written. */
+interface MemberDoc {
+  text: string;
+  defaultValue: string | null;
+  /** What follows the @defaultValue literal ('where Worker exists'), or ''. */
+  defaultNote: string;
+}
+
+/** The TSDoc of every member of `interface name` in the TypeScript source `text`. */
+function interfaceDocs(text: string, name: string): Map<string, MemberDoc> {
+  const start = text.search(new RegExp(`interface ${name}\\b[^{]*\\{`));
+  if (start < 0) throw new Error(`no interface ${name}`);
+  let depth = 0;
+  let end = text.indexOf('{', start);
+  for (; end < text.length; end++) {
+    if (text[end] === '{') depth++;
+    if (text[end] === '}' && --depth === 0) break;
+  }
+  const body = text.slice(start, end);
+  const docs = new Map<string, MemberDoc>();
+  for (const [, comment, member] of body.matchAll(/\/\*\*([\s\S]*?)\*\/\s*(\w+)\??:/g)) {
+    const flat = comment
+      .split('\n')
+      .map((line) => line.replace(/^\s*\*\s?/, '').trim())
+      .join(' ')
+      .trim();
+    const at = flat.indexOf('@defaultValue');
+    if (at < 0) {
+      docs.set(member, { text: flat, defaultValue: null, defaultNote: '' });
+      continue;
+    }
+    const after = flat.slice(at + '@defaultValue'.length).trim();
+    const literal = /^(\[[^\]]*\]|'[^']*'|[^\s:,]+)/.exec(after)![1];
+    const rest = after.slice(literal.length).replace(/^[:,]?\s*/, '');
+    docs.set(member, { text: flat.slice(0, at).trim(), defaultValue: literal, defaultNote: rest });
+  }
+  return docs;
+}
+
+/** A default as the docs write it: 'text', [1, 2], Infinity, true. */
+function literal(value: unknown): string {
+  if (typeof value === 'string') return `'${value}'`;
+  if (Array.isArray(value)) return `[${value.map((v) => literal(v)).join(', ')}]`;
+  return String(value);
+}
+
+/** The value a @defaultValue literal writes (the forms `literal` gives). */
+function valueOf(text: string): unknown {
+  if (text.startsWith("'")) return text.slice(1, -1);
+  if (text.startsWith('[')) return text.slice(1, -1).split(',').map((part) => valueOf(part.trim()));
+  if (text === 'true' || text === 'false') return text === 'true';
+  return Number(text);
+}
+
+const kebab = (name: string) => name.replace(/[A-Z]/g, (c) => `-${c.toLowerCase()}`);
+const cell = (text: string) => text.replace(/\|/g, '\\|');
+
+interface TableSource {
+  title: string;
+  rules: Readonly<Record<string, OptionRule>>;
+  defaults: Readonly<Record<string, unknown>>;
+  docs: Map<string, MemberDoc>;
+}
+
+const simulationSource = source('src/parameters/parameters.ts');
+const sceneSource = source('src/parameters/sceneOptions.ts');
+const TABLES: TableSource[] = [
+  { title: 'simulation (`setParameters`)', rules: SIMULATION_OPTIONS, defaults: DEFAULT_PARAMETERS, docs: interfaceDocs(simulationSource, 'SimulationParameters') },
+  { title: 'sun (`setSun`)', rules: SUN_OPTIONS, defaults: DEFAULT_SUN, docs: interfaceDocs(sceneSource, 'SunOptions') },
+  { title: 'shading (`setShading`)', rules: SHADING_OPTIONS, defaults: DEFAULT_SHADING, docs: interfaceDocs(sceneSource, 'ShadingOptions') },
+];
+const constructorDocs = new Map([
+  ...interfaceDocs(source('src/ocean.ts'), 'OceanOptions'),
+  ...interfaceDocs(source('src/layers/oceanSimulation.ts'), 'SimulationOptions'),
+]);
+const elementDocs = interfaceDocs(source('src/embed/fftOceanElement.ts'), 'ElementSettings');
+
+/** The README's generated part: the option tables. */
+function optionTables(): string {
+  const lines: string[] = [];
+  for (const { title, rules, defaults, docs } of TABLES) {
+    lines.push(`**${title}**`, '', '| option | attribute | default | unit | allowed | what it is |', '|:--|:--|:--|:--|:--|:--|');
+    for (const [key, rule] of Object.entries(rules)) {
+      const names = [key, ...(rule.aliases ?? [])];
+      lines.push(
+        `| ${names.map((n) => `\`${n}\``).join(', ')} | ${names.map((n) => `\`${kebab(n)}\``).join(', ')} | \`${literal(defaults[key])}\` | ${rule.unit || '–'} | ${cell(rule.allowed)} | ${cell(docs.get(key)!.text)} |`,
+      );
+    }
+    lines.push('');
+  }
+  lines.push('**constructor only** (`new Ocean(renderer, options)`; `path` also by `ocean.setPath`)', '', '| option | default | what it is |', '|:--|:--|:--|');
+  for (const key of ['sunDirection', 'path', 'worker', 'localWaves']) {
+    const doc = constructorDocs.get(key)!;
+    const value = doc.defaultValue === null ? '–' : `\`${doc.defaultValue}\` ${doc.defaultNote}`.trim();
+    lines.push(`| \`${key}\` | ${cell(value)} | ${cell(doc.text)} |`);
+  }
+  lines.push('', '**`<fft-ocean>` only** (beside the options above, in kebab case)', '', '| attribute | default | what it is |', '|:--|:--|:--|');
+  for (const [key, value] of Object.entries(ELEMENT_DEFAULTS)) lines.push(`| \`${kebab(key)}\` | \`${literal(value)}\` | ${cell(elementDocs.get(key)!.text)} |`);
+  return lines.join('\n');
+}
+
+const BEGIN = '<!-- option tables: generated from the source by `npm run docs`, checked by tests/unit/readme.test.ts -->';
+const END = '<!-- end of option tables -->';
+
+describe('the README', () => {
+  it('has the option tables the source gives (npm run docs writes them)', () => {
+    const readme = source('README.md');
+    const begin = readme.indexOf(BEGIN);
+    const end = readme.indexOf(END);
+    expect(begin, 'the README has the option tables’ markers').toBeGreaterThan(0);
+    const written = readme.slice(begin + BEGIN.length, end).trim();
+    const generated = optionTables();
+    if (process.env.UPDATE_README === '1' && written !== generated) {
+      writeFileSync(new URL('README.md', root), `${readme.slice(0, begin + BEGIN.length)}\n\n${generated}\n\n${readme.slice(end)}`);
+      return;
+    }
+    expect(written).toBe(generated);
+  });
+
+  it('names every attribute of <fft-ocean> in its tables', () => {
+    const readme = source('README.md');
+    const tables = readme.slice(readme.indexOf(BEGIN), readme.indexOf(END));
+    for (const attribute of FFT_OCEAN_ATTRIBUTES) expect(tables, attribute).toContain(`\`${attribute}\``);
+  });
+});
+
+describe('the TSDoc of every option', () => {
+  it('gives a @defaultValue equal to the default in force', () => {
+    const checked: string[] = [];
+    const sources = [
+      ...TABLES.map(({ defaults, docs }) => ({ defaults, docs })),
+      { defaults: ELEMENT_DEFAULTS as unknown as Record<string, unknown>, docs: elementDocs },
+    ];
+    for (const { defaults, docs } of sources) {
+      for (const [key, value] of Object.entries(defaults)) {
+        const doc = docs.get(key);
+        expect(doc?.defaultValue, `${key} has a @defaultValue`).toBeTruthy();
+        expect(valueOf(doc!.defaultValue!), key).toEqual(value);
+        checked.push(key);
+      }
+    }
+    // The Ocean's own sun options repeat the sun table's: the same defaults.
+    for (const [key, value] of Object.entries(DEFAULT_SUN)) expect(valueOf(constructorDocs.get(key)!.defaultValue!), `OceanOptions.${key}`).toEqual(value);
+    expect(checked.length).toBe(Object.keys(DEFAULT_PARAMETERS).length + Object.keys(DEFAULT_SUN).length + Object.keys(DEFAULT_SHADING).length + Object.keys(ELEMENT_DEFAULTS).length);
+  });
+});
