@@ -12,6 +12,7 @@
 #include "surface/foam.glsl"
 #include "surface/fromBelow.glsl"
 #include <fog_pars_fragment>
+#include <logdepthbuf_pars_fragment>
 
 uniform vec3 sunDirection;     // towards the sun
 uniform vec3 sunColor;        // radiance of the glint
@@ -58,6 +59,8 @@ uniform bool captureRestPoint;
 #define SHADING_HEIGHT 5            // report Figure 3
 
 void main() {
+  // First, so that every path below writes the same depth (ocean.vert).
+  #include <logdepthbuf_fragment>
 #ifdef CAPTURE_POSITIONS
   // Geometry test: the displaced position, or the rest point with its mip level and ring.
   gl_FragColor = captureRestPoint ? vec4(vRestPosition, vLod, vRing) : vec4(vWorldPosition, 1.0);

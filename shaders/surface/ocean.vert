@@ -34,6 +34,13 @@ flat varying float vRing;
 flat varying vec3 vInnerRing;
 varying float vLod;
 #include <fog_pars_vertex>
+#include <logdepthbuf_pars_vertex>
+#ifdef USE_LOGARITHMIC_DEPTH_BUFFER
+// three's logdepthbuf_vertex asks this of its <common> chunk, which the sea's shaders leave out.
+bool isPerspectiveMatrix(mat4 m) {
+  return m[2][3] == -1.0;
+}
+#endif
 #ifdef CAPTURE_POSITIONS
 uniform float captureWidth;
 uniform float captureHeight;
@@ -80,4 +87,7 @@ void main() {
   gl_Position = projectionMatrix * mvPosition;
   #include <fog_vertex>
 #endif
+  // With the renderer's logarithmicDepthBuffer, the depth three's own materials write: else a
+  // floating object's submerged part would be compared with a different depth and show through.
+  #include <logdepthbuf_vertex>
 }

@@ -7,13 +7,13 @@
 import {
   BufferAttribute,
   BufferGeometry,
-  Camera,
   GLSL3,
   HalfFloatType,
   LinearFilter,
   LinearMipmapLinearFilter,
   Mesh,
   NearestFilter,
+  OrthographicCamera,
   RepeatWrapping,
   RGBAFormat,
   ShaderMaterial,
@@ -25,7 +25,9 @@ import { shaderSource } from '../shaderSource';
 
 export class FullscreenPass {
   private readonly mesh: Mesh;
-  private readonly camera = new Camera();
+  // The vertex shader ignores the camera, but three asks it for updateProjectionMatrix() under a
+  // reversedDepthBuffer, which a bare Camera lacks.
+  private readonly camera = new OrthographicCamera(-1, 1, 1, -1, 0, 1);
 
   constructor() {
     const geometry = new BufferGeometry();

@@ -37,6 +37,7 @@ export class SkyBackground extends Mesh<BufferGeometry, ShaderMaterial> {
         skyEnvironment: sky.environment,
         skyProjectionInverse: { value: new Matrix4() },
         skyCameraRotation: { value: new Matrix3() },
+        farDepth: { value: 1 },
         backgroundWater: underWater.backgroundWater,
         deepWater: underWater.deepWater,
       },
@@ -50,8 +51,11 @@ export class SkyBackground extends Mesh<BufferGeometry, ShaderMaterial> {
     this.renderOrder = SKY_RENDER_ORDER;
   }
 
-  override onBeforeRender(_renderer: WebGLRenderer, _scene: Scene, camera: Camera): void {
+  override onBeforeRender(renderer: WebGLRenderer, _scene: Scene, camera: Camera): void {
     const u = this.material.uniforms;
+    // A reversed depth buffer (three's reversedDepthBuffer) has its far plane at depth 0, and
+    // passes what is farther only where nothing nearer was drawn: the sky then goes there.
+    u.farDepth.value = renderer.state.buffers.depth.getReversed?.() ? 0 : 1;
     u.skyProjectionInverse.value.copy(camera.projectionMatrixInverse);
     u.skyCameraRotation.value.setFromMatrix4(camera.matrixWorld);
     const toneMapped = !this.sky.usingFaces;

@@ -203,6 +203,18 @@ test('the sea honours scene.fog (Fog and FogExp2) as three\'s materials do: far 
   expect(clearFar[1]).toBeGreaterThan(60); // without fog the far sea is not magenta
 });
 
+test('with a plain, a logarithmic or a reversed depth buffer the sea hides the submerged half of a floating box', async ({ page }) => {
+  await openOcean(page);
+  const modes = await page.evaluate(() => window.ocean.depthBufferCheck());
+  for (const { mode, inForce, above, below } of modes) {
+    console.log(`depth buffer ${mode}${inForce ? '' : ' (not available here: plain depth in force)'}: box above the water ${above.join(',')}, below ${below.join(',')}`);
+    expect(above, `${mode}: the box above the water is red`).toEqual([255, 0, 0]);
+    // Below the water line the sea is drawn, not the box (whose red would show through).
+    expect(below[0] - Math.max(below[1], below[2]), `${mode}: the box under the water is hidden`).toBeLessThan(60);
+  }
+  expect(modes.find((m) => m.mode === 'logarithmic')!.inForce).toBe(true);
+});
+
 test.describe('under water', () => {
   for (const ior of [1.333, 1.5]) {
     test(`Snell's window: looking up from under a calm sea, the sky shows within asin(1/n) of the zenith (n = ${ior}, within 1°)`, async ({ page }) => {

@@ -4,11 +4,14 @@
  */
 import {
   ACESFilmicToneMapping,
+  BoxGeometry,
   Color,
   FloatType,
   Fog,
   FogExp2,
   LinearSRGBColorSpace,
+  Mesh,
+  MeshBasicMaterial,
   NoToneMapping,
   PerspectiveCamera,
   Points,
@@ -304,6 +307,48 @@ const harness = {
     }
     scene.fog = null;
     return { near, far, nearDistance: 20, farDistance: 2000 };
+  },
+  /**
+   * A red box 2 m on a side, half under a calm sea, seen from 7 m away and 2 m up, with a renderer
+   * of each depth buffer: plain, logarithmic and reversed (where EXT_clip_control allows it). For
+   * each: whether it was in force, and the colour (0–255) at the middle of the box's front face
+   * 0.6 m above and 0.6 m below the water line.
+   */
+  depthBufferCheck(): { mode: string; inForce: boolean; above: number[]; below: number[] }[] {
+    const modes = [
+      { mode: 'plain', options: {} },
+      { mode: 'logarithmic', options: { logarithmicDepthBuffer: true } },
+      { mode: 'reversed', options: { reversedDepthBuffer: true } },
+    ];
+    return modes.map(({ mode, options }) => {
+      const own = new WebGLRenderer({ ...options, antialias: false });
+      own.setSize(160, 120);
+      const ownScene = new Scene();
+      const ocean = new Ocean(own, { resolution: 32, windSpeed: 1, localWaves: false });
+      const box = new Mesh(new BoxGeometry(2, 2, 2), new MeshBasicMaterial({ color: 0xff0000 }));
+      ownScene.add(ocean, box);
+      const ownCamera = new PerspectiveCamera(50, 160 / 120, 0.1, 1e5);
+      ownCamera.position.set(0, 2, 7);
+      ownCamera.lookAt(0, 0, 0);
+      ocean.update(1);
+      own.render(ownScene, ownCamera);
+      own.render(ownScene, ownCamera); // the first draw after set-up builds the layers' programs
+      const gl = own.getContext();
+      const colourAt = (y: number) => {
+        const at = new Vector3(0, y, 1).project(ownCamera);
+        const pixel = new Uint8Array(4);
+        gl.readPixels(Math.round(((at.x + 1) / 2) * 160), Math.round(((at.y + 1) / 2) * 120), 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+        return [...pixel.slice(0, 3)];
+      };
+      const inForce = mode === 'plain' || (mode === 'logarithmic' ? own.capabilities.logarithmicDepthBuffer : own.capabilities.reversedDepthBuffer);
+      const result = { mode, inForce, above: colourAt(0.6), below: colourAt(-0.6) };
+      ocean.dispose();
+      box.geometry.dispose();
+      box.material.dispose();
+      own.dispose();
+      own.forceContextLoss();
+      return result;
+    });
   },
   horizonCheck(changes: Partial<SimulationParameters>): { before: number; beforeAtSeaLevel: number; seaLevel: number; after: number; farthest: number } {
     return withOcean(changes, (ocean) => {
