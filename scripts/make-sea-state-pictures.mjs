@@ -24,6 +24,9 @@
 //
 // The feature pictures (FEATURES: whitecaps in a storm, a boat and its wake, …) are app links
 // rendered with the shot CLI's --query into docs/features/<file>, checked and stored the same way.
+// The first of them is the README's picture: what `npm start` shows first (the app with no URL
+// parameters, at t = 0), kept as the shot wrote it (truecolour), so that it is exactly that view;
+// tests/browser/shot.spec.ts renders it again and compares.
 import { spawn } from 'node:child_process';
 import { mkdirSync, readFileSync, statSync, writeFileSync } from 'node:fs';
 import { availableParallelism } from 'node:os';
@@ -37,8 +40,11 @@ import { ensureBuiltApp } from './shot.mjs';
 const ROOT = resolve(dirname(fileURLToPath(import.meta.url)), '..');
 const OUT_DIR = join(ROOT, 'docs', 'sea-states');
 const FEATURES_DIR = join(ROOT, 'docs', 'features');
+/** The README's picture, in FEATURES_DIR (tests/browser/shot.spec.ts knows this name too). */
+const FIRST_VIEW_FILE = 'first-view.png';
 /** The README's feature pictures: app links (what the app's "copy link" gives), paused at their t. */
 const FEATURES = [
+  { name: "the app's first view", file: FIRST_VIEW_FILE, query: 'paused=1', truecolour: true },
   { name: 'whitecaps in a storm', file: 'whitecaps.png', query: 'windSpeed=20&seed=7&paused=1&t=30&cam=0,25,0,-53.13,-12' },
   { name: 'a boat and its wake', file: 'wake.png', query: 'windSpeed=4&seed=7&boat=1&paused=1&t=40&cam=0,30,0,-20,-30' },
   { name: 'under water', file: 'underwater.png', query: 'windSpeed=6&seed=7&paused=1&t=12.5&cam=0,-4,0,-150,45' },
@@ -311,7 +317,7 @@ async function main() {
     const file = join(state.query ? FEATURES_DIR : OUT_DIR, state.file);
     const png = PNG.sync.read(readFileSync(file));
     const { mean, deviation } = seaLuma(png);
-    writeFileSync(file, indexedPng(png));
+    if (!state.truecolour) writeFileSync(file, indexedPng(png));
     const seconds = ((performance.now() - shotStarted) / 1000).toFixed(0);
     log(`${relative(ROOT, file)}: ${(statSync(file).size / 1024).toFixed(0)} KiB, sea luma ${mean.toFixed(0)} ± ${deviation.toFixed(1)}, ${seconds} s`);
     if (mean < 8 || deviation < 1) failures.push(`${state.name}: the sea is black or flat (luma ${mean.toFixed(1)} ± ${deviation.toFixed(2)})`);

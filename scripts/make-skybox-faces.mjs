@@ -42,7 +42,9 @@ const sunDirection = [
 ];
 const sunColor = [1, 1, 1];
 const sunIntensity = 16;
-const deepWaterColor = [0.004, 0.01, 0.035];
+// skyDaylight of src/render/daylight.ts (a port: keep in step): the sky's light through twilight.
+const daylight = Math.max(10 ** ((Math.log10(400 / 3.4) / 6) * Math.min(sunElevation, 0)), 0.002 / 400);
+const deepWaterColor = [0.004, 0.01, 0.035].map((c) => c * daylight);
 
 // ---- Port of shaders/sky/analyticSky.glsl.
 const RAYLEIGH_DEPTH = [0.0464, 0.108, 0.2648];
@@ -69,7 +71,6 @@ function airMass(sinElevation) {
 /** Linear RGB radiance towards the unit world direction d (y up). */
 function skyRadiance(d) {
   const sun = sunDirection;
-  const sunLight = smoothstep(-0.1, 0.02, sun[1]);
   const sunAirMass = airMass(sun[1]);
   const viewAirMass = airMass(d[1]);
   const gamma = 2 * Math.asin(clamp(0.5 * Math.hypot(d[0] - sun[0], d[1] - sun[1], d[2] - sun[2]), 0, 1));
@@ -85,7 +86,7 @@ function skyRadiance(d) {
 
   return [0, 1, 2].map((c) => {
     const depth = RAYLEIGH_DEPTH[c] + MIE_DEPTH + OZONE_DEPTH[c];
-    const sunIrradiance = sunColor[c] * sunIntensity * sunLight;
+    const sunIrradiance = sunColor[c] * sunIntensity * daylight;
     const sunDepth = depth * sunAirMass;
     const direct = Math.exp(-sunDepth);
     const scatteredTransmittance = (1 - direct) / sunDepth;

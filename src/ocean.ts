@@ -114,7 +114,7 @@ export class Ocean extends Object3D {
     this.sky = new SkyEnvironment(renderer, { sunElevation: sun.elevation, sunAzimuth: sun.azimuth });
     const sim = this.simulation;
     this.surface = new OceanSurface(
-      { environment: this.sky.environment, sunDirection: this.sky.skyUniforms.skySunDirection },
+      { environment: this.sky.environment, sunDirection: this.sky.skyUniforms.skySunDirection, daylight: this.sky.skyUniforms },
       // 6 RMS: a crest that high comes once in ~10⁸ waves (Rayleigh heights); plus the local waves' metre.
       () => ({
         layers: sim.surfaceLayers,

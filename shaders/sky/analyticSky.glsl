@@ -36,6 +36,7 @@ uniform vec3 skySunDirection;   // unit, y up; the direction towards the sun
 uniform vec3 skySunColor;       // linear RGB colour of sunlight above the atmosphere
 uniform float skySunIntensity;  // E_sun: scales sky and sun together
 uniform vec3 skyDeepWaterColor; // linear RGB radiance of the deep water below the horizon
+uniform float skyDaylight;      // the sky's light as a fraction of the day's (src/render/daylight.ts)
 
 const float SKY_PI = 3.141592653589793;
 // Zenith optical depths at sea level (β·H) for 680, 550 and 440 nm: Rayleigh β = (5.8, 13.5,
@@ -63,7 +64,10 @@ float skyAirMass(float sinElevation) {
 vec3 skyRadiance(vec3 direction) {
   vec3 d = normalize(direction);
   float skyWeight = smoothstep(-SKY_HORIZON_BLEND, 0.0, d.y);
-  if (skyWeight <= 0.0) return skyDeepWaterColor;
+  // The sun sets: below the horizon it lights the sky less and less, through twilight into the
+  // night (src/render/daylight.ts), and the water with it.
+  vec3 deepWater = skyDeepWaterColor * skyDaylight;
+  if (skyWeight <= 0.0) return deepWater;
   vec3 sun = normalize(skySunDirection);
   vec3 depth = SKY_RAYLEIGH_DEPTH + SKY_MIE_DEPTH + SKY_OZONE_DEPTH; // extinction, τ
 
@@ -71,8 +75,7 @@ vec3 skyRadiance(vec3 direction) {
   vec3 sunDepth = depth * skyAirMass(sun.y);
   vec3 sunTransmittance = exp(-sunDepth);                             // to the ground: the disk
   vec3 scatteredTransmittance = (1.0 - sunTransmittance) / sunDepth;  // T̄_sun: to the scatterers
-  // The sun sets: below the horizon it lights the sky less and less (no twilight model).
-  sunIrradiance *= smoothstep(-0.1, 0.02, sun.y);
+  sunIrradiance *= skyDaylight;
 
   // γ from the chord |d − sun| = 2 sin(γ/2), which stays accurate near the sun where acos does not.
   float gamma = 2.0 * asin(clamp(0.5 * distance(d, sun), 0.0, 1.0));
@@ -93,5 +96,5 @@ vec3 skyRadiance(vec3 direction) {
 
   if (skyWeight >= 1.0) return sky;
   const vec3 darkest = vec3(1e-6); // keeps log finite (a sky with the sun far below the horizon is 0)
-  return exp(mix(log(max(skyDeepWaterColor, darkest)), log(max(sky, darkest)), skyWeight));
+  return exp(mix(log(max(deepWater, darkest)), log(max(sky, darkest)), skyWeight));
 }

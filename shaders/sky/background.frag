@@ -6,13 +6,14 @@
 // from below every upward one does, so what the sea leaves below the horizon is seen from inside
 // the water); 2 the deep water everywhere (the eye under the water: only gaps of the far surface).
 uniform int backgroundWater;
-uniform vec3 deepWater;  // the radiance of deep water (the sea's scatterColor)
+uniform vec3 deepWater;  // the radiance of deep water in daylight (the sea's scatterColor)
+uniform float skyDaylight;  // the sky's light as a fraction of the day's (src/render/daylight.ts)
 varying vec3 vDirection;
 
 void main() {
   vec3 direction = normalize(vDirection);
   bool inWater = backgroundWater == 2 || (backgroundWater == 1 && direction.y < 0.0);
-  gl_FragColor = vec4(inWater ? deepWater : environmentRadiance(direction), 1.0);
+  gl_FragColor = vec4(inWater ? skyDaylight * deepWater : environmentRadiance(direction), 1.0);
   #include <tonemapping_fragment>
   #include <colorspace_fragment>
 }

@@ -16,6 +16,11 @@
 
 uniform vec3 sunDirection;     // towards the sun
 uniform vec3 sunColor;        // radiance of the glint
+// As the sun sets (src/render/daylight.ts, shared with the sky): the sky's light as a fraction of
+// the day's, which the water scatters back, and the fraction of the sun's disk above the horizon,
+// which makes the glint and the caustics.
+uniform float skyDaylight;
+uniform float skySunVisibility;
 uniform float sunShininess;
 uniform float iorAir;
 uniform float iorWater;
@@ -106,29 +111,31 @@ void main() {
 #elif SHADING_MODE == SHADING_HEIGHT
   gl_FragColor = vec4(vec3(clamp(0.5 + 0.5 * vWorldPosition.y / heightScale, 0.0, 1.0)), 1.0);
 #else
+  vec3 deepWater = skyDaylight * scatterColor;  // the light deep water scatters back, as the sky gives it
+  vec3 sunLight = skySunVisibility * sunColor;
   #if SHADING_MODE == SHADING_REFLECTION
   vec3 colour = environmentRadiance(reflected);
   #elif SHADING_MODE == SHADING_REFRACTION
-  vec3 colour = throughWater(environmentRadiance(refracted), refracted, absorption, scatterColor, viewDepth);
+  vec3 colour = throughWater(environmentRadiance(refracted), refracted, absorption, deepWater, viewDepth);
   #else
   // Seen from below: the horizon grid's triangles face up (counter-clockwise seen from above), so
   // from under the water they show their back.
   vec3 fromEye = vWorldPosition - cameraPosition;
   bool nearEye = dot(fromEye, fromEye) < WATERLINE_REACH * WATERLINE_REACH;
   if (eyeSide == EYE_BELOW || (eyeSide == EYE_NEAR && (nearEye ? !gl_FrontFacing : eyeInWater))) {
-    gl_FragColor = vec4(surfaceFromBelow(view, choppyNormal(derivatives, dxDz), length(fromEye), iorAir, iorWater, absorption, scatterColor), 1.0);
+    gl_FragColor = vec4(surfaceFromBelow(view, choppyNormal(derivatives, dxDz), length(fromEye), iorAir, iorWater, absorption, deepWater), 1.0);
     #include <tonemapping_fragment>
     #include <colorspace_fragment>
     return;
   }
   vec3 sky = environmentRadiance(reflected);
-  vec3 water = throughWater(environmentRadiance(refracted), refracted, absorption, scatterColor, viewDepth);
-  vec3 glint = sunColor * reflectance * pow(max(dot(reflected, sunDirection), 0.0), sunShininess);
-  vec3 colour = reflectance * sky + (1.0 - reflectance) * water + caustic * causticColor + glint;
+  vec3 water = throughWater(environmentRadiance(refracted), refracted, absorption, deepWater, viewDepth);
+  vec3 glint = sunLight * reflectance * pow(max(dot(reflected, sunDirection), 0.0), sunShininess);
+  vec3 colour = reflectance * sky + (1.0 - reflectance) * water + caustic * skySunVisibility * causticColor + glint;
   // Most of the sea has no foam: it pays for the pattern and the foam's light only where there is.
   if (vFoam > FOAM_VISIBLE) {
     float opacity = foamOpacity(vFoam, vRestPosition);
-    if (opacity > 0.0) colour = mix(colour, foamRadiance(normal, sunDirection, sunColor, environmentRadiance(normal)), opacity);
+    if (opacity > 0.0) colour = mix(colour, foamRadiance(normal, sunDirection, sunLight, environmentRadiance(normal)), opacity);
   }
   #endif
   gl_FragColor = vec4(colour, 1.0);

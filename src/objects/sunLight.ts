@@ -5,17 +5,24 @@
 import { DirectionalLight, Group, HemisphereLight } from 'three';
 import type { Ocean } from '../ocean';
 
+const SUN_INTENSITY = 2.5;
+const SKY_INTENSITY = 2;
+
 export class SunLight extends Group {
-  private readonly sun = new DirectionalLight(0xfff2dd, 2.5);
+  private readonly sun = new DirectionalLight(0xfff2dd, SUN_INTENSITY);
+  private readonly skyLight = new HemisphereLight(0xc4daf0, 0x2a4a62, SKY_INTENSITY);
 
   constructor(private readonly ocean: Ocean) {
     super();
     this.name = 'sun light';
-    this.add(this.sun, new HemisphereLight(0xc4daf0, 0x2a4a62, 2));
+    this.add(this.sun, this.skyLight);
   }
 
-  /** Puts the sun where the ocean's sky has it (call when it moves, or every frame). */
+  /** Puts the sun where the ocean's sky has it, and dims both lights as it sets (call when it moves, or every frame). */
   update(): void {
-    this.sun.position.copy(this.ocean.sky.sunDirection).multiplyScalar(100);
+    const sky = this.ocean.sky;
+    this.sun.position.copy(sky.sunDirection).multiplyScalar(100);
+    this.sun.intensity = SUN_INTENSITY * sky.skyUniforms.skySunVisibility.value;
+    this.skyLight.intensity = SKY_INTENSITY * sky.skyUniforms.skyDaylight.value;
   }
 }

@@ -6,7 +6,7 @@ import { Color, LinearSRGBColorSpace, type RGB } from 'three';
 import { between, finiteAngle, oneOf, rgb, type OptionRule, type OptionTable } from './options';
 
 export interface SunOptions {
-  /** Sun elevation above the horizon in degrees, [-90, 90]. @defaultValue 30 */
+  /** Sun elevation above the horizon in degrees, [-90, 90]. Below the horizon the sky and the sea darken together through twilight (a hundredth of the light at 5.8° below) into night. @defaultValue 30 */
   sunElevation: number;
   /** Sun azimuth in degrees from +x towards +z. @defaultValue 40 */
   sunAzimuth: number;

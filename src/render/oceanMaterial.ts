@@ -23,6 +23,11 @@ export interface OceanMaterialInputs {
   environment: { value: Texture | null };
   /** Towards the sun, unit length (SkyEnvironment.skyUniforms.skySunDirection: the sky's own sun). */
   sunDirection: { value: Vector3 };
+  /**
+   * How much light the sky and the sun still give (SkyEnvironment.skyUniforms: skyDaylight and
+   * skySunVisibility, see daylight.ts); full daylight when left out.
+   */
+  daylight?: { skyDaylight: { value: number }; skySunVisibility: { value: number } };
 }
 
 export class OceanMaterial extends ShaderMaterial {
@@ -76,6 +81,8 @@ export class OceanMaterial extends ShaderMaterial {
     // Shared uniform objects: whoever owns them updates them, this material never rebinds.
     this.uniforms.skyEnvironment = inputs.environment;
     this.uniforms.sunDirection = inputs.sunDirection;
+    this.uniforms.skyDaylight = inputs.daylight?.skyDaylight ?? { value: 1 };
+    this.uniforms.skySunVisibility = inputs.daylight?.skySunVisibility ?? { value: 1 };
     this.setShading(options);
   }
 

@@ -40,6 +40,7 @@ export class SkyBackground extends Mesh<BufferGeometry, ShaderMaterial> {
         farDepth: { value: 1 },
         backgroundWater: underWater.backgroundWater,
         deepWater: underWater.deepWater,
+        skyDaylight: sky.skyUniforms.skyDaylight,
       },
       depthWrite: false, // depthTest stays on: LessEqual passes at the far plane where nothing was drawn
     });

@@ -47,6 +47,7 @@ import {
   type Texture,
   type WebGLRenderer,
 } from 'three';
+import { skyDaylight, sunAboveHorizon } from './daylight';
 import { shaderSource } from '../shaderSource';
 import { checkOption, ParameterError } from '../parameters/options';
 import { DEFAULT_SUN, SUN_OPTIONS } from '../parameters/sceneOptions';
@@ -135,6 +136,10 @@ export class SkyEnvironment {
     skySunColor: { value: Color };
     skySunIntensity: { value: number };
     skyDeepWaterColor: { value: Color };
+    /** The sky's light as a fraction of the day's: 1 with the sun up, falling through twilight (daylight.ts). */
+    skyDaylight: { value: number };
+    /** The fraction of the sun's disk above the horizon: the direct sunlight (daylight.ts). */
+    skySunVisibility: { value: number };
   };
 
   private readonly target: WebGLCubeRenderTarget;
@@ -190,6 +195,8 @@ export class SkyEnvironment {
       skySunIntensity: { value: 16 },
       // Linear RGB; about sRGB (13, 26, 52): the report's "very dark blue" ocean depth.
       skyDeepWaterColor: { value: new Color(0.004, 0.01, 0.035) },
+      skyDaylight: { value: 1 },
+      skySunVisibility: { value: 1 },
     };
     const cubeMaterial = (name: string, fragmentShader: string, uniforms: ShaderMaterial['uniforms']) =>
       new ShaderMaterial({
@@ -320,6 +327,8 @@ export class SkyEnvironment {
     this.elevation = elevationDeg;
     this.azimuth = azimuthDeg;
     sunDirectionFromAngles(elevationDeg, azimuthDeg, this.sun);
+    this.skyUniforms.skyDaylight.value = skyDaylight(elevationDeg);
+    this.skyUniforms.skySunVisibility.value = sunAboveHorizon(elevationDeg);
     if (!this.loaded) this.render();
   }
 

@@ -396,3 +396,26 @@ test.describe('the Ocean API', () => {
     expect(result.children).toBe(0); // left in a scene, it draws nothing
   });
 });
+
+test('night: as the sun sets the sky and the sea darken together, and with the sun 10° down both are dark', async ({ page }) => {
+  await openOcean(page);
+  const views = await page.evaluate(() => window.ocean.nightCheck([30, 0, -3, -6, -10]));
+  for (const v of views) {
+    console.log(`sun at ${v.elevation}°: sky luminance ${v.sky.toPrecision(3)} (brightest ${v.skyMax}), sea ${v.sea.toPrecision(3)} (brightest ${v.seaMax}), sea/sky ${(v.sea / v.sky).toPrecision(3)}`);
+  }
+  const [day, , twilight, civilEnd, night] = views;
+  expect(day.sky).toBeGreaterThan(0.2); // a bright day, not a black picture
+  expect(day.sea).toBeGreaterThan(0.02);
+  // From 3° below the horizon the light falls by about 0.35 decades per degree (AMS Glossary of
+  // Meteorology, "civil twilight": ~400 lx at sunset, ~3.4 lx at −6°): sky and sea both fall far below
+  // the day, and the sea does not stay bright under a dark sky (its share of the sky's light stays
+  // within a factor of 3 of the day's).
+  for (const dusk of [twilight, civilEnd]) {
+    expect(dusk.sky).toBeLessThan(0.3 * day.sky);
+    expect(dusk.sea).toBeLessThan(0.3 * day.sea);
+    expect(dusk.sea / dusk.sky).toBeLessThan(3 * (day.sea / day.sky));
+  }
+  // Night: no pixel brighter than 3 levels, sky or sea (before: a black sky over a bright blue sea).
+  expect(night.skyMax).toBeLessThanOrEqual(3);
+  expect(night.seaMax).toBeLessThanOrEqual(3);
+});

@@ -246,3 +246,24 @@ test('a link from the app and its shot agree pixel for pixel', async ({ page }) 
   expect(other.code, other.stderr).toBe(0);
   expect(readFileSync(join(dir, 'other.png')).equals(readFileSync(join(dir, 'link.png')))).toBe(false);
 });
+
+test("the README's picture is what npm start shows first: the app's defaults at t = 0, rendered again, match it", async () => {
+  test.setTimeout(300_000);
+  const readmePicture = 'docs/features/first-view.png'; // FIRST_VIEW_FILE of scripts/make-sea-state-pictures.mjs
+  expect(readFileSync(join(root, 'README.md'), 'utf8')).toContain(`](${readmePicture})`);
+  const committed = rgba(join(root, readmePicture));
+  // The app with no URL parameters starts at t = 0; paused, it stays on that first view.
+  const result = await shot(['--query', 'paused=1', '--size', `${committed.width}x${committed.height}`, '--out', join(dir, 'first-view.png')]);
+  expect(result.code, result.stderr).toBe(0);
+  expect(result.stderr).toContain('t = 0 s');
+  const fresh = rgba(join(dir, 'first-view.png'));
+  expect([fresh.width, fresh.height]).toEqual([committed.width, committed.height]);
+  // As the screenshot baselines: rasterization may differ a little between Chromium builds.
+  let differing = 0;
+  for (let i = 0; i < fresh.data.length; i += 4) {
+    const difference = Math.max(...[0, 1, 2].map((c) => Math.abs(fresh.data[i + c] - committed.data[i + c])));
+    if (difference > 24) differing++;
+  }
+  console.log(`README picture against a fresh first view: ${differing} of ${fresh.width * fresh.height} pixels differ by more than 24 levels`);
+  expect(differing / (fresh.width * fresh.height)).toBeLessThan(0.01);
+});

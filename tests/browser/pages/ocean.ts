@@ -350,6 +350,56 @@ const harness = {
       return result;
     });
   },
+  /**
+   * The whole Ocean (its generated sky too), tone-mapped as the app draws it, seen level from 10 m
+   * up towards the sun's azimuth, with the sun at each elevation (degrees). For each: the mean
+   * linear luminance (Rec. 709 weights of the decoded sRGB pixels) of the sky (the rows 5–40 % of
+   * the height) and of the sea (60–95 %), and the brightest 8-bit channel of each.
+   */
+  nightCheck(elevations: number[]): { elevation: number; sky: number; sea: number; skyMax: number; seaMax: number }[] {
+    const [w, h] = [160, 90];
+    const own = new WebGLRenderer({ antialias: false });
+    own.setSize(w, h);
+    own.toneMapping = ACESFilmicToneMapping;
+    const ownScene = new Scene();
+    const ocean = new Ocean(own, { resolution: 32, windSpeed: 8, localWaves: false, foamAmount: 0 });
+    ownScene.add(ocean);
+    const ownCamera = new PerspectiveCamera(60, w / h, 0.5, 1e5);
+    ownCamera.position.set(0, 10, 0);
+    ownCamera.lookAt(100, 10, 0); // the sun's azimuth 0: towards +x
+    const gl = own.getContext();
+    const pixels = new Uint8Array(w * h * 4);
+    const decode = (v: number) => (v <= 10.31 ? v / 255 / 12.92 : ((v / 255 + 0.055) / 1.055) ** 2.4);
+    const band = (from: number, to: number) => {
+      let luminance = 0;
+      let brightest = 0;
+      let count = 0;
+      // readPixels rows run from the bottom; `from` and `to` are fractions of the height from the top.
+      for (let y = Math.round((1 - to) * h); y < Math.round((1 - from) * h); y++) {
+        for (let x = 0; x < w; x++) {
+          const i = 4 * (y * w + x);
+          luminance += 0.2126 * decode(pixels[i]) + 0.7152 * decode(pixels[i + 1]) + 0.0722 * decode(pixels[i + 2]);
+          brightest = Math.max(brightest, pixels[i], pixels[i + 1], pixels[i + 2]);
+          count++;
+        }
+      }
+      return { luminance: luminance / count, brightest };
+    };
+    const results = elevations.map((elevation) => {
+      ocean.setSun(elevation, 0);
+      ocean.update(2);
+      own.render(ownScene, ownCamera);
+      own.render(ownScene, ownCamera); // the first draw after set-up builds the layers' programs
+      gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+      const sky = band(0.05, 0.4);
+      const sea = band(0.6, 0.95);
+      return { elevation, sky: sky.luminance, sea: sea.luminance, skyMax: sky.brightest, seaMax: sea.brightest };
+    });
+    ocean.dispose();
+    own.dispose();
+    own.forceContextLoss();
+    return results;
+  },
   horizonCheck(changes: Partial<SimulationParameters>): { before: number; beforeAtSeaLevel: number; seaLevel: number; after: number; farthest: number } {
     return withOcean(changes, (ocean) => {
       const before = ocean.horizonDistanceFor(camera.position.y);
