@@ -19,7 +19,7 @@ import { SkyEnvironment, sunAnglesFromDirection, type SunAngles, type SunDirecti
 import { OceanSimulation, type PathPreference, type SimulationOptions, type SimulationPath } from './layers/oceanSimulation';
 import type { LocalWaves } from './layers/localWaves';
 import { heightAt, normalAt, velocityAt } from './layers/surfaceQuery';
-import { optionAliases, unknownOption } from './parameters/options';
+import { DisposedError, optionAliases, unknownOption } from './parameters/options';
 import { ParameterError, SIMULATION_OPTIONS, type SimulationParameters } from './parameters/parameters';
 import { DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ShadingChanges, type ShadingOptions } from './parameters/sceneOptions';
 import type { InitialSpectrum } from './spectrum/initialSpectrum';
@@ -47,13 +47,7 @@ export interface SunPosition {
   direction?: SunDirection;
 }
 
-/** Thrown by every method of an Ocean after its dispose(); `parameter` names the method. */
-export class DisposedError extends ParameterError {
-  constructor(method: string) {
-    super(method, undefined, '', `${method}: this Ocean has been disposed (its GPU resources are freed); create a new Ocean`);
-    this.name = 'DisposedError';
-  }
-}
+export { DisposedError };
 
 const SHADING_ALIASES = optionAliases(SHADING_OPTIONS);
 /** The shading options' names, British aliases included. */

@@ -32,6 +32,7 @@
  * multiple of 4 KiB, loads from one and stores to the other at the same index would falsely look
  * dependent to the CPU ("4K aliasing").
  */
+import { ParameterError } from '../parameters/options';
 /** Columns per pass-1 strip: N rows × 64 columns × 16 bytes (256 KiB at N = 256) stays in L2. */
 const STRIP_WIDTH = 64;
 /** Pass 2 transforms groups of rows of about this many complex numbers (32 KiB), which stay in L1. */
@@ -65,7 +66,7 @@ export class BatchedInverseFft2D {
     readonly fieldCount: number,
   ) {
     if (!Number.isInteger(size) || size < 2 || (size & (size - 1)) !== 0) {
-      throw new RangeError(`FFT size must be a power of two ≥ 2; got ${size}`);
+      throw new ParameterError('FFT size', size, 'a power of two ≥ 2');
     }
     const n = size;
     this.rowStride = n * fieldCount + ROW_PADDING;
@@ -117,7 +118,7 @@ export class BatchedInverseFft2D {
     const n = this.size;
     let valid = n >= 16 && 2 * texels.length === this.fieldCount;
     for (let t = 0; t < texels.length; t++) valid &&= texels[t].length === 4 * n * n;
-    if (!valid) throw new RangeError(`runToTexels needs N ≥ 16 and ${this.fieldCount / 2} arrays of ${4 * n * n} numbers`);
+    if (!valid) throw new ParameterError('runToTexels(texels)', texels, '', `runToTexels needs N ≥ 16 and ${this.fieldCount / 2} arrays of ${4 * n * n} numbers`);
     this.transformAlongZ();
     this.transformAlongX(texels);
   }

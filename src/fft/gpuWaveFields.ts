@@ -42,6 +42,7 @@ import {
   type WebGLRenderer,
 } from 'three';
 import { shaderSource } from '../shaderSource';
+import { UnsupportedError } from '../parameters/options';
 import { fillPhaseTable, PHASE_TABLE_SIZE } from '../spectrum/dispersion';
 import type { InitialSpectrum } from '../spectrum/initialSpectrum';
 import { FullscreenPass, fullscreenMaterial, periodicFieldTarget, runPasses } from './fullscreenPass';
@@ -274,7 +275,7 @@ class LayeredSpectra {
     renderer.state.bindFramebuffer(gl.FRAMEBUFFER, null);
     if (status !== gl.FRAMEBUFFER_COMPLETE) {
       gl.deleteFramebuffer(framebuffer);
-      throw new Error(`GPU FFT: the layered framebuffer is incomplete (status 0x${status.toString(16)})`);
+      throw new UnsupportedError('GPU FFT framebuffer', `GPU FFT: the layered framebuffer is incomplete (status 0x${status.toString(16)})`);
     }
     this.framebuffer = framebuffer;
     this.attached = textures;

@@ -10,6 +10,7 @@
  * fails loudly, with a message naming what is missing, instead of drawing a wrong picture.
  */
 import { REVISION, type WebGLRenderer, type WebGLRenderTarget } from 'three';
+import { UnsupportedError } from '../parameters/options';
 
 interface RendererInternals {
   initRenderTarget?(target: WebGLRenderTarget): void;
@@ -22,7 +23,7 @@ export function checkThreeInternals(renderer: WebGLRenderer): void {
   const internals = renderer as unknown as RendererInternals;
   for (const method of ['initRenderTarget', 'setRenderTargetFramebuffer'] as const) {
     if (typeof internals[method] !== 'function') {
-      throw new Error(`three-fft-ocean: the GPU FFT needs WebGLRenderer.${method}, which three.js r${REVISION} does not have`);
+      throw new UnsupportedError('three.js', `three-fft-ocean: the GPU FFT needs WebGLRenderer.${method}, which three.js r${REVISION} does not have`);
     }
   }
 }
@@ -33,7 +34,7 @@ export function glTextureOf(renderer: WebGLRenderer, target: WebGLRenderTarget):
   internals.initRenderTarget!(target);
   const texture = internals.properties.get(target.texture).__webglTexture;
   if (!(texture instanceof WebGLTexture)) {
-    throw new Error(`three-fft-ocean: three.js r${REVISION} keeps no __webglTexture for a render target's texture`);
+    throw new UnsupportedError('three.js', `three-fft-ocean: three.js r${REVISION} keeps no __webglTexture for a render target's texture`);
   }
   return texture;
 }

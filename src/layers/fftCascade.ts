@@ -6,6 +6,7 @@
  */
 import type { WebGLRenderer } from 'three';
 import { CpuFieldTextures } from '../fft/cpuFieldTextures';
+import { UnsupportedError } from '../parameters/options';
 import { CpuWaveFields } from '../fft/cpuWaveFields';
 import { GpuWaveFields, type GpuPrecision } from '../fft/gpuWaveFields';
 import type { InitialSpectrum } from '../spectrum/initialSpectrum';
@@ -68,7 +69,7 @@ export class FftCascade implements WaveLayer {
 
   /** The fields the textures show now, on the JS path (no computation); the GPU path keeps none. */
   shownFieldsOnCpu(): LayerFieldsOnCpu {
-    if (this.backend instanceof GpuWaveFields) throw new Error('FftCascade.shownFieldsOnCpu: the GPU path keeps its fields on the GPU');
+    if (this.backend instanceof GpuWaveFields) throw new UnsupportedError('shownFieldsOnCpu', 'FftCascade.shownFieldsOnCpu: the GPU path keeps its fields on the GPU');
     return this.backend.shownFields;
   }
 

@@ -59,6 +59,29 @@ export class ParameterError extends Error {
   }
 }
 
+/**
+ * Thrown by every method of an object after its dispose() (an Ocean, a SkyEnvironment);
+ * `parameter` names the method.
+ */
+export class DisposedError extends ParameterError {
+  constructor(method: string, owner = 'Ocean') {
+    super(method, undefined, '', `${method}: this ${owner} has been disposed (its GPU resources are freed); create a new ${owner}`);
+    this.name = 'DisposedError';
+  }
+}
+
+/**
+ * Thrown where this browser, device or three.js release cannot do what was asked (a GPU FFT
+ * without the render targets it needs, say); `parameter` names what is missing. The Ocean's 'auto'
+ * and 'gpu' paths catch it and fall back to the JS path, saying why (ocean.path.reason).
+ */
+export class UnsupportedError extends ParameterError {
+  constructor(what: string, message: string) {
+    super(what, undefined, '', message);
+    this.name = 'UnsupportedError';
+  }
+}
+
 /** Text as messages quote it: in double quotes, cut to its first 40 characters and "…" when longer. */
 export function quoteText(text: string): string {
   return `"${text.length > 40 ? `${text.slice(0, 40)}…` : text}"`;

@@ -7,7 +7,7 @@
 import { Color, DoubleSide, ShaderMaterial, UniformsLib, UniformsUtils, Vector2, Vector3, type Texture } from 'three';
 import { COPY_OFFSET, largestPeriodicLayer, patchBlendUniforms } from '../layers/patchBlend';
 import type { WaveLayer } from '../layers/waveLayer';
-import { mergeOptions } from '../parameters/options';
+import { mergeOptions, ParameterError } from '../parameters/options';
 import { DEFAULT_SHADING, SHADING_MODES, SHADING_OPTIONS, type ShadingChanges, type ShadingOptions } from '../parameters/sceneOptions';
 import { shaderSource, withLayerCount } from '../shaderSource';
 import { finestTexel, RING_COUNT } from './horizonGrid';
@@ -100,7 +100,7 @@ export class OceanMaterial extends ShaderMaterial {
     // The shaders blend two copies of the last layer (src/layers/patchBlend.ts), as the queries do
     // for the largest periodic one: they must be the same layer.
     if (largestPeriodicLayer(layers) !== layers.length - 1) {
-      throw new Error('OceanMaterial.bindLayers: the last layer must be the largest periodic one (it is drawn blended)');
+      throw new ParameterError('layers', layers, '', 'OceanMaterial.bindLayers: the last layer must be the largest periodic one (it is drawn blended)');
     }
     this.boundLayers = layers;
     if (layers.length !== this.defines.LAYER_COUNT) {

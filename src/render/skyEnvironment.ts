@@ -49,7 +49,7 @@ import {
 } from 'three';
 import { skyDaylight, sunAboveHorizon } from './daylight';
 import { shaderSource } from '../shaderSource';
-import { checkOption, ParameterError } from '../parameters/options';
+import { checkOption, DisposedError, ParameterError } from '../parameters/options';
 import { DEFAULT_SUN, SUN_OPTIONS } from '../parameters/sceneOptions';
 
 /** URLs of the six faces, in three.js's naming (p/n = positive/negative axis). */
@@ -172,9 +172,7 @@ export class SkyEnvironment {
     const { sunElevation = DEFAULT_SUN.sunElevation, sunAzimuth = DEFAULT_SUN.sunAzimuth, resolution = 256 } = options;
     validateSun(sunElevation, sunAzimuth);
     if (!Number.isInteger(resolution) || resolution < 1 || resolution > renderer.capabilities.maxCubemapSize) {
-      throw new Error(
-        `SkyEnvironment: resolution must be an integer in [1, ${renderer.capabilities.maxCubemapSize}], got ${resolution}`,
-      );
+      throw new ParameterError('SkyEnvironment resolution', resolution, `an integer in [1, ${renderer.capabilities.maxCubemapSize}]`);
     }
 
     this.target = new WebGLCubeRenderTarget(resolution, {
@@ -250,7 +248,7 @@ export class SkyEnvironment {
    * sun: only sunDirection changes.
    */
   setSun(elevationDeg: number, azimuthDeg: number): void {
-    if (this.disposed) throw new Error('SkyEnvironment.setSun: the environment has been disposed');
+    if (this.disposed) throw new DisposedError('SkyEnvironment.setSun', 'SkyEnvironment');
     validateSun(elevationDeg, azimuthDeg);
     this.applySun(elevationDeg, azimuthDeg);
   }
@@ -259,14 +257,15 @@ export class SkyEnvironment {
    * Loads six face images (sRGB) and, once all have loaded, uses them as the environment.
    * Rejects, with the generated (or previously loaded) sky still in use, if any face fails to
    * load or decode (404, CORS, not an image), naming the failing URLs; also if a later
-   * loadFaces, useGeneratedSky or dispose superseded this call before it finished.
+   * loadFaces, useGeneratedSky or dispose superseded this call before it finished. It rejects
+   * with a ParameterError whose parameter is 'urls'.
    */
   loadFaces(urls: CubeFaceUrls): Promise<void> {
-    if (this.disposed) return Promise.reject(new Error('SkyEnvironment.loadFaces: the environment has been disposed'));
+    if (this.disposed) return Promise.reject(new DisposedError('SkyEnvironment.loadFaces', 'SkyEnvironment'));
     const list = FACE_ORDER.map((face) => urls?.[face]);
     const missing = FACE_ORDER.filter((_face, i) => typeof list[i] !== 'string' || list[i] === '');
     if (missing.length > 0) {
-      return Promise.reject(new Error(`SkyEnvironment.loadFaces: no URL for face ${missing.join(', ')}; the generated sky stays in use`));
+      return Promise.reject(failedFaces(urls, `no URL for face ${missing.join(', ')}; the generated sky stays in use`));
     }
     const generation = ++this.generation;
 
@@ -288,7 +287,7 @@ export class SkyEnvironment {
           } else {
             message = `superseded by a later loadFaces or useGeneratedSky call before ${list.join(', ')} finished loading`;
           }
-          reject(new Error(`SkyEnvironment.loadFaces: ${message}`));
+          reject(failedFaces(urls, message));
           return;
         }
         texture.colorSpace = SRGBColorSpace;
@@ -346,6 +345,11 @@ export class SkyEnvironment {
     renderer.xr.enabled = previousXr;
     renderer.setRenderTarget(previousTarget, previousFace, previousLevel);
   }
+}
+
+/** Why loadFaces rejects: a ParameterError on its urls, with the whole message. */
+function failedFaces(urls: CubeFaceUrls, message: string): ParameterError {
+  return new ParameterError('urls', urls, '', `SkyEnvironment.loadFaces: ${message}`);
 }
 
 function validateSun(elevationDeg: number, azimuthDeg: number): void {

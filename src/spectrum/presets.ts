@@ -11,6 +11,7 @@
 import { DEFAULT_PARAMETERS, type SimulationParameters } from '../parameters/parameters';
 import { GRAVITY } from './dispersion';
 import { SEA_STATE_KEYS, windSeaPeakFrequency } from './seaState';
+import { ParameterError } from '../parameters/options';
 
 /** [lowest, highest] wind speed of each Beaufort force, m/s (WMO, above). */
 export const BEAUFORT_WIND_RANGES: readonly (readonly [number, number])[] = [
@@ -42,7 +43,7 @@ export const BEAUFORT_FETCH_KM = 500;
 /** Wind speed at the middle of a Beaufort force's range, m/s. */
 export function beaufortWindSpeed(force: number): number {
   if (!(Number.isInteger(force) && force >= 0 && force <= 12)) {
-    throw new RangeError(`Beaufort force must be an integer from 0 to 12; got ${String(force)}`);
+    throw new ParameterError('Beaufort force', force, 'an integer from 0 to 12');
   }
   const [low, high] = BEAUFORT_WIND_RANGES[force];
   return (low + high) / 2;

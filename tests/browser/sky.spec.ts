@@ -150,7 +150,7 @@ test('loadFaces that fails rejects naming the URL, and the generated sky stays i
   const notAnImage = '/tests/browser/pages/sky.html';
   for (const [face, url] of [['nx', missing], ['pz', notAnImage]] as const) {
     const { error, environment } = await page.evaluate((urls) => window.skyHarness.loadFaces(urls), { ...shippedUrls, [face]: url });
-    expect(error).toMatch(/^Error: /);
+    expect(error).toMatch(/^ParameterError on urls: SkyEnvironment.loadFaces: could not load /);
     expect(error).toContain(url);
     expect(error).toContain('generated sky stays in use');
     expect(environment.usingFaces).toBe(false);
@@ -159,7 +159,7 @@ test('loadFaces that fails rejects naming the URL, and the generated sky stays i
 
   // A load overtaken by useGeneratedSky does not switch when it completes late.
   const overtaken = await page.evaluate((urls) => window.skyHarness.loadFaces(urls, 'useGeneratedSky'), shippedUrls);
-  expect(overtaken.error).toContain('superseded');
+  expect(overtaken.error).toMatch(/^ParameterError on urls: SkyEnvironment.loadFaces: superseded by a later/);
   expect(overtaken.environment.usingFaces).toBe(false);
 });
 
@@ -204,6 +204,6 @@ test('dispose returns the renderer to its texture and geometry counts from befor
   // A load still in flight when dispose() runs is dropped, not leaked.
   await page.evaluate(() => window.skyHarness.create());
   const late = await page.evaluate((urls) => window.skyHarness.loadFaces(urls, 'dispose'), shippedUrls);
-  expect(late.error).toContain('disposed');
+  expect(late.error).toMatch(/^ParameterError on urls: SkyEnvironment.loadFaces: the environment was disposed before/);
   expect(await page.evaluate(() => window.skyHarness.memory())).toEqual(baseline);
 });

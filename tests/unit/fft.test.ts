@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { BatchedInverseFft2D } from '../../src/fft/fft';
+import { ParameterError } from '../../src/parameters/options';
 import { SeededRandom } from '../../src/spectrum/random';
 import { naiveInverseDft2D } from './naiveDft';
 
@@ -142,5 +143,6 @@ describe('BatchedInverseFft2D', () => {
 
   it('rejects a size that is not a power of two', () => {
     expect(() => new BatchedInverseFft2D(12, 1)).toThrow(/power of two/);
+    expect(() => new BatchedInverseFft2D(12, 1)).toThrow(ParameterError);
   });
 });

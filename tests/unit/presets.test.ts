@@ -4,7 +4,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import { BEAUFORT_WIND_RANGES, beaufortPreset, beaufortWindSpeed, SEA_PRESETS } from '../../src/spectrum/presets';
-import { validateParameters } from '../../src/parameters/parameters';
+import { ParameterError, validateParameters } from '../../src/parameters/parameters';
 import { seaState } from '../../src/spectrum/seaState';
 
 /** WMO Beaufort table, probable wave height in m for forces 0–12 (force 0: flat calm). */
@@ -23,7 +23,8 @@ describe('Beaufort scale', () => {
     expect(beaufortWindSpeed(0)).toBe(0.1);
     expect(beaufortWindSpeed(6)).toBeCloseTo(12.3, 12);
     expect(beaufortWindSpeed(12)).toBeCloseTo(34.75, 12);
-    for (const bad of [-1, 13, 2.5, NaN]) expect(() => beaufortWindSpeed(bad)).toThrow(/0 to 12/);
+    for (const bad of [-1, 13, 2.5, NaN]) expect(() => beaufortWindSpeed(bad)).toThrow(ParameterError); // the library's error type (README, Errors)
+    expect(() => beaufortPreset(13)).toThrow('Beaufort force must be an integer from 0 to 12; got 13');
   });
 
   it('grows Hs with every force, from ≈ 0 at force 0', () => {

@@ -18,6 +18,7 @@ import {
   WebGLRenderTarget,
 } from 'three';
 import { shaderSource } from '../../../src/shaderSource';
+import { ParameterError } from '../../../src/parameters/options';
 import { SkyBackground } from '../../../src/render/skyBackground';
 import {
   SHIPPED_SKYBOX,
@@ -197,7 +198,7 @@ const skyHarness = {
     try {
       await pending;
     } catch (e) {
-      error = e instanceof Error ? `Error: ${e.message}` : `non-Error rejection: ${String(e)}`;
+      error = e instanceof ParameterError ? `${e.name} on ${e.parameter}: ${e.message}` : `not a ParameterError: ${String(e)}`;
     }
     return { error, environment: describe() };
   },
