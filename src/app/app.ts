@@ -10,6 +10,7 @@
  * stall longer than a second does not make it jump; paused keeps t fixed.
  */
 import { Scene } from 'three';
+import { ParameterError } from '../parameters/options';
 import { CLICKED_STONE, seaPointUnder } from '../render/seaPointer';
 import { SimulationClock } from '../timing/simulationClock';
 import { Boat, centreAhead } from '../objects/boat';
@@ -38,8 +39,13 @@ const camera = createAppCamera();
 const ocean = createAppOcean(renderer, state);
 const sunLight = new SunLight(ocean);
 scene.add(ocean, sunLight);
-// A face set that fails to load (404, CORS, not an image) leaves the generated sky in use.
-loadAppSkybox(ocean, state.skybox)?.catch((error: Error) => overlay.warn('skybox', `skybox: ${error.message}`));
+// A face set that fails to load (404, CORS, not an image, an untrusted origin) leaves the generated
+// sky in use, and leaves the URL: a copied link does not carry it on.
+loadAppSkybox(ocean, state.skybox)?.catch((error: Error) => {
+  overlay.warn('skybox', error instanceof ParameterError && error.parameter === 'skybox' ? error.message : `skybox: ${error.message}`);
+  state.skybox = 'generated';
+  writeUrl();
+});
 
 const [x, y, z, yaw, pitch] = state.cam;
 const controls = new FlyControls(camera, renderer.domElement, { position: [x, y, z], yaw, pitch });

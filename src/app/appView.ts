@@ -6,6 +6,7 @@
  */
 import { ACESFilmicToneMapping, PerspectiveCamera, WebGLRenderer, type WebGLRendererParameters } from 'three';
 import { Ocean, type OceanOptions } from '../ocean';
+import { ParameterError } from '../parameters/options';
 import { skyboxFaceUrls } from '../render/skyEnvironment';
 import { simulationParameters, type AppState } from './urlState';
 
@@ -41,12 +42,30 @@ export function createAppOcean(renderer: WebGLRenderer, state: Readonly<AppState
 }
 
 /**
- * Starts loading the six-face skybox `state.skybox` names (null for 'generated'); until it has
- * loaded, and if it fails, the generated sky stays.
+ * The origins skybox faces may come from besides the page's own: the space-separated origins of
+ * the page's <meta name="fft-ocean-skybox-origins" content="https://cdn.example.com …">. A link
+ * someone shares can then not make the app fetch from wherever it names (tracking, or anything
+ * the page's own policy would not allow); the page that embeds the app says what it trusts.
  */
-export function loadAppSkybox(ocean: Ocean, skybox: string): Promise<void> | null {
+export function trustedSkyboxOrigins(page: Document = document): string[] {
+  const meta = page.querySelector<HTMLMetaElement>('meta[name="fft-ocean-skybox-origins"]');
+  const listed = (meta?.content ?? '').split(/\s+/).filter((origin) => origin !== '');
+  return [page.location.origin, ...listed];
+}
+
+/**
+ * Starts loading the six-face skybox `state.skybox` names (null for 'generated'); until it has
+ * loaded, and if it fails, the generated sky stays. A folder on an origin that is not trusted
+ * (trustedSkyboxOrigins) is refused, with a ParameterError on 'skybox', before anything is fetched.
+ */
+export function loadAppSkybox(ocean: Ocean, skybox: string, trustedOrigins = trustedSkyboxOrigins()): Promise<void> | null {
   if (skybox === 'generated') return null;
   const base = skybox.endsWith('/') ? skybox : `${skybox}/`;
+  const origin = new URL(base, document.baseURI).origin; // 'null' for data:, blob: or javascript: URLs
+  if (!trustedOrigins.includes(origin)) {
+    const allowed = `a folder URL on ${trustedOrigins.join(' or ')} (a page allows others with <meta name="fft-ocean-skybox-origins">)`;
+    return Promise.reject(new ParameterError('skybox', skybox, allowed));
+  }
   return ocean.sky.loadFaces(skyboxFaceUrls(base));
 }
 

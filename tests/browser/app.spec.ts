@@ -684,6 +684,42 @@ test.describe('failures the app explains', () => {
     await expect(page.locator('.notice.warning', { hasText: 'skybox' })).toContainText('/no-such-skybox/px.png');
     const generated = await page.evaluate(() => !window.oceanApp.ocean.sky.usingFaces);
     expect(generated).toBe(true);
+    await expect.poll(() => new URL(page.url()).searchParams.has('skybox')).toBe(false); // a copied link does not carry it on
+  });
+
+  test('a skybox on another origin is refused before anything is fetched, unless the page trusts that origin', async ({ page }) => {
+    const requested: string[] = [];
+    page.on('request', (request) => {
+      if (!request.url().startsWith('http://127.0.0.1')) requested.push(request.url());
+    });
+    for (const skybox of ['https://tracker.example/sky/', '//tracker.example/sky/', 'data:image/png;base64,AAAA/']) {
+      await page.goto(`/?skybox=${encodeURIComponent(skybox)}`);
+      await page.waitForFunction(() => window.oceanApp !== undefined);
+      const warning = page.locator('.notice.warning', { hasText: 'skybox' });
+      await expect(warning).toContainText(`skybox must be a folder URL on ${new URL(page.url()).origin}`);
+      await expect(warning).toContainText('fft-ocean-skybox-origins');
+      expect(await page.evaluate(() => window.oceanApp.ocean.sky.usingFaces)).toBe(false);
+      await expect.poll(() => new URL(page.url()).searchParams.has('skybox')).toBe(false);
+    }
+    expect(requested).toEqual([]);
+
+    // The page's own list: an origin it names is tried (here it does not answer: the load fails, after a request).
+    await page.goto('/?skybox=https://sky.example/faces/');
+    await page.waitForFunction(() => window.oceanApp !== undefined);
+    const trusted = await page.evaluate(async () => {
+      const appView = '/src/app/appView.ts'; // from the dev server, as the app loads it
+      const { loadAppSkybox, trustedSkyboxOrigins } = (await import(appView)) as typeof import('../../src/app/appView');
+      const meta = Object.assign(document.createElement('meta'), { name: 'fft-ocean-skybox-origins', content: 'https://cdn.example  https://sky.example' });
+      document.head.append(meta);
+      if (trustedSkyboxOrigins().join(' ') !== `${location.origin} https://cdn.example https://sky.example`) return 'meta not read';
+      try {
+        await loadAppSkybox(window.oceanApp.ocean, 'https://sky.example/faces/');
+        return 'loaded';
+      } catch (error) {
+        return (error as Error).message;
+      }
+    });
+    expect(trusted).toContain('could not load https://sky.example/faces/px.png');
   });
 
   test('the shipped skybox loads from the URL', async ({ page }) => {
