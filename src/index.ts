@@ -1,5 +1,5 @@
 // three-fft-ocean public API: re-exports only.
-export { Ocean, DisposedError, type OceanOptions, type SunPosition } from './ocean';
+export { Ocean, DisposedError, type OceanOptions, type OceanPath, type OceanEventMap, type SunPosition } from './ocean';
 export { UnsupportedError } from './parameters/options';
 export { OceanSimulation, type SimulationOptions, type SimulationPath, type PathPreference } from './layers/oceanSimulation';
 export {

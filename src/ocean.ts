@@ -11,7 +11,7 @@
  * horizon. Owns everything it creates and frees it in dispose(); after that every method throws a
  * DisposedError.
  */
-import { Object3D, Vector3, type WebGLRenderer } from 'three';
+import { Object3D, Vector3, type Object3DEventMap, type WebGLRenderer } from 'three';
 import { OceanSurface } from './render/oceanSurface';
 import type { OceanShadingOptions } from './render/oceanMaterial';
 import { SkyBackground } from './render/skyBackground';
@@ -77,13 +77,31 @@ export interface SeaStateSummary {
   peakPeriod: number;
 }
 
-export class Ocean extends Object3D {
+/** The FFT path: the preference, the one running and why it is not the best asked for (Ocean.path). */
+export interface OceanPath {
+  preference: PathPreference;
+  running: SimulationPath;
+  reason: string;
+}
+
+/** What an Ocean dispatches (three's addEventListener), beside Object3D's own events. */
+export interface OceanEventMap extends Object3DEventMap {
+  /**
+   * The running FFT path changed, seen at an update(): after setPath or a parameter change, or by
+   * itself when a JS worker failed for good and the main thread took over. `path` is ocean.path.
+   */
+  pathchange: { path: OceanPath };
+}
+
+export class Ocean extends Object3D<OceanEventMap> {
   readonly simulation: OceanSimulation;
   readonly sky: SkyEnvironment;
   readonly surface: OceanSurface;
   /** The sky behind everything (a child; set skyBackground.visible = false to show your own). */
   readonly skyBackground: SkyBackground;
   private currentTime = 0;
+  /** The running path at the last update, to tell when it changes (the pathchange event). */
+  private runningPath: SimulationPath | null = null;
   private disposed = false;
   private rms: { spectra: readonly InitialSpectrum[]; value: number } | null = null;
   private summary: { parameters: Readonly<SimulationParameters>; value: SeaStateSummary } | null = null;
@@ -187,6 +205,12 @@ export class Ocean extends Object3D {
     this.simulation.localWaves?.cameraMoved(camera.x, camera.z);
     this.simulation.update(timeSeconds);
     this.currentTime = timeSeconds;
+    const running = this.simulation.path;
+    if (running !== this.runningPath) {
+      const first = this.runningPath === null;
+      this.runningPath = running;
+      if (!first) this.dispatchEvent({ type: 'pathchange', path: this.path });
+    }
   }
 
   get parameters(): Readonly<SimulationParameters> {
@@ -198,7 +222,7 @@ export class Ocean extends Object3D {
    * ('gpu-rgba32f', 'gpu-rgba16f', 'js' or 'js-worker') and, when it is not the best the preference
    * asks for, why ('' when it is): e.g. "MAX_DRAW_BUFFERS is 4 (the GPU FFT writes 8 at once)".
    */
-  get path(): { preference: PathPreference; running: SimulationPath; reason: string } {
+  get path(): OceanPath {
     this.checkAlive('path');
     const { pathPreference: preference, path: running, pathReason: reason } = this.simulation;
     return { preference, running, reason };

@@ -413,6 +413,8 @@ export class FftOceanElement extends ElementBase {
       if (hit) ocean.localWaves?.drop(hit.x, hit.z, CLICKED_STONE);
     };
     canvas.addEventListener('click', onClick);
+    // The path changed by itself (a worker failed, the main thread took over): tell the page.
+    ocean.addEventListener('pathchange', ({ path }) => this.dispatchEvent(new CustomEvent('fft-ocean-path-change', { detail: path })));
     canvas.addEventListener('webglcontextlost', onContextLost);
     canvas.addEventListener('webglcontextrestored', onContextRestored);
     document.addEventListener('visibilitychange', this.onVisibilityChange);

@@ -34,6 +34,11 @@ export class FftCascade implements WaveLayer {
     this.frame = { size: spectrum.patchSize, origin: [0, 0], periodic: true, resolution: spectrum.resolution };
   }
 
+  /** Why the JS path runs on the main thread although a worker was asked for (CpuFieldTextures.workerFault), or null. */
+  get workerFault(): string | null {
+    return this.backend instanceof CpuFieldTextures ? this.backend.workerFault : null;
+  }
+
   /** Fragment passes per update on the GPU, 0 in JS. */
   get passCount(): number {
     return this.backend instanceof GpuWaveFields ? this.backend.passCount : 0;

@@ -106,14 +106,22 @@ export class OceanSimulation {
     return this.currentLayers.map((layer) => layer.spectrum);
   }
 
-  /** The implementation now running. */
+  /** The implementation now running ('js' once a cascade's worker has failed for good). */
   get path(): SimulationPath {
-    return this.currentPath;
+    return this.currentPath === 'js-worker' && this.workerFault() !== null ? 'js' : this.currentPath;
   }
 
   /** Why the running path is not the best the preference asks for, in words ('' when it is). */
   get pathReason(): string {
-    return this.currentReason;
+    return this.workerFault() ?? this.currentReason;
+  }
+
+  /** The first cascade's reason for computing on the main thread instead of its worker, or null. */
+  private workerFault(): string | null {
+    for (const layer of this.currentLayers) {
+      if (layer.workerFault !== null) return layer.workerFault;
+    }
+    return null;
   }
 
   /** Switches between the GPU and JS paths ('auto' picks the best available). */

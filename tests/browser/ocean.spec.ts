@@ -419,3 +419,41 @@ test('night: as the sun sets the sky and the sea darken together, and with the s
   expect(night.skyMax).toBeLessThanOrEqual(3);
   expect(night.seaMax).toBeLessThanOrEqual(3);
 });
+
+test.describe('a JS worker that fails', () => {
+  // Each cascade's fields, a few frames after the fault, must be those of the time they show,
+  // exactly (the worker and the main thread run the same float64 code into float32 arrays).
+  for (const [fault, after, reason] of [
+    ['throws', 'js-worker', ''], // replaced by a new worker: still off the main thread
+    ['terminated', 'js-worker', ''],
+    ['unloadable', 'js', /^the JS worker failed before its first answer/],
+    ['blocked', 'js', /^workers are blocked here \(blocked by the test\)/],
+  ] as const) {
+    test(`${fault}: the sea keeps moving, and ocean.path, the warning and the pathchange event say what runs`, async ({ page }) => {
+      test.setTimeout(120_000);
+      const warnings: string[] = [];
+      page.on('console', (message) => {
+        if (message.type() === 'warning' && message.text().includes('worker')) warnings.push(message.text());
+      });
+      const errors: string[] = [];
+      page.on('pageerror', (error) => errors.push(error.message));
+      await openOcean(page);
+      const result = await page.evaluate((kind) => window.ocean.workerFault(kind), fault);
+      console.log(`worker ${fault}: ${result.before} → ${result.after} (${result.reason || 'no reason'}); largest field error ${result.largestError} of heights up to ${result.largestHeight.toFixed(3)} m; events ${JSON.stringify(result.events)}`);
+      expect(result.largestHeight).toBeGreaterThan(0.01); // the fields compared are not all zero
+      expect(result.largestError).toBe(0);
+      expect(result.after).toBe(after);
+      if (after === 'js') {
+        expect(result.reason).toMatch(reason);
+        expect(warnings.some((w) => w.includes('the JS path runs on the main thread'))).toBe(true);
+      } else {
+        expect(result.reason).toBe('asked for'); // path: 'js' is the preference; nothing fell back
+        expect(warnings.some((w) => w.includes('replaced by a new one'))).toBe(true);
+      }
+      // The event comes when the running path changes after the first update (a blocked worker is
+      // known at construction: the path never changes there).
+      expect(result.events).toEqual(fault === 'unloadable' ? [expect.stringMatching(/^js: the JS worker failed before its first answer/)] : []);
+      expect(errors).toEqual([]); // handled: nothing uncaught
+    });
+  }
+});

@@ -400,6 +400,66 @@ const harness = {
     own.forceContextLoss();
     return results;
   },
+  /**
+   * The JS path in workers, and what happens when a worker fails: `fault` is 'throws' (an
+   * exception in the worker), 'terminated' (killed from outside: it never answers again),
+   * 'unloadable' (its script cannot load: it fails before any answer) or 'blocked' (new Worker
+   * throws, as under a CSP without worker-src). For each: the path before and after, the reason,
+   * the pathchange events, and how far the shown fields of every cascade are, a few frames after
+   * the fault, from the JS fields computed here at the time they show (0 when they are right).
+   */
+  async workerFault(fault: 'throws' | 'terminated' | 'unloadable' | 'blocked'): Promise<{
+    before: string;
+    after: string;
+    reason: string;
+    events: string[];
+    largestError: number;
+    largestHeight: number;
+  }> {
+    const RealWorker = window.Worker;
+    if (fault === 'blocked') {
+      window.Worker = class {
+        constructor() {
+          throw new DOMException('blocked by the test', 'SecurityError');
+        }
+      } as unknown as typeof Worker;
+    } else if (fault === 'unloadable') {
+      window.Worker = class extends RealWorker {
+        constructor(_url: string | URL, options?: WorkerOptions) {
+          super('/no-such-worker-script.js', options);
+        }
+      };
+    }
+    const ocean = new Ocean(renderer, { resolution: 32, path: 'js', worker: true, localWaves: false });
+    window.Worker = RealWorker;
+    const events: string[] = [];
+    ocean.addEventListener('pathchange', ({ path }) => events.push(`${path.running}: ${path.reason}`));
+    const pause = () => new Promise((resolve) => setTimeout(resolve, 30));
+    const layers = ocean.simulation.layers;
+    /** Updates at t until every cascade shows the fields of t (at most `seconds` of frames). */
+    const runUntilShown = async (t: number, seconds: number) => {
+      const until = performance.now() + seconds * 1000;
+      let error = Infinity;
+      while (performance.now() < until) {
+        ocean.update(t);
+        await pause();
+        error = Math.max(...layers.map((layer) => largestDifference(layer.shownFieldsOnCpu().displacement, layer.fieldsOnCpu(t).displacement)));
+        if (error === 0) break;
+      }
+      return error;
+    };
+    await runUntilShown(1, 20);
+    const before = ocean.path.running;
+    const backend = (layers[0] as unknown as { backend: { worker: Worker } }).backend;
+    if (fault === 'throws') backend.worker.postMessage({ type: 'update', t: 2 }); // no arrays: it throws
+    if (fault === 'terminated') backend.worker.terminate();
+    // Long enough for a silent worker to be given up (4 s) and its replacement to answer.
+    const largestError = await runUntilShown(3, 20);
+    const largestHeight = Math.max(...layers.map((layer) => Math.max(...layer.fieldsOnCpu(3).displacement.map(Math.abs))));
+    const result = { before, after: ocean.path.running, reason: ocean.path.reason, events, largestError, largestHeight };
+    ocean.dispose();
+    return result;
+  },
   horizonCheck(changes: Partial<SimulationParameters>): { before: number; beforeAtSeaLevel: number; seaLevel: number; after: number; farthest: number } {
     return withOcean(changes, (ocean) => {
       const before = ocean.horizonDistanceFor(camera.position.y);
@@ -462,6 +522,13 @@ const harness = {
  * Runs `use` with an Ocean (GPU path, no worker) made from `changes` in place of the page's own
  * simulation and surface (so geometryCheck reads its surface), and frees it after.
  */
+/** The largest |a[i] − b[i]|. */
+function largestDifference(a: ArrayLike<number>, b: ArrayLike<number>): number {
+  let largest = 0;
+  for (let i = 0; i < a.length; i++) largest = Math.max(largest, Math.abs(a[i] - b[i]));
+  return largest;
+}
+
 function withOcean<T>(changes: OceanOptions, use: (ocean: Ocean) => T): T {
   surface?.removeFromParent();
   surface?.dispose();
