@@ -7,6 +7,12 @@
 // young whitecap, solid white water on a broken crest). Far away, where a pixel spans many
 // patches, the opacity is the coverage itself (the foam field's mip levels average it), so nothing
 // shimmers.
+//
+// The pattern repeats every FOAM_PATTERN_PERIOD metres (each octave's cells fit a whole number of
+// times into it), so that it can be evaluated at the rest point's place within a period: the
+// caller passes the rest point from the eye plus the eye's place modulo the period, numbers that
+// float32 holds to the millimetre wherever the eye is.
+#define FOAM_PATTERN_PERIOD 1000.0  // metres (OceanMaterial's FOAM_PATTERN_PERIOD)
 
 // Coverage below which nothing shows (less than one pixel in 500 would be white): not drawn.
 #define FOAM_VISIBLE 0.002
@@ -18,28 +24,32 @@ uint foamHash(uvec2 cell) {
   return (h >> 22u) ^ h;
 }
 
-// Value noise in [0, 1], smooth between the corners of unit cells.
-float foamValueNoise(vec2 p) {
-  vec2 cell = floor(p);
-  vec2 f = p - cell;
+// Value noise in [0, 1], smooth between the corners of unit cells, of the point p·cellsPerMetre +
+// shift: periodic, with FOAM_PATTERN_PERIOD·cellsPerMetre cells (a whole number) per period.
+float foamValueNoise(vec2 p, float cellsPerMetre, float shift) {
+  vec2 q = p * cellsPerMetre + shift;
+  vec2 cell = floor(q);
+  vec2 f = q - cell;
   vec2 w = f * f * (3.0 - 2.0 * f);
-  uvec2 c = uvec2(ivec2(cell) + 65536);  // cells at negative coordinates hash alike
+  uint period = uint(round(FOAM_PATTERN_PERIOD * cellsPerMetre));
+  uvec2 c = uvec2(ivec2(mod(cell, float(period))));
+  uvec2 next = (c + 1u) % period;
   float a = float(foamHash(c)) / 4294967295.0;
-  float b = float(foamHash(c + uvec2(1u, 0u))) / 4294967295.0;
-  float d = float(foamHash(c + uvec2(0u, 1u))) / 4294967295.0;
-  float e = float(foamHash(c + uvec2(1u, 1u))) / 4294967295.0;
+  float b = float(foamHash(uvec2(next.x, c.y))) / 4294967295.0;
+  float d = float(foamHash(uvec2(c.x, next.y))) / 4294967295.0;
+  float e = float(foamHash(next)) / 4294967295.0;
   return mix(mix(a, b, w.x), mix(d, e, w.x), w.y);
 }
 
 // The pattern: three octaves (cells of 2.5 m, 0.9 m and 0.3 m), their sum's near-normal spread
 // (mean ½, deviation ≈ 0.13) stretched back over [0, 1] so that p < c covers about a fraction c.
 float foamPattern(vec2 restPoint) {
-  float sum = 0.55 * foamValueNoise(restPoint * 0.4) + 0.3 * foamValueNoise(restPoint * 1.1 + 17.0) +
-              0.15 * foamValueNoise(restPoint * 3.3 - 31.0);
+  float sum = 0.55 * foamValueNoise(restPoint, 0.4, 0.0) + 0.3 * foamValueNoise(restPoint, 1.1, 17.0) +
+              0.15 * foamValueNoise(restPoint, 3.3, -31.0);
   return smoothstep(0.5 - 0.3, 0.5 + 0.3, sum);
 }
 
-// Opacity of the foam at a rest point, for a coverage in [0, 1]: inside a patch, thinner and
+// Opacity of the foam at a rest point (within a pattern period, see above), for a coverage in [0, 1]: inside a patch, thinner and
 // thicker bubbles (cells of 15 cm) let some water through. Where a pixel spans more than the
 // pattern's finest cells the pattern would alias into speckle: it fades into its average there,
 // the coverage times the bubbles' mean opacity.
@@ -50,7 +60,7 @@ float foamOpacity(float coverage, vec2 restPoint) {
   if (detail <= 0.0) return meanBubbles * coverage;
   float pattern = foamPattern(restPoint);
   float softness = clamp(fwidth(pattern), 0.04, 0.2);
-  float bubbles = mix(0.65, 1.0, foamValueNoise(restPoint * 6.7 + 5.0));
+  float bubbles = mix(0.65, 1.0, foamValueNoise(restPoint, 6.7, 5.0));
   float detailed = bubbles * smoothstep(pattern - softness, pattern + softness, coverage);
   return mix(meanBubbles * coverage, detailed, detail);
 }

@@ -46,8 +46,9 @@ varying float vCrossDerivative;  // λ·Σ ∂Dx/∂z, see ocean.vert
 varying vec2 vBlend;             // the largest layer's two copies' weights, see ocean.vert
 varying vec2 vBlendSlope;
 varying float vFoam;             // foam coverage, see ocean.vert
-varying vec3 vWorldPosition;
-centroid varying vec2 vRestPosition;  // see ocean.vert
+varying vec3 vFromEye;                // see ocean.vert
+centroid varying vec2 vRestFromEye;   // see ocean.vert
+uniform vec2 foamPatternOrigin;       // the eye's (x, z) modulo FOAM_PATTERN_PERIOD (OceanMaterial.setEye)
 flat varying float vRing;
 flat varying vec3 vInnerRing;  // see ocean.vert
 varying float vLod;
@@ -67,13 +68,13 @@ void main() {
   // First, so that every path below writes the same depth (ocean.vert).
   #include <logdepthbuf_fragment>
 #ifdef CAPTURE_POSITIONS
-  // Geometry test: the displaced position, or the rest point with its mip level and ring.
-  gl_FragColor = captureRestPoint ? vec4(vRestPosition, vLod, vRing) : vec4(vWorldPosition, 1.0);
+  // Geometry test: the displaced position, or the rest point with its mip level and ring (from the eye).
+  gl_FragColor = captureRestPoint ? vec4(vRestFromEye, vLod, vRing) : vec4(vFromEye, 1.0);
   return;
 #endif
   // Each point of the rest plane is drawn by exactly one ring: a ring overlaps the one inside it
   // by a cell (so that no gap opens whichever way their centres snapped) and drops that overlap.
-  vec2 fromInner = abs(vRestPosition - vInnerRing.xy);
+  vec2 fromInner = abs(vRestFromEye - vInnerRing.xy);
   if (max(fromInner.x, fromInner.y) < vInnerRing.z) discard;
 
   vec4 derivatives = vec4(0.0);  // Σ (∂h/∂x, ∂h/∂z, ∂Dx/∂x, ∂Dz/∂z)
@@ -90,7 +91,7 @@ void main() {
   derivatives.zw *= choppiness;
   float dxDz = vCrossDerivative;
   vec3 normal = choppyNormal(derivatives, dxDz);
-  vec3 view = normalize(vWorldPosition - cameraPosition);  // d, from the eye to the surface
+  vec3 view = normalize(vFromEye);  // d, from the eye to the surface
   // A normal that faces away from the eye (behind a steep crest) is bent back into view.
   float facing = dot(view, normal);
   if (facing > 0.0) normal = normalize(normal - 1.01 * facing * view);
@@ -109,7 +110,7 @@ void main() {
 #elif SHADING_MODE == SHADING_CAUSTICS
   gl_FragColor = vec4(vec3(caustic), 1.0);
 #elif SHADING_MODE == SHADING_HEIGHT
-  gl_FragColor = vec4(vec3(clamp(0.5 + 0.5 * vWorldPosition.y / heightScale, 0.0, 1.0)), 1.0);
+  gl_FragColor = vec4(vec3(clamp(0.5 + 0.5 * (vFromEye.y + cameraPosition.y) / heightScale, 0.0, 1.0)), 1.0);
 #else
   vec3 deepWater = skyDaylight * scatterColor;  // the light deep water scatters back, as the sky gives it
   vec3 sunLight = skySunVisibility * sunColor;
@@ -120,10 +121,9 @@ void main() {
   #else
   // Seen from below: the horizon grid's triangles face up (counter-clockwise seen from above), so
   // from under the water they show their back.
-  vec3 fromEye = vWorldPosition - cameraPosition;
-  bool nearEye = dot(fromEye, fromEye) < WATERLINE_REACH * WATERLINE_REACH;
+  bool nearEye = dot(vFromEye, vFromEye) < WATERLINE_REACH * WATERLINE_REACH;
   if (eyeSide == EYE_BELOW || (eyeSide == EYE_NEAR && (nearEye ? !gl_FrontFacing : eyeInWater))) {
-    gl_FragColor = vec4(surfaceFromBelow(view, choppyNormal(derivatives, dxDz), length(fromEye), iorAir, iorWater, absorption, deepWater), 1.0);
+    gl_FragColor = vec4(surfaceFromBelow(view, choppyNormal(derivatives, dxDz), length(vFromEye), iorAir, iorWater, absorption, deepWater), 1.0);
     #include <tonemapping_fragment>
     #include <colorspace_fragment>
     return;
@@ -134,7 +134,7 @@ void main() {
   vec3 colour = reflectance * sky + (1.0 - reflectance) * water + caustic * skySunVisibility * causticColor + glint;
   // Most of the sea has no foam: it pays for the pattern and the foam's light only where there is.
   if (vFoam > FOAM_VISIBLE) {
-    float opacity = foamOpacity(vFoam, vRestPosition);
+    float opacity = foamOpacity(vFoam, vRestFromEye + foamPatternOrigin);
     if (opacity > 0.0) colour = mix(colour, foamRadiance(normal, sunDirection, sunLight, environmentRadiance(normal)), opacity);
   }
   #endif

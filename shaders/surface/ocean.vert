@@ -1,6 +1,9 @@
 // Ocean surface, vertex stage: a horizon-grid vertex displaced by the sum of the wave layers,
 // P = x0 + Σ (λ·Dx, h, λ·Dz) sampled at the rest point x0 (src/fft/waveFieldLayout.ts), the
 // largest cascade as a blend of two copies (src/layers/patchBlend.ts).
+// Positions are metres from the eye (horizonGrid.glsl), never world coordinates: at 10⁷ m from the
+// origin float32 would hold those only to a metre. The view matrix's rotation then takes them to
+// view space (its translation, −eye, is what was already subtracted, in double precision in JS).
 #include "surface/horizonGrid.glsl"
 #include "surface/waveLayers.glsl"
 
@@ -23,10 +26,11 @@ varying vec2 vBlendSlope;
 // largest layer's, metres wide: the vertices are as dense as that near the eye, and far away the
 // mip level averages it anyway), so the fragment stage does not fetch it for every pixel.
 varying float vFoam;
-varying vec3 vWorldPosition;
-// centroid: with multisampling, a pixel only partly covered by a triangle must not evaluate the
-// rest point outside it (the ring-overlap test in ocean.frag would then keep a dropped triangle).
-centroid varying vec2 vRestPosition;
+varying vec3 vFromEye;  // the displaced point from the eye, metres
+// The rest point (x, z) from the eye's. centroid: with multisampling, a pixel only partly covered by
+// a triangle must not evaluate the rest point outside it (the ring-overlap test in ocean.frag would
+// then keep a dropped triangle).
+centroid varying vec2 vRestFromEye;
 flat varying float vRing;
 // (centre x, centre z, half side less a hair) of the ring inside this vertex's ring, whose area
 // ocean.frag drops; a negative half side for ring 0. Per vertex (flat: one ring per triangle)
@@ -48,7 +52,7 @@ uniform float captureHeight;
 
 void main() {
   GridPoint point = horizonGridPoint();
-  vec4 blend = blendWeights(point.world);
+  vec4 blend = blendWeights(point.fromEye);
   vec4 displacement = vec4(0.0);
   #pragma unroll_loop_start
   for (int i = 0; i < LAYER_COUNT; i++) {
@@ -68,9 +72,9 @@ void main() {
   vBlendSlope = (blend.x * copy.y - blend.y * first.y) * blend.zw;
   displacement.xzw *= choppiness;
   vCrossDerivative = displacement.w;
-  vec3 world = vec3(point.world.x, 0.0, point.world.y) + displacement.xyz;
-  vWorldPosition = world;
-  vRestPosition = point.world;
+  vec3 fromEye = vec3(point.fromEye.x, -cameraPosition.y, point.fromEye.y) + displacement.xyz;
+  vFromEye = fromEye;
+  vRestFromEye = point.fromEye;
   vRing = point.ring;
   int ring = int(point.ring);
   vec4 inner = ringFrames[max(ring - 1, 0)];
@@ -83,7 +87,7 @@ void main() {
   gl_Position = vec4(target / vec2(captureWidth, captureHeight) * 2.0 - 1.0, 0.0, 1.0);
   gl_PointSize = 1.0;
 #else
-  vec4 mvPosition = viewMatrix * vec4(world, 1.0);
+  vec4 mvPosition = vec4(mat3(viewMatrix) * fromEye, 1.0);
   gl_Position = projectionMatrix * mvPosition;
   #include <fog_vertex>
 #endif

@@ -15,17 +15,18 @@ uniform float choppiness;                           // λ
 uniform sampler2D tFoam;
 
 // The largest cascade is drawn twice and blended (src/layers/patchBlend.ts says why and fills
-// these): cos θ·P(x) + sin θ·P(x + o), θ(x) = Σ a_j·sin(k_j·x + φ_j), patchBlend[j] = (kx, kz, φ, a),
-// copyOffset = o in the largest layer's texture coordinates.
+// these): cos θ·P(x) + sin θ·P(x + o), θ(x) = Σ a_j·sin(k_j·x + φ_j), patchBlend[j] = (kx, kz, φ, a)
+// with the phase φ_j at the eye (the origin of the positions here, see horizonGrid.glsl), copyOffset
+// = o in the largest layer's texture coordinates.
 uniform vec4 patchBlend[3];
 uniform vec2 copyOffset;
 
-// (cos θ, sin θ, ∂θ/∂x, ∂θ/∂z) at the rest point `world`.
-vec4 blendWeights(vec2 world) {
+// (cos θ, sin θ, ∂θ/∂x, ∂θ/∂z) at the rest point `fromEye` (metres from the eye).
+vec4 blendWeights(vec2 fromEye) {
   float theta = 0.0;
   vec2 gradient = vec2(0.0);
   for (int j = 0; j < 3; j++) {
-    float phase = dot(patchBlend[j].xy, world) + patchBlend[j].z;
+    float phase = dot(patchBlend[j].xy, fromEye) + patchBlend[j].z;
     theta += patchBlend[j].w * sin(phase);
     gradient += patchBlend[j].w * cos(phase) * patchBlend[j].xy;
   }

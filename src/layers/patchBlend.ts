@@ -45,16 +45,19 @@ export const COPY_OFFSET: readonly [number, number] = [0.381966, 0.618034];
 
 /**
  * Per component (kx, kz, φ, a) for a largest patch of `size` metres: the uniform vec4
- * patchBlend[3] of waveLayers.glsl, and what blendAngle reads.
+ * patchBlend[3] of waveLayers.glsl, and what blendAngle reads. With an origin (x0, z0) the phases
+ * are those at that point, so that θ(x0 + r) = Σ a·sin(k·r + φ): for the shader, which works in
+ * metres from the eye (the phase is reduced in double precision, exact however far away).
  */
-export function patchBlendUniforms(size: number, out = new Float32Array(4 * COMPONENTS.length)): Float32Array {
+export function patchBlendUniforms<T extends Float32Array | Float64Array>(size: number, out: T, originX = 0, originZ = 0): T {
   for (let j = 0; j < COMPONENTS.length; j++) {
     const c = COMPONENTS[j];
     const k = (2 * Math.PI) / (c.wavelength * size);
     const angle = (c.direction * Math.PI) / 180;
-    out[4 * j] = k * Math.cos(angle);
-    out[4 * j + 1] = k * Math.sin(angle);
-    out[4 * j + 2] = c.phase;
+    const [kx, kz] = [k * Math.cos(angle), k * Math.sin(angle)];
+    out[4 * j] = kx;
+    out[4 * j + 1] = kz;
+    out[4 * j + 2] = (c.phase + kx * originX + kz * originZ) % (2 * Math.PI);
     out[4 * j + 3] = c.amplitude;
   }
   return out;
@@ -70,7 +73,7 @@ export function largestPeriodicLayer(layers: readonly WaveLayer[]): number {
 }
 
 /** θ(x, z) for the given uniforms (patchBlendUniforms), radians. */
-export function blendAngle(uniforms: Float32Array, x: number, z: number): number {
+export function blendAngle(uniforms: Float32Array | Float64Array, x: number, z: number): number {
   let theta = 0;
   for (let j = 0; j < uniforms.length; j += 4) theta += uniforms[j + 3] * Math.sin(uniforms[j] * x + uniforms[j + 1] * z + uniforms[j + 2]);
   return theta;

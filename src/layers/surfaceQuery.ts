@@ -180,7 +180,8 @@ function surfacePointOver(layers: readonly WaveLayer[], choppiness: number, t: n
  */
 const FIELDS = { newton: 0, height: 1, all: 2 } as const;
 
-const blendUniforms = new Float32Array(12);
+// Double precision: θ's phases reach 10⁵ rad 10 000 km away, where float32 wave numbers would put them off by 0.005 rad.
+const blendUniforms = new Float64Array(12);
 
 /** Which layer is drawn blended, and its blend's uniforms (patchBlend.ts); set once per query. */
 function prepareBlend(layers: readonly WaveLayer[]): number {

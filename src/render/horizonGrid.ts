@@ -117,7 +117,12 @@ export interface LayerGrid {
 
 /** Per-ring uniforms for shaders/surface/horizonGrid.glsl and ocean.vert, recomputed each frame. */
 export class RingFrames {
-  /** (centre x, centre z, cell size, mip level of the finest layer) per ring, RING_COUNT + 1 of them. */
+  /**
+   * (centre x, centre z, cell size, mip level of the finest layer) per ring, RING_COUNT + 1 of
+   * them, the centre relative to the camera (computed in double precision): the vertex stage works
+   * in metres from the eye, so that float32 keeps its precision however far from the world origin
+   * the camera is (at 10⁷ m a float32 world coordinate is only good to a metre).
+   */
   readonly frames = new Float32Array(4 * (RING_COUNT + 1));
   /**
    * Texture coordinate of each ring centre in each layer, [ring · layers + layer], (centre / size +
@@ -145,8 +150,8 @@ export class RingFrames {
       const z = Math.floor(cameraZ / (2 * cell)) * 2 * cell;
       this.centres[2 * ring] = x;
       this.centres[2 * ring + 1] = z;
-      this.frames[4 * ring] = x;
-      this.frames[4 * ring + 1] = z;
+      this.frames[4 * ring] = x - cameraX;
+      this.frames[4 * ring + 1] = z - cameraZ;
       this.frames[4 * ring + 2] = cell;
       this.frames[4 * ring + 3] = level + ring;
       layers.forEach(({ frame: { size, resolution, origin, periodic } }, layer) => {

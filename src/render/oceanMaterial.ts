@@ -12,6 +12,9 @@ import { DEFAULT_SHADING, SHADING_MODES, SHADING_OPTIONS, type ShadingChanges, t
 import { shaderSource, withLayerCount } from '../shaderSource';
 import { finestTexel, RING_COUNT } from './horizonGrid';
 
+/** The foam pattern repeats every this many metres (FOAM_PATTERN_PERIOD in shaders/surface/foam.glsl). */
+const FOAM_PATTERN_PERIOD = 1000;
+
 /** Where the eye is against the sea surface (the uniform eyeSide of ocean.frag). */
 export const EYE_SIDE = { above: 0, below: 1, near: 2 } as const;
 
@@ -33,6 +36,8 @@ export interface OceanMaterialInputs {
 export class OceanMaterial extends ShaderMaterial {
   /** The list of layers bound last (bindLayers). */
   private boundLayers: readonly WaveLayer[] | null = null;
+  /** The patch size of the layer drawn blended (the last one bound). */
+  private blendedSize = 1;
 
   constructor(inputs: OceanMaterialInputs, options: OceanShadingOptions = {}, defines: Record<string, unknown> = {}) {
     super({
@@ -57,6 +62,7 @@ export class OceanMaterial extends ShaderMaterial {
           choppiness: { value: 1 },
           tFoam: { value: null },
           patchBlend: { value: new Float32Array(12) },
+          foamPatternOrigin: { value: new Vector2() },
           copyOffset: { value: new Vector2(...COPY_OFFSET) },
           ringOffsets: { value: new Float32Array(2 * (RING_COUNT + 1)) },
           halfRingCells: { value: 32 },
@@ -121,7 +127,19 @@ export class OceanMaterial extends ShaderMaterial {
       // Whole mip levels: the vertex stage then filters each layer bilinearly within one level.
       u.layerLodBias.value[i] = Math.round(Math.log2(finest / (layer.frame.size / layer.frame.resolution)));
     });
-    patchBlendUniforms(layers[layers.length - 1].frame.size, u.patchBlend.value);
+    this.blendedSize = layers[layers.length - 1].frame.size;
+  }
+
+  /**
+   * Where the eye is (x, z in metres, double precision): the vertex and fragment stages work in
+   * metres from it (horizonGrid.glsl), so what depends on the absolute position, the blend's phases
+   * and the foam pattern's origin, is reduced here. Before every draw, after bindLayers.
+   */
+  setEye(x: number, z: number): void {
+    const u = this.uniforms;
+    patchBlendUniforms(this.blendedSize, u.patchBlend.value, x, z);
+    // The pattern repeats, so only the eye's place within a period matters, small enough for float32.
+    u.foamPatternOrigin.value.set(x % FOAM_PATTERN_PERIOD, z % FOAM_PATTERN_PERIOD);
   }
 
   /** Changes shading options; throws a ParameterError naming the first bad one and changes nothing. */

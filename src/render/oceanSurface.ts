@@ -80,6 +80,7 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
     const u = this.material.uniforms;
     const { layers, choppiness, foam, surfaceBound, waterHeightAt } = this.waves();
     this.material.bindLayers(layers, choppiness, foam);
+    this.material.setEye(position.x, position.z);
     this.rings.update(position.x, position.z, position.y, layers, this.cellsPerRing);
     u.ringFrames.value = this.rings.frames;
     u.ringLayerUvOrigins.value = this.rings.uvOrigins;

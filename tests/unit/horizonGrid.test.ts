@@ -41,29 +41,34 @@ describe('RingFrames', () => {
   const single: LayerGrid[] = [{ frame: periodicFrame(250, 256) }];
   const cascades: LayerGrid[] = [457, 13.7, 79.3].map((size) => ({ frame: periodicFrame(size, 256) }));
   const random = new SeededRandom(3);
-  const cameras = Array.from({ length: 200 }, () => [
-    (random.nextUniform() - 0.5) * 2e4,
-    1 + random.nextUniform() ** 3 * 2000,
-    (random.nextUniform() - 0.5) * 2e4,
-  ]);
+  const cameras = [
+    ...Array.from({ length: 200 }, () => [
+      (random.nextUniform() - 0.5) * 2e4,
+      1 + random.nextUniform() ** 3 * 2000,
+      (random.nextUniform() - 0.5) * 2e4,
+    ]),
+    // Far from the origin, where a float32 world coordinate is good only to metres.
+    [1e7 + 917.3, 2, 1e7 - 561.8],
+    [-3e8 + 0.37, 40, 2e9 + 0.11],
+  ];
 
   it('snaps every ring centre to twice its cell size, so vertices sit on fixed world points', () => {
     const rings = new RingFrames();
     for (const [x, y, z] of cameras) for (const layers of [single, cascades]) {
       rings.update(x, z, y, layers, cells);
       for (let r = 0; r <= RING_COUNT; r++) {
-        const [cx, cz, cell, level] = rings.frames.subarray(4 * r, 4 * r + 4);
-        // The centres are snapped in double precision and stored as float32 for the shader. With
-        // the old dyadic texel (250/256 m) the float32 centres were exact multiples of 2·cell; with a
-        // texel like 13.7/256 m they are off by float32 rounding, ≤ 2^−24·|c| (≤ 6e-4 m at 10 km),
-        // against a whole cell (≥ 0.1 m here) for a centre that is not snapped. So: the distance to
-        // the nearest multiple of the exact 2·cell (texel·2^(level+1), level an exact integer) must
-        // be within that rounding, plus 1e-4 of a cell for the division.
+        const [fromEyeX, fromEyeZ, cell, level] = rings.frames.subarray(4 * r, 4 * r + 4);
+        // The centres are snapped in double precision and stored for the shader as float32, relative
+        // to the camera: off by float32 rounding, ≤ 2^−24·|c − camera| (under 2 mm for the
+        // largest ring), against a whole cell (≥ 0.1 m here) for a centre that is not snapped. So:
+        // the distance to the nearest multiple of the exact 2·cell (texel·2^(level+1), level an exact
+        // integer) must be within that rounding, plus 1e-4 of a cell for the division.
+        const [cx, cz] = [x + fromEyeX, z + fromEyeZ];
         const exactCell = finestTexel(layers) * 2 ** level;
         expect(Math.abs(cell / exactCell - 1)).toBeLessThan(1.2e-7);
         for (const c of [cx, cz]) {
           const off = Math.abs(c - Math.round(c / (2 * exactCell)) * 2 * exactCell);
-          expect(off).toBeLessThanOrEqual(2 ** -24 * Math.abs(c) + 1e-4 * exactCell);
+          expect(off).toBeLessThanOrEqual(2 ** -24 * Math.max(Math.abs(fromEyeX), Math.abs(fromEyeZ)) + 1e-4 * exactCell);
         }
         // The camera is inside its finest rings' central cells.
         if (r === 0) expect(Math.max(Math.abs(x - cx), Math.abs(z - cz))).toBeLessThanOrEqual(2 * cell * 1.0001);

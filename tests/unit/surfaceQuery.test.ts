@@ -87,7 +87,7 @@ function waveLayer(wave: Wave, share: number, frame: LayerFrame): FakeLayer {
  */
 function blendedHeight(wave: Wave, fineShare: number, lastSize: number, lambda: number, x: number, z: number): number {
   const k = Math.hypot(wave.kx, wave.kz);
-  const blend = patchBlendUniforms(lastSize);
+  const blend = patchBlendUniforms(lastSize, new Float64Array(12));
   const shift = wave.kx * COPY_OFFSET[0] * lastSize + wave.kz * COPY_OFFSET[1] * lastSize;
   const field = (x0: number, z0: number, f: (angle: number) => number) => {
     const psi = wave.kx * x0 + wave.kz * z0 + wave.phase;
@@ -248,7 +248,7 @@ function particleAt(layers: readonly WaveLayer[], lambda: number, t: number, x0:
     };
     const [u, v] = [(x0 / size) * n, (z0 / size) * n];
     const last = i === layers.length - 1;
-    const theta = last ? blendAngle(patchBlendUniforms(size), x0, z0) : 0;
+    const theta = last ? blendAngle(patchBlendUniforms(size, new Float64Array(12)), x0, z0) : 0;
     for (let c = 0; c < 3; c++) {
       sum[c] += last ? Math.cos(theta) * sample(u, v, c) + Math.sin(theta) * sample(u + COPY_OFFSET[0] * n, v + COPY_OFFSET[1] * n, c) : sample(u, v, c);
     }

@@ -28,6 +28,7 @@ import { ParameterError } from '../../../src/parameters/options';
 import { shaderSource } from '../../../src/shaderSource';
 import { OceanMaterial, type OceanShadingOptions } from '../../../src/render/oceanMaterial';
 import { OceanSurface } from '../../../src/render/oceanSurface';
+import { finestTexel } from '../../../src/render/horizonGrid';
 import { CpuWaveFields } from '../../../src/fft/cpuWaveFields';
 import { OceanSimulation } from '../../../src/layers/oceanSimulation';
 import { blendAngle, COPY_OFFSET, patchBlendUniforms } from '../../../src/layers/patchBlend';
@@ -565,7 +566,7 @@ function geometryCheck(t: number, withRestPoints = false) {
   // Bound as the surface binds them (the local waves first: zero here, no source has touched them).
   material.bindLayers(sim.surfaceLayers, choppiness, sim.foam.texture);
   const cascadesFrom = sim.surfaceLayers.length - sim.layers.length;
-  for (const name of ['ringFrames', 'ringLayerUvOrigins', 'ringOffsets', 'halfRingCells']) {
+  for (const name of ['ringFrames', 'ringLayerUvOrigins', 'ringOffsets', 'halfRingCells', 'patchBlend']) {
     material.uniforms[name].value = mesh.material.uniforms[name].value;
   }
   material.uniforms.captureWidth.value = captureWidth;
@@ -610,7 +611,7 @@ function geometryCheck(t: number, withRestPoints = false) {
     }
   }
   const rms = Math.sqrt(sumSquares / (n * n));
-  const blend = patchBlendUniforms(largest.size);
+  const blend = patchBlendUniforms(largest.size, new Float64Array(12));
   /**
    * Σ over layers of the field sampled at rest point (x, z), each at its own mip level, the
    * largest as cos θ·P(x) + sin θ·P(x + o) (src/layers/patchBlend.ts).
@@ -636,9 +637,12 @@ function geometryCheck(t: number, withRestPoints = false) {
   /** (x, y, z) displaced, and the Jacobian of the choppy map at the rest point. */
   const displacedAtMip0: [number, number, number, number][] = [];
   let farthest = 0;
+  // The shader works in metres from the eye: back to world coordinates, in double precision.
+  const eye = camera.getWorldPosition(new Vector3());
   for (let v = 0; v < count; v++) {
-    const [x, z, lod, ring] = rest.subarray(4 * v, 4 * v + 4);
-    const [px, py, pz] = displaced.subarray(4 * v, 4 * v + 3);
+    const [restX, restZ, lod, ring] = rest.subarray(4 * v, 4 * v + 4);
+    const [x, z] = [restX + eye.x, restZ + eye.z];
+    const [px, py, pz] = [displaced[4 * v] + eye.x, displaced[4 * v + 1] + eye.y, displaced[4 * v + 2] + eye.z];
     farthest = Math.max(farthest, camera.position.distanceTo(new Vector3(px, py, pz)));
     if (lod > 500) { // SKIRT_LOD: the far edge, flat by design
       skirt++;
@@ -655,8 +659,9 @@ function geometryCheck(t: number, withRestPoints = false) {
     byLevel[key] ??= { count: 0, maxError: 0 };
     byLevel[key].count++;
     byLevel[key].maxError = Math.max(byLevel[key].maxError, error / rms);
-    // Rest points lie on the world grid of their ring: multiples of the ring's cell size.
-    const cell = mesh.material.uniforms.ringFrames.value[4 * ring + 2] as number;
+    // Rest points lie on the world grid of their ring: multiples of the ring's cell size (exact, in
+    // double precision: the uniform's float32 cell is off by 6e-8 of itself, a whole cell at 10⁷ m).
+    const cell = finestTexel(sim.surfaceLayers) * 2 ** (mesh.material.uniforms.ringFrames.value[4 * ring + 3] as number);
     for (const c of [x, z]) maxOffGrid = Math.max(maxOffGrid, Math.abs(c / cell - Math.round(c / cell)));
     heights.push(py);
     if (level === 0 && layers.every((layer) => Math.round(lod) + layer.lodBias <= 0)) {

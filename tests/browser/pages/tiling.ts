@@ -27,8 +27,8 @@ const harness = {
   /**
    * Replaces the sea with a new Ocean of these options; `blend: false` draws the largest cascade
    * once (θ = 0 in src/layers/patchBlend.ts), for the control that shows what the measurement sees
-   * without the blend. Without foam: it is drawn with a pattern that does not repeat
-   * (shaders/surface/foam.glsl), which would hide the waves' own period from the measurement.
+   * without the blend. Without foam: it is drawn with a pattern of its own, repeating every
+   * kilometre (shaders/surface/foam.glsl), which is not what the measurement looks for.
    */
   setup(options: OceanOptions, blend = true): void {
     if (ocean) {
@@ -37,11 +37,11 @@ const harness = {
     }
     ocean = new Ocean(renderer, { path: 'gpu', worker: false, foamAmount: 0, ...options });
     if (!blend) {
-      // bindLayers sets the blend from the largest layer's size before each draw: amplitudes 0 keep θ = 0.
+      // setEye sets the blend (for the largest layer's size, at the eye) before each draw: amplitudes 0 keep θ = 0.
       const material = ocean.surface.material;
-      const bind = material.bindLayers.bind(material);
-      material.bindLayers = (layers, choppiness, foam) => {
-        bind(layers, choppiness, foam);
+      const setEye = material.setEye.bind(material);
+      material.setEye = (x, z) => {
+        setEye(x, z);
         for (let j = 3; j < 12; j += 4) material.uniforms.patchBlend.value[j] = 0;
       };
     }
