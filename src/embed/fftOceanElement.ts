@@ -37,13 +37,24 @@
  * scene is drawn again at the same time once the browser restores it. Without WebGL 2 the box
  * shows a short message instead of staying blank.
  *
+ * Any number of elements can be on one page, although browsers keep only about 16 WebGL contexts
+ * per page (beyond that they drop the oldest for good): an element holds its renderer, ocean and
+ * WebGL context only while it is near the screen. It creates them when it comes within 200 px of
+ * the viewport (NEAR_MARGIN), so they are ready when it scrolls in, and frees them, as on
+ * removal, when it is more than 500 px away (FAR_MARGIN); the gap keeps scrolling back and forth
+ * a little from rebuilding them. When 12 elements (MAX_CONTEXT_HOLDERS) hold a context, one that
+ * needs a context first frees the oldest held by an element beyond 200 px, else by one off
+ * screen; one on screen keeps its context. Coming back creates them again, at the same simulated
+ * time with the same settings (its attributes). While an element holds none, its ocean,
+ * renderer, scene, camera and canvas are null.
+ *
  * Removing it from the page frees the renderer, the ocean, the WebGL context, the observers and
  * listeners (a synchronous move to another place in the document keeps them); putting it back
- * creates them again and continues at the same simulated time.
+ * creates them again, once it is near the screen, and continues at the same simulated time.
  *
  * Define it with defineFftOceanElement() (or import src/embed/register.ts, which does).
  */
-import { ACESFilmicToneMapping, PerspectiveCamera, Scene, WebGLRenderer } from 'three';
+import { ACESFilmicToneMapping, PerspectiveCamera, Scene, Vector2, WebGLRenderer } from 'three';
 import { Ocean } from '../ocean';
 import { Boat } from '../objects/boat';
 import { SunLight } from '../objects/sunLight';
@@ -118,7 +129,17 @@ export const ELEMENT_DEFAULTS: Readonly<ElementSettings> = {
   boat: false,
 };
 
-/** What exists while the element is on the page and WebGL 2 works. */
+/** Within this many px of the viewport an element creates its renderer and ocean. */
+const NEAR_MARGIN = 200;
+/** Beyond this many px from the viewport an element frees them. */
+const FAR_MARGIN = 500;
+/**
+ * At most this many elements hold a WebGL context at once, unless more are on screen: below the
+ * 16 per page that Chromium keeps, leaving some to the page's own canvases.
+ */
+const MAX_CONTEXT_HOLDERS = 12;
+
+/** What exists while the element is on the page, near the screen, and WebGL 2 works. */
 interface Live {
   canvas: HTMLCanvasElement;
   renderer: WebGLRenderer;
@@ -126,11 +147,8 @@ interface Live {
   camera: PerspectiveCamera;
   ocean: Ocean;
   resizeObserver: ResizeObserver;
-  intersectionObserver: IntersectionObserver;
   /** Removes every listener start() added. */
   removeListeners: () => void;
-  /** Whether a part of the element is inside the viewport. */
-  onScreen: boolean;
   contextLost: boolean;
   /** The boat and the light it is lit by, while the boat attribute is on. */
   boat: { boat: Boat; light: SunLight } | null;
@@ -196,6 +214,14 @@ export class FftOceanElement extends ElementBase {
   private needsDraw = true;
   private framesDrawn = 0;
   private readonly onVisibilityChange = () => this.activityChanged();
+  /** The observers of the viewport and of the NEAR_MARGIN and FAR_MARGIN bands while the element is on the page (else empty). */
+  private proximityObservers: IntersectionObserver[] = [];
+  /** Whether a part of the element is inside the viewport, as last reported. */
+  private onScreen = false;
+  /** Whether a part of the element is within NEAR_MARGIN of the viewport, as last reported. */
+  private near = false;
+  /** Elements holding a renderer (and so a WebGL context), in the order they created it. */
+  private static readonly contextHolders = new Set<FftOceanElement>();
 
   constructor() {
     super();
@@ -206,7 +232,10 @@ export class FftOceanElement extends ElementBase {
     this.root.append(sizer);
   }
 
-  /** The Ocean while the element is on the page (null before, after removal or without WebGL 2). */
+  /**
+   * The Ocean while the element is on the page and near the screen (null before, while it is far
+   * from the screen, after removal or without WebGL 2); so are renderer, camera, scene and canvas.
+   */
   get ocean(): Ocean | null {
     return this.live?.ocean ?? null;
   }
@@ -223,7 +252,7 @@ export class FftOceanElement extends ElementBase {
     return this.live?.scene ?? null;
   }
 
-  /** The element's canvas (inside its shadow root), or null when it has none. */
+  /** The element's canvas (inside its shadow root), or null when it has none (see ocean). */
   get canvas(): HTMLCanvasElement | null {
     return this.live?.canvas ?? null;
   }
@@ -254,7 +283,7 @@ export class FftOceanElement extends ElementBase {
 
   /**
    * Draws the current time now, synchronously (e.g. right before canvas.toDataURL() or
-   * readPixels). Returns false when there is nothing to draw into.
+   * readPixels). Returns false when there is nothing to draw into (see ocean) or the context is lost.
    */
   renderFrame(): boolean {
     const live = this.live;
@@ -264,13 +293,18 @@ export class FftOceanElement extends ElementBase {
   }
 
   connectedCallback(): void {
-    if (!this.live) this.start();
+    if (this.proximityObservers.length === 0) this.watchProximity();
   }
 
   disconnectedCallback(): void {
     // A move (remove + insert in the same task) keeps everything; a real removal frees it all.
     queueMicrotask(() => {
-      if (!this.isConnected) this.stop();
+      if (this.isConnected) return;
+      for (const observer of this.proximityObservers) observer.disconnect();
+      this.proximityObservers = [];
+      this.onScreen = false;
+      this.near = false;
+      this.stop();
     });
   }
 
@@ -358,9 +392,57 @@ export class FftOceanElement extends ElementBase {
 
   // ---- life cycle
 
+  /**
+   * Starts (creating the renderer, ocean, …) when the element comes within NEAR_MARGIN of the
+   * viewport, or on screen (after makeRoomForContext stopped it while near), and stops (freeing
+   * them) once it is beyond FAR_MARGIN. A failed start (its message shows) is not retried until
+   * the element is put back into the page.
+   */
+  private watchProximity(): void {
+    const intersecting = (entries: IntersectionObserverEntry[]) => entries[entries.length - 1].isIntersecting;
+    const startIfNeeded = () => {
+      if (this.near && !this.live && !this.message) this.start();
+    };
+    const onScreen = new IntersectionObserver((entries) => {
+      this.onScreen = intersecting(entries);
+      startIfNeeded();
+      this.activityChanged();
+    });
+    const near = new IntersectionObserver(
+      (entries) => {
+        this.near = intersecting(entries);
+        startIfNeeded();
+      },
+      { rootMargin: `${NEAR_MARGIN}px` },
+    );
+    const far = new IntersectionObserver(
+      (entries) => {
+        if (!intersecting(entries) && this.live) this.stop();
+      },
+      { rootMargin: `${FAR_MARGIN}px` },
+    );
+    this.proximityObservers = [onScreen, near, far];
+    for (const observer of this.proximityObservers) observer.observe(this);
+  }
+
+  /**
+   * Stops other elements until one more context stays within MAX_CONTEXT_HOLDERS: the oldest
+   * holders beyond NEAR_MARGIN first, then the oldest off screen; never one on screen.
+   */
+  private makeRoomForContext(): void {
+    const holders = FftOceanElement.contextHolders;
+    for (const spare of [(holder: FftOceanElement) => !holder.near, (holder: FftOceanElement) => !holder.onScreen]) {
+      for (const holder of holders) {
+        if (holders.size < MAX_CONTEXT_HOLDERS) return;
+        if (spare(holder)) holder.stop();
+      }
+    }
+  }
+
   private start(): void {
     this.message?.remove();
     this.message = null;
+    this.makeRoomForContext();
     const canvas = document.createElement('canvas');
     canvas.setAttribute('part', 'canvas');
     canvas.setAttribute('role', 'img');
@@ -420,10 +502,6 @@ export class FftOceanElement extends ElementBase {
     document.addEventListener('visibilitychange', this.onVisibilityChange);
 
     const resizeObserver = new ResizeObserver(() => this.resize());
-    const intersectionObserver = new IntersectionObserver((entries) => {
-      live.onScreen = entries[entries.length - 1].isIntersecting;
-      this.activityChanged();
-    });
     const live: Live = {
       canvas,
       renderer,
@@ -431,8 +509,6 @@ export class FftOceanElement extends ElementBase {
       camera,
       ocean,
       resizeObserver,
-      intersectionObserver,
-      onScreen: false, // until the observer's first report, which comes promptly
       contextLost: false,
       boat: null,
       removeListeners: () => {
@@ -443,21 +519,21 @@ export class FftOceanElement extends ElementBase {
       },
     };
     this.live = live;
+    FftOceanElement.contextHolders.add(this);
     this.showBoat(live);
     this.clock.restart();
     this.resize();
     resizeObserver.observe(this);
-    intersectionObserver.observe(this);
   }
 
   private stop(): void {
     const live = this.live;
     if (live) {
       this.live = null;
+      FftOceanElement.contextHolders.delete(this);
       if (this.frameRequest) cancelAnimationFrame(this.frameRequest);
       this.frameRequest = 0;
       live.resizeObserver.disconnect();
-      live.intersectionObserver.disconnect();
       live.removeListeners();
       this.showBoat(live, false);
       live.scene.remove(live.ocean);
@@ -506,7 +582,7 @@ export class FftOceanElement extends ElementBase {
 
   private isActive(): boolean {
     const live = this.live;
-    return !!live && live.onScreen && !live.contextLost && document.visibilityState !== 'hidden';
+    return !!live && this.onScreen && !live.contextLost && document.visibilityState !== 'hidden';
   }
 
   /** Something changed that affects whether frames are drawn. */
@@ -550,9 +626,12 @@ export class FftOceanElement extends ElementBase {
     if (!live) return;
     const width = Math.max(1, this.clientWidth);
     const height = Math.max(1, this.clientHeight);
-    live.renderer.setSize(width, height, false);
     live.camera.aspect = width / height;
     live.camera.updateProjectionMatrix();
+    // The ResizeObserver's first report after start() is of the size start() set: keep the picture.
+    const current = live.renderer.getSize(new Vector2());
+    if (current.x === width && current.y === height) return;
+    live.renderer.setSize(width, height, false);
     // Resizing clears the canvas: draw again right away so it never shows blank.
     if (this.isActive()) this.draw(live);
     else this.needsDraw = true;

@@ -238,6 +238,100 @@ test('it draws only while on screen, and time does not jump when it comes back',
   expect(result.timeGained).toBeLessThanOrEqual(result.backFor + 1e-3);
 });
 
+test('24 elements down a page: each draws when scrolled into view, at most 16 hold a WebGL context at once, the first draw again after scrolling back', async ({ page }) => {
+  // Chromium keeps 16 WebGL contexts per page and drops the oldest beyond that for good, so
+  // elements off screen must give theirs back. Paused elements draw once per (re)build: cheap.
+  const { errors } = await openPage(page);
+  const result = await page.evaluate(async () => {
+    const { create, pixels, frames } = window.embed;
+    const elements = Array.from({ length: 24 }, (_, i) => {
+      const el = create({ resolution: '16', paused: '', seed: String(i + 1) });
+      el.style.width = '160px';
+      el.style.height = '90px';
+      el.time = i;
+      return el;
+    });
+    // Sampled every frame from here to the end: elements holding a renderer, and contexts the
+    // browser took from an element still holding it.
+    let mostHolding = 0;
+    let takenByBrowser = 0;
+    /** Per element: frames drawn when last seen without a renderer (a new frame is a new build's). */
+    const framesWhenReleased = elements.map(() => 0);
+    let sampling = true;
+    const sample = () => {
+      const holding = elements.filter((el) => el.renderer);
+      mostHolding = Math.max(mostHolding, holding.length);
+      takenByBrowser = Math.max(takenByBrowser, holding.filter((el) => el.renderer!.getContext().isContextLost()).length);
+      elements.forEach((el, i) => {
+        if (!el.renderer) framesWhenReleased[i] = el.frameCount;
+      });
+      if (sampling) requestAnimationFrame(sample);
+    };
+    sample();
+    /** Whether the element drew on its own since its last build, and its picture then (null: it did not). */
+    const look = async (i: number) => {
+      const el = elements[i];
+      const start = performance.now();
+      while (!(el.active && el.frameCount > framesWhenReleased[i])) {
+        if (el.renderer?.getContext().isContextLost() || performance.now() - start > 15_000) return null;
+        await frames(1);
+      }
+      return pixels(el, 4);
+    };
+    const inView = () => elements.map((el, i) => [el.getBoundingClientRect(), i] as const).filter(([box]) => box.top >= 0 && box.bottom <= innerHeight).map(([, i]) => i);
+
+    const firstLooks: (ReturnType<typeof pixels> | null)[] = elements.map(() => null);
+    const seen = new Set<number>();
+    const atTheTop = inView();
+    for (let y = 0; ; y += innerHeight / 2) {
+      scrollTo(0, y);
+      await frames(2); // the observers report
+      for (const i of inView()) {
+        if (seen.has(i)) continue;
+        seen.add(i);
+        firstLooks[i] = await look(i);
+      }
+      if (scrollY + innerHeight >= document.documentElement.scrollHeight) break;
+    }
+    const topReleased = atTheTop.every((i) => !elements[i].renderer);
+    scrollTo(0, 0);
+    await frames(2);
+    const backLooks = await Promise.all(atTheTop.map((i) => look(i)));
+    sampling = false;
+    return {
+      seen: seen.size,
+      firstLooks,
+      topReleased,
+      backLooks,
+      backTimes: atTheTop.map((i) => elements[i].time),
+      mostHolding,
+      takenByBrowser,
+    };
+  });
+  const seaLike = (look: { mean: number; samples: number[] } | null) =>
+    // Not black; the top row (sky) brighter than the bottom row (water); rows are bottom-up.
+    !!look && look.mean > 40 && look.samples.slice(12, 16).reduce((a, b) => a + b) > look.samples.slice(0, 4).reduce((a, b) => a + b);
+  console.log(
+    `drew a sea: ${result.firstLooks.filter(seaLike).length} of ${result.firstLooks.length} scrolling down, ` +
+      `${result.backLooks.filter(seaLike).length} of ${result.backLooks.length} back at the top; ` +
+      `at most ${result.mostHolding} held a context; the browser took ${result.takenByBrowser}`,
+  );
+  expect(result.seen).toBe(24);
+  expect(result.firstLooks.map(seaLike)).toEqual(result.firstLooks.map(() => true));
+  expect(result.mostHolding).toBeLessThanOrEqual(16);
+  expect(result.takenByBrowser).toBe(0);
+  expect(result.topReleased).toBe(true);
+  expect(result.backLooks.map(seaLike)).toEqual(result.backLooks.map(() => true));
+  expect(result.backLooks.length).toBeGreaterThanOrEqual(7);
+  // Rebuilt at the same time with the same settings: the same picture as on the way down.
+  expect(result.backTimes).toEqual(result.backLooks.map((_, i) => i));
+  result.backLooks.forEach((look, i) => {
+    const first = result.firstLooks[i]!;
+    expect(Math.max(...look!.samples.map((value, j) => Math.abs(value - first.samples[j]))), `element ${i}`).toBeLessThan(1);
+  });
+  expect(errors).toEqual([]);
+});
+
 test('it stops while the tab is hidden and resumes without a jump in time', async ({ page }) => {
   await openPage(page);
   const result = await page.evaluate(async () => {
