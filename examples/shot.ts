@@ -33,6 +33,7 @@ import { Boat, centreAhead } from '../src/objects/boat';
 import { FlyControls } from '../src/app/flyControls';
 import { Inspector } from '../src/app/inspector';
 import { SunLight } from '../src/objects/sunLight';
+import { wrapLongTime } from '../src/timing/simulationClock';
 import {
   defaultState,
   DEFAULT_STATE,
@@ -296,6 +297,8 @@ async function start(): Promise<void> {
     // A one-pixel readback waits for the GPU to finish the frame (gl.finish does not, in Chromium).
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
   };
+  // As the app keeps its time: a frame sequence from t = 10^16 s moves (the sea at t mod its period).
+  state.t = wrapLongTime(state.t, ocean.repeatPeriod);
   window.shotStart = { t: state.t, timeScale: link !== null ? state.timeScale : 1 };
   await window.renderFrame(state.t);
   document.title = 'ready';

@@ -24,6 +24,7 @@ import { ParameterError, SIMULATION_OPTIONS, type SimulationParameters } from '.
 import { DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ShadingChanges, type ShadingOptions } from './parameters/sceneOptions';
 import type { InitialSpectrum } from './spectrum/initialSpectrum';
 import { spectralMoments } from './spectrum/seaState';
+import { seaRepeatPeriod } from './spectrum/cascadeBands';
 
 export interface OceanOptions extends Partial<SimulationParameters>, OceanShadingOptions, SimulationOptions {
   /** Sun elevation above the horizon in degrees, [-90, 90]. @defaultValue 30 */
@@ -215,6 +216,15 @@ export class Ocean extends Object3D<OceanEventMap> {
 
   get parameters(): Readonly<SimulationParameters> {
     return this.simulation.parameters;
+  }
+
+  /**
+   * Seconds after which the sea repeats exactly (every cascade's waves where they were): a render
+   * loop may wrap its time by it (wrapLongTime) without any change to the picture.
+   */
+  get repeatPeriod(): number {
+    this.checkAlive('repeatPeriod');
+    return seaRepeatPeriod(this.simulation.parameters);
   }
 
   /**

@@ -12,7 +12,7 @@
 import { Scene } from 'three';
 import { ParameterError } from '../parameters/options';
 import { CLICKED_STONE, seaPointUnder } from '../render/seaPointer';
-import { SimulationClock } from '../timing/simulationClock';
+import { SimulationClock, wrapLongTime } from '../timing/simulationClock';
 import { Boat, centreAhead } from '../objects/boat';
 import { Buoys } from '../objects/buoys';
 import { createAppCamera, createAppOcean, createAppRenderer, loadAppSkybox, prepareAppFrame } from './appView';
@@ -238,7 +238,9 @@ let lastStatus = 0;
 document.addEventListener('visibilitychange', () => clock.restart()); // the first frame back advances nothing
 
 renderer.setAnimationLoop((now: number) => {
-  state.t += clock.advance(now, state.paused ? 0 : state.timeScale);
+  // Kept within what a double resolves (wrapLongTime): the same sea, and time that still moves.
+  const step = clock.advance(now, state.paused ? 0 : state.timeScale);
+  if (step !== 0) state.t = wrapLongTime(state.t, ocean.repeatPeriod) + step;
   controls.update(clock.realStep);
 
   const start = performance.now();

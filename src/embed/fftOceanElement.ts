@@ -58,7 +58,7 @@ import { ACESFilmicToneMapping, PerspectiveCamera, Scene, Vector2, WebGLRenderer
 import { Ocean } from '../ocean';
 import { Boat } from '../objects/boat';
 import { SunLight } from '../objects/sunLight';
-import { SimulationClock } from '../timing/simulationClock';
+import { SimulationClock, wrapLongTime } from '../timing/simulationClock';
 import { formatOptionText, optionKey, parseOptionText, quoteText, type OptionRule } from '../parameters/options';
 import { DEFAULT_SHADING, DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ShadingOptions, type SunOptions } from '../parameters/sceneOptions';
 import type { PathPreference } from '../layers/oceanSimulation';
@@ -609,7 +609,8 @@ export class FftOceanElement extends ElementBase {
       return;
     }
     const animating = !this.settings.paused;
-    if (animating) this.simulatedTime += this.clock.advance(now, this.settings.timeScale);
+    // Kept within what a double resolves (wrapLongTime): the same sea, and time that still moves.
+    if (animating) this.simulatedTime = wrapLongTime(this.simulatedTime, live.ocean.repeatPeriod) + this.clock.advance(now, this.settings.timeScale);
     if (animating || this.needsDraw) {
       try {
         this.draw(live);

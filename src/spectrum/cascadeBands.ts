@@ -75,6 +75,14 @@ export function fastestModeInBand(band: CascadeBand, resolution: number): number
   return Math.min(band.high, Math.SQRT2 * nyquistRadius(band, resolution));
 }
 
+/**
+ * The period (s) after which the whole sea repeats exactly: every cascade's period is the base
+ * period times a power of two (cascadeRepeatPeriod), so it is the longest of them.
+ */
+export function seaRepeatPeriod(params: { patchSizes: readonly number[]; resolution: number; depth: number; repeatPeriod: number }): number {
+  return Math.max(...cascadeBands(params.patchSizes, params.resolution).map((band) => cascadeRepeatPeriod(band, params)));
+}
+
 /** T·2^j, the shortest that keeps every mode of the band within PHASE_SPEED_TOLERANCE (see above). */
 export function cascadeRepeatPeriod(band: CascadeBand, params: { depth: number; repeatPeriod: number }): number {
   const needed = Math.PI / (PHASE_SPEED_TOLERANCE * angularFrequency(slowestModeInBand(band), params.depth));

@@ -17,6 +17,25 @@
  * short; timeRatio reports it then, for a status line to show.
  */
 
+/**
+ * Simulated time beyond which (either sign) a render loop's time is wrapped, s (2^24: 194 days, where
+ * a double still resolves 4 ns). Time kept as t += dt stops advancing once dt is below half the
+ * spacing of doubles near t (at 10^16 s they are 2 s apart), so it is kept small: see wrapLongTime.
+ */
+export const LONGEST_KEPT_TIME = 2 ** 24;
+
+/**
+ * t, or beyond ±LONGEST_KEPT_TIME the time in [0, period) at which the sea is the same (period:
+ * Ocean.repeatPeriod, after which every wave is where it was). For a render loop's clock: a view
+ * at t = 10^16 s then moves as one at t mod period does. The local waves and the foam, which are
+ * not periodic, start again at the wrap (once every 194 days of simulated time).
+ */
+export function wrapLongTime(t: number, period: number): number {
+  if (Math.abs(t) < LONGEST_KEPT_TIME) return t;
+  const wrapped = t % period;
+  return wrapped < 0 ? wrapped + period : wrapped;
+}
+
 /** Frames up to this long are always simulated as they are, seconds. */
 export const LONG_GAP = 1;
 /** A longer frame is a gap when it also takes more than this many times the frame before it. */

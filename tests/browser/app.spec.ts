@@ -439,6 +439,21 @@ test.describe('the app', () => {
     await expect(timeLine).not.toContainText('time ×', { timeout: 5000 });
   });
 
+  test('time far ahead: from t = 10^16 s (where t += dt stands still) the sea moves, as at t mod its repeat period', async ({ page }) => {
+    await openApp(page, 'resolution=32&t=1e16', { width: 320, height: 180 });
+    const times = await page.evaluate(async () => {
+      const app = window.oceanApp;
+      await app.capturePixels();
+      const first = app.state.t;
+      await new Promise((resolve) => setTimeout(resolve, 1500));
+      await app.capturePixels();
+      return { first, later: app.state.t, period: app.ocean.repeatPeriod };
+    });
+    console.log(`from t = 1e16: t = ${times.first} then ${times.later} s 1.5 s later (repeat period ${times.period} s)`);
+    expect(times.first).toBeLessThan(times.period + 1); // wrapped, where a double still resolves milliseconds
+    expect(times.later - times.first).toBeGreaterThan(1); // and it moves with real time
+  });
+
   test('resizing the viewport resizes the canvas and the camera aspect', async ({ page }) => {
     await openApp(page, 'resolution=32', { width: 320, height: 180 });
     await page.setViewportSize({ width: 400, height: 300 });

@@ -1,5 +1,9 @@
 import { describe, expect, it } from 'vitest';
-import { GAP_FACTOR, LONG_GAP, LONGEST_FRAME, RATIO_INTERVAL, SimulationClock } from '../../src/timing/simulationClock';
+import { GAP_FACTOR, LONG_GAP, LONGEST_FRAME, LONGEST_KEPT_TIME, RATIO_INTERVAL, SimulationClock, wrapLongTime } from '../../src/timing/simulationClock';
+import { seaRepeatPeriod } from '../../src/spectrum/cascadeBands';
+import { createCascadeSpectra } from '../../src/spectrum/initialSpectrum';
+import { CpuWaveFields } from '../../src/fft/cpuWaveFields';
+import { validateParameters } from '../../src/parameters/parameters';
 
 /** Runs frames at these timestamps (ms) at `rate`; returns each frame's simulated step. */
 function run(clock: SimulationClock, timestamps: number[], rate = 1): number[] {
@@ -132,5 +136,43 @@ describe('SimulationClock: the time ratio', () => {
     for (let i = 0; i < 6; i++) times.push(times[times.length - 1] + 200, times[times.length - 1] + 200 + 1500); // 200 ms, then a 1.5 s stall
     run(clock, times);
     expect(clock.timeRatio).toBeCloseTo((0.2 + 0.2) / (0.2 + 1.5), 1);
+  });
+});
+
+describe('wrapLongTime: a render loop’s time stays where a double resolves it', () => {
+  const parameters = validateParameters({ resolution: 32 });
+  const period = seaRepeatPeriod(parameters);
+
+  it('the sea repeats after seaRepeatPeriod: every cascade’s period divides it by a power of two', () => {
+    for (const spectrum of createCascadeSpectra(parameters)) {
+      const ratio = period / spectrum.repeatPeriod;
+      expect(Number.isInteger(Math.log2(ratio)), `${spectrum.patchSize} m`).toBe(true);
+    }
+  });
+
+  it('leaves ordinary times alone, and wraps long ones into [0, period) where the sea is the same, exactly', () => {
+    for (const t of [0, 12.5, -3, LONGEST_KEPT_TIME - 1]) expect(wrapLongTime(t, period)).toBe(t);
+    for (const t of [6e8, 1e16, -1e16]) {
+      const wrapped = wrapLongTime(t, period);
+      expect(wrapped).toBeGreaterThanOrEqual(0);
+      expect(wrapped).toBeLessThan(period);
+      for (const spectrum of createCascadeSpectra(parameters)) {
+        const [far, near] = [new CpuWaveFields(spectrum), new CpuWaveFields(spectrum)];
+        far.update(t);
+        near.update(wrapped);
+        expect(near.displacement).toEqual(far.displacement);
+      }
+    }
+  });
+
+  it('keeps time moving at 10^16 s, where t += dt does not (doubles there are 2 s apart)', () => {
+    let kept = 1e16;
+    let naive = 1e16;
+    for (let frame = 0; frame < 100; frame++) {
+      kept = wrapLongTime(kept, period) + 1 / 60; // as the app and the element keep their time
+      naive += 1 / 60;
+    }
+    expect(naive).toBe(1e16);
+    expect(kept - wrapLongTime(1e16, period)).toBeCloseTo(100 / 60, 9);
   });
 });
