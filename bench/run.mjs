@@ -33,7 +33,9 @@
 //
 // If the browser part fails, the Node rows and the summary are still printed and the exit code is 1.
 // `npm run bench -- --only=queries,living` runs only the groups named (fft2d, fields, cascades,
-// frame, living, queries); the summary then has nulls for the others.
+// frame, living, queries, app); the summary then has nulls for the others.
+//   app          the app page as a user opens it (quality 'auto', after it adapted) and at each
+//                fixed quality level, 1280x720: the median time between frames and the fps.
 import { createServer as createNetServer } from 'node:net';
 import { chromium } from '@playwright/test';
 import FFT from 'fft.js';
@@ -60,7 +62,12 @@ const LOCAL_WAVES_N = 256;
 const TARGETS = { jsCascades3Ms256: 9, gpuCascades3Ms256: 30, frameMs256Cascades3: 100 };
 const FIRST_PORT = 5180;
 
-const GROUPS = ['fft2d', 'fields', 'cascades', 'frame', 'living', 'queries'];
+/** The app as opened adapts its quality for this long before it is timed, s; a fixed level warms up shorter. */
+const APP_SETTLE_SECONDS = 20;
+const APP_WARMUP_SECONDS = 5;
+const APP_FRAMES = 30;
+
+const GROUPS = ['fft2d', 'fields', 'cascades', 'frame', 'living', 'queries', 'app'];
 const onlyArgument = process.argv.slice(2).find((argument) => argument.startsWith('--only='));
 const only = onlyArgument ? onlyArgument.slice('--only='.length).split(',') : GROUPS;
 for (const group of only) {
@@ -299,6 +306,46 @@ function withTimeout(promise, ms, what) {
   return Promise.race([promise, timeout]).finally(() => clearTimeout(timer));
 }
 
+/**
+ * The app as a user opens it (index.html, no URL parameters: its MSAA, panel, status line and
+ * quality 'auto'), after APP_SETTLE_SECONDS to adapt, then at each fixed quality level, at
+ * FRAME_SIZE: the median real time between frames (requestAnimationFrame), what users see.
+ */
+async function appBenchmarks(browser, server, port, results) {
+  const { QUALITY_LEVELS } = await server.ssrLoadModule('/src/timing/adaptiveQuality.ts');
+  const appPage = await browser.newPage({ viewport: FRAME_SIZE });
+  appPage.on('pageerror', (error) => log(`app page error: ${error.message}`));
+  try {
+    for (const quality of ['as opened', ...QUALITY_LEVELS]) {
+      log(`the app at ${FRAME_SIZE.width}x${FRAME_SIZE.height}, quality ${quality}`);
+      await appPage.goto(`http://127.0.0.1:${port}/${quality === 'as opened' ? '' : `?quality=${quality}`}`);
+      await appPage.waitForFunction(() => window.oceanApp !== undefined, null, { timeout: 60_000 });
+      await appPage.waitForTimeout(1000 * (quality === 'as opened' ? APP_SETTLE_SECONDS : APP_WARMUP_SECONDS));
+      const run = await withTimeout(
+        appPage.evaluate(async (count) => {
+          const frame = () => new Promise((resolve) => requestAnimationFrame(resolve));
+          const samples = [];
+          let last = await frame();
+          for (let i = 0; i < count; i++) {
+            const now = await frame();
+            samples.push(now - last);
+            last = now;
+          }
+          const app = window.oceanApp;
+          return { samples, level: app.quality.level, pixelRatio: app.renderer.getPixelRatio(), resolution: app.ocean.parameters.resolution, path: app.ocean.simulation.path };
+        }, APP_FRAMES),
+        BROWSER_STEP_TIMEOUT_MS,
+        `the app at quality ${quality}`,
+      );
+      const row = stats(run.samples);
+      results.app[quality] = { ms: row.ms, fps: 1000 / row.ms, level: run.level };
+      emit({ bench: 'app', quality, level: run.level, size: `${FRAME_SIZE.width}x${FRAME_SIZE.height}`, fps: Math.round(10000 / row.ms) / 10, pixelRatio: run.pixelRatio, N: run.resolution, path: run.path, ...row });
+    }
+  } finally {
+    await appPage.close();
+  }
+}
+
 async function browserBenchmarks(results) {
   const executablePath = findBrowser();
   if (!executablePath) throw new Error('no Chromium found (see scripts/browser.mjs; set CHROMIUM_PATH)');
@@ -479,6 +526,7 @@ async function browserBenchmarks(results) {
         emit({ bench: 'queries', query: name, points: 1000, N: CASCADE_N, firstCallMs: firstMs, ...row, target: name === 'heightsAt' ? 2 : null });
       }
     }
+    if (wanted('app')) await appBenchmarks(browser, server, port, results);
     if (!wanted('fields')) return;
     await page.goto(`http://127.0.0.1:${port}/bench/pages/bench.html`);
     await page.waitForFunction(() => document.title === 'ready', null, { timeout: 60_000 });
@@ -514,6 +562,7 @@ const results = {
   frameByCascades: {},
   livingCost: null,
   queries: null,
+  app: {},
 };
 let exitCode = 0;
 let browserError = null;
@@ -565,6 +614,10 @@ emit({
   frameMs256At1280x720: results.frame[256] ?? null,
   frameMs512At1280x720: results.frame[512] ?? null,
   livingCostMs: results.livingCost,
+  // The app as opened and at each quality level, beside the bare 3-cascade frame of the same size.
+  appFrameMs: Object.fromEntries(Object.entries(results.app).map(([quality, { ms }]) => [quality, ms])),
+  appAsOpenedFps: results.app['as opened']?.fps ?? null,
+  appAsOpenedLevel: results.app['as opened']?.level ?? null,
   queries1000Ms: results.queries,
   jsCascadesMs256: byCascades((count) => results.jsCascades[count]),
   jsBrowserCascadesMs256: byCascades((count) => results.jsBrowserCascades[count]),

@@ -251,6 +251,7 @@ async function start(): Promise<void> {
 
   // The app's renderer; preserveDrawingBuffer keeps the frame for toDataURL (it changes no pixel).
   const renderer = createAppRenderer({ preserveDrawingBuffer: true });
+  // Pixel ratio 1 at every quality level: the PNG has the size asked for (a level's grid still applies).
   renderer.setPixelRatio(1);
   renderer.setSize(width, height);
   document.body.appendChild(renderer.domElement);

@@ -13,6 +13,7 @@ import { Scene } from 'three';
 import { ParameterError } from '../parameters/options';
 import { CLICKED_STONE, seaPointUnder } from '../render/seaPointer';
 import { SimulationClock, wrapLongTime } from '../timing/simulationClock';
+import { AdaptiveQuality } from '../timing/adaptiveQuality';
 import { Boat, centreAhead } from '../objects/boat';
 import { Buoys } from '../objects/buoys';
 import { createAppCamera, createAppOcean, createAppRenderer, loadAppSkybox, prepareAppFrame } from './appView';
@@ -31,12 +32,33 @@ for (const { parameter, message } of warnings) overlay.warn(parameter, message);
 
 // The renderer, camera, ocean and per-frame steps are appView.ts's, which `npm run shot` shares.
 const renderer = createAppRenderer();
-renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
+const devicePixelRatio = Math.min(window.devicePixelRatio, 2);
+renderer.setPixelRatio(devicePixelRatio);
 container.appendChild(renderer.domElement);
 
 const scene = new Scene();
 const camera = createAppCamera();
 const ocean = createAppOcean(renderer, state);
+
+// Adaptive quality (adaptiveQuality.ts): the render scale and the grid that hold the frame rate.
+let quality = new AdaptiveQuality(state.quality, state.targetFps);
+/** The grid the ocean runs: the one asked for, at most the quality level's. */
+function qualityResolution(asked: number): number {
+  return Math.min(asked, quality.step.maxResolution);
+}
+/** Puts the quality level in force: the pixel ratio and the grid. */
+function applyQuality(): void {
+  renderer.setPixelRatio(devicePixelRatio * quality.step.renderScale);
+  const resolution = qualityResolution(state.resolution);
+  if (ocean.parameters.resolution === resolution) return;
+  try {
+    ocean.setParameters({ resolution });
+  } catch (error) {
+    // Cascades this far apart need the finer grid (parameters.ts): keep it.
+    if (!(error instanceof ParameterError)) throw error;
+  }
+}
+applyQuality();
 const sunLight = new SunLight(ocean);
 scene.add(ocean, sunLight);
 // A face set that fails to load (404, CORS, not an image, an untrusted origin) leaves the generated
@@ -129,8 +151,13 @@ controls.onChange = () => {
 /** Applies changes to the scene; throws (and changes nothing) when the ocean rejects a value. */
 function apply(changes: Partial<AppState>): void {
   const has = (key: keyof AppState) => Object.hasOwn(changes, key);
-  const simulation = Object.fromEntries(Object.entries(changes).filter(([key]) => key in ocean.parameters));
+  const simulation: Record<string, unknown> = Object.fromEntries(Object.entries(changes).filter(([key]) => key in ocean.parameters));
+  if (changes.resolution !== undefined) simulation.resolution = qualityResolution(changes.resolution);
   if (Object.keys(simulation).length > 0) ocean.setParameters(simulation);
+  if (changes.quality !== undefined || changes.targetFps !== undefined) {
+    quality = new AdaptiveQuality(changes.quality ?? state.quality, changes.targetFps ?? state.targetFps);
+    applyQuality();
+  }
   const shading = {
     ior: changes.ior,
     absorption: changes.absorption,
@@ -242,6 +269,7 @@ renderer.setAnimationLoop((now: number) => {
   const step = clock.advance(now, state.paused ? 0 : state.timeScale);
   if (step !== 0) state.t = wrapLongTime(state.t, ocean.repeatPeriod) + step;
   controls.update(clock.realStep);
+  if (quality.frame(clock.realStep)) applyQuality();
 
   const start = performance.now();
   prepareAppFrame(ocean, camera, state.t); // the sea at t, the eye above the crest, the far plane
@@ -262,7 +290,8 @@ renderer.setAnimationLoop((now: number) => {
   if (rendered - lastStatus > 250) {
     const time = { t: state.t, paused: state.paused, timeScale: state.timeScale, ratio: clock.timeRatio };
     const { pathReason, pathPreference } = ocean.simulation;
-    overlay.show(describeSeaState(ocean), ocean.simulation.path, averager.latest, time, controls.speed, pathPreference === 'js' ? '' : pathReason);
+    const qualityStatus = { level: quality.level, auto: quality.setting === 'auto', targetFps: quality.targetFps, frameMs: quality.medianFrameMs };
+    overlay.show(describeSeaState(ocean), ocean.simulation.path, averager.latest, time, controls.speed, pathPreference === 'js' ? '' : pathReason, qualityStatus);
     lastStatus = rendered;
   }
   panel.update();
@@ -282,6 +311,10 @@ const oceanApp = {
   state,
   panel,
   overlay,
+  /** The adaptive quality in force (adaptiveQuality.ts). */
+  get quality(): AdaptiveQuality {
+    return quality;
+  },
   get inspector(): Inspector | null {
     return inspector;
   },

@@ -7,6 +7,7 @@
 import { ACESFilmicToneMapping, PerspectiveCamera, WebGLRenderer, type WebGLRendererParameters } from 'three';
 import { Ocean, type OceanOptions } from '../ocean';
 import { ParameterError } from '../parameters/options';
+import { QUALITY_LEVELS, QUALITY_STEPS, type QualityStep } from '../timing/adaptiveQuality';
 import { skyboxFaceUrls } from '../render/skyEnvironment';
 import { simulationParameters, type AppState } from './urlState';
 
@@ -23,9 +24,19 @@ export function createAppCamera(aspect = 1): PerspectiveCamera {
 }
 
 /** The ocean `state` describes (simulation, path, sun, shading, wireframe), generated sky. */
+/**
+ * The quality level a state is drawn at first: its fixed level, or for 'auto' the best (the app
+ * then adapts it; `npm run shot` keeps its grid, at pixel ratio 1, so that its pictures are
+ * deterministic and of the size asked for).
+ */
+export function startingQuality(state: Readonly<AppState>): QualityStep {
+  return QUALITY_STEPS[state.quality === 'auto' ? QUALITY_LEVELS[0] : state.quality];
+}
+
 export function createAppOcean(renderer: WebGLRenderer, state: Readonly<AppState>, options: Pick<OceanOptions, 'worker'> = {}): Ocean {
   const ocean = new Ocean(renderer, {
     ...simulationParameters(state),
+    resolution: Math.min(state.resolution, startingQuality(state).maxResolution),
     ...options,
     path: state.path,
     sunElevation: state.sunElevation,

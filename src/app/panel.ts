@@ -13,7 +13,8 @@ import { Color } from 'three';
 import { colorToLinear, SHADING_MODES } from '../parameters/sceneOptions';
 import { ParameterError, SPECTRUM_MODELS, SPREADING_MODELS, type SimulationParameters } from '../parameters/parameters';
 import { beaufortPreset, SEA_PRESETS } from '../spectrum/presets';
-import { assignState, cloneState, PATH_PREFERENCES, urlRounded, type AppState, type Rgb } from './urlState';
+import { assignState, cloneState, MIN_TARGET_FPS, PATH_PREFERENCES, urlRounded, type AppState, type Rgb } from './urlState';
+import { QUALITY_SETTINGS, type QualitySetting } from '../timing/adaptiveQuality';
 
 /** The presets the panel offers: the named sea states, then Beaufort forces 0–12. */
 export const PANEL_PRESETS: Readonly<Record<string, Partial<SimulationParameters>>> = Object.freeze({
@@ -133,6 +134,8 @@ export class Panel {
     this.bind(time.add(state, 'inspector').name('inspector tiles'), 'inspector');
     this.bind(time.add(state, 'buoys').name('buoys'), 'buoys');
     this.bind(time.add(state, 'boat').name('boat (wake)'), 'boat');
+    this.bind(time.add(state, 'quality', QUALITY_SETTINGS as QualitySetting[]).name('quality'), 'quality');
+    this.number(time, 'targetFps', "'auto' holds (fps)", MIN_TARGET_FPS, 120, 1);
     this.register('copyLink', time.add({ copyLink: () => actions.copyLink() }, 'copyLink').name('copy link'));
 
     this.syncDepthControls();

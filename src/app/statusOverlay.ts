@@ -76,6 +76,15 @@ export interface TimeStatus {
   ratio: number | null;
 }
 
+/** The quality level as the status line shows it (AdaptiveQuality). */
+export interface QualityStatus {
+  level: string;
+  auto: boolean;
+  targetFps: number;
+  /** The median frame time of the last window, ms, or null before the first. */
+  frameMs: number | null;
+}
+
 export class StatusOverlay {
   readonly root: HTMLElement;
   readonly status: HTMLElement;
@@ -101,16 +110,19 @@ export class StatusOverlay {
     root.append(box, this.notices);
   }
 
-  /** The status: FFT path, frame rate and CPU timings on one line; time and camera speed on the next. */
-  /** `reason`: why the path is not the best asked for (SimulationPath's pathReason), shown after it. */
-  show(seaState: string, path: SimulationPath, timings: FrameTimings | null, time: TimeStatus, speed: number, reason = ''): void {
+  /**
+   * The status: FFT path, frame rate, the quality level with the median frame time it was chosen
+   * by, and CPU timings on one line; time and camera speed on the next. `reason`: why the path is
+   * not the best asked for (SimulationPath's pathReason), shown after it.
+   */
+  show(seaState: string, path: SimulationPath, timings: FrameTimings | null, time: TimeStatus, speed: number, reason = '', quality?: QualityStatus): void {
     const parts = [seaState, `FFT: ${PATH_LABELS[path] ?? path}${reason ? ` (${reason})` : ''}`];
-    if (timings) {
-      parts.push(
-        `${timings.fps.toFixed(0)} fps`,
-        `CPU time: sim ${timings.simulationMs.toFixed(1)} ms, render ${timings.renderMs.toFixed(1)} ms`,
-      );
+    if (timings) parts.push(`${timings.fps.toFixed(0)} fps`);
+    if (quality) {
+      const frame = quality.frameMs === null ? '' : `, frame ${quality.frameMs.toFixed(0)} ms`;
+      parts.push(`quality ${quality.level}${quality.auto ? ` (auto, for ${quality.targetFps} fps${frame})` : frame}`);
     }
+    if (timings) parts.push(`CPU time: sim ${timings.simulationMs.toFixed(1)} ms, render ${timings.renderMs.toFixed(1)} ms`);
     this.status.textContent = parts.join(' · ');
     const clock = [`t = ${time.t.toFixed(2)} s${time.paused ? ' (paused)' : ''}`];
     if (time.ratio !== null) clock.push(`time ×${time.ratio.toPrecision(2)}${time.timeScale === 1 ? '' : ` (time scale ${time.timeScale})`}`);

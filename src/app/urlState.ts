@@ -16,6 +16,7 @@
  *   mode       shading mode (full, fresnel, reflection, refraction, caustics, height)
  *   wireframe  1/0        inspector  1/0        path  auto/gpu/js        buoys  1/0   boat  1/0
  *   timeScale  ≥ 0        paused     1/0        t     simulation time in seconds
+ *   quality    auto/high/medium/low/lowest (adaptiveQuality.ts)      targetFps  frames per second 'auto' holds
  *   cam        x,y,z,yawDeg,pitchDeg (metres, degrees; see flyControls.ts)
  *   skybox     "generated" (the analytic sky), or the folder URL of six faces px.png … nz.png
  *
@@ -41,6 +42,7 @@ import {
   type ShadingMode,
 } from '../parameters/sceneOptions';
 import { clampPitch, MIN_HEIGHT, wrapYaw } from './flyControls';
+import { DEFAULT_TARGET_FPS, QUALITY_SETTINGS, type QualitySetting } from '../timing/adaptiveQuality';
 
 export type PathPreference = 'auto' | 'gpu' | 'js';
 export const PATH_PREFERENCES: readonly PathPreference[] = ['auto', 'gpu', 'js'];
@@ -62,6 +64,9 @@ export interface AppState extends SimulationParameters {
   /** A boat going round a circle ahead of the camera, leaving a wake (boat.ts). */
   boat: boolean;
   path: PathPreference;
+  /** 'auto' lowers and raises the render scale and grid to hold targetFps; a level stays fixed (adaptiveQuality.ts). */
+  quality: QualitySetting;
+  targetFps: number;
   timeScale: number;
   paused: boolean;
   /** Simulation time, seconds. */
@@ -87,6 +92,8 @@ export const DEFAULT_STATE: Readonly<AppState> = Object.freeze({
   buoys: false,
   boat: false,
   path: 'auto' as PathPreference,
+  quality: 'auto' as QualitySetting,
+  targetFps: DEFAULT_TARGET_FPS,
   timeScale: 1,
   paused: false,
   t: 0,
@@ -95,6 +102,8 @@ export const DEFAULT_STATE: Readonly<AppState> = Object.freeze({
 });
 
 export const MAX_TIME_SCALE = 10;
+export const MIN_TARGET_FPS = 5;
+export const MAX_TARGET_FPS = 240;
 
 /** A fresh, mutable copy of the defaults (arrays copied too). */
 export function defaultState(): AppState {
@@ -143,6 +152,8 @@ export const URL_KEYS: readonly (keyof AppState)[] = [
   'buoys',
   'boat',
   'path',
+  'quality',
+  'targetFps',
   'timeScale',
   'paused',
   't',
@@ -262,6 +273,12 @@ export function parseValue<K extends keyof AppState>(key: K, text: string): { va
       return fromTable(SHADING_OPTIONS, 'shadingMode');
     case 'path':
       return (PATH_PREFERENCES as readonly string[]).includes(text) ? ok(text) : bad(PATH_PREFERENCES.join(', '));
+    case 'quality':
+      return (QUALITY_SETTINGS as readonly string[]).includes(text) ? ok(text) : bad(QUALITY_SETTINGS.join(', '));
+    case 'targetFps': {
+      const v = parseNumber(text);
+      return Number.isFinite(v) && v >= MIN_TARGET_FPS && v <= MAX_TARGET_FPS ? ok(v) : bad(`a number of frames per second from ${MIN_TARGET_FPS} to ${MAX_TARGET_FPS}`);
+    }
     case 'wireframe':
     case 'inspector':
     case 'buoys':

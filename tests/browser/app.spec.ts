@@ -22,7 +22,9 @@ async function openApp(page: Page, query = '', size = { width: 480, height: 270 
     if (message.type() === 'error') errors.push(message.text());
   });
   await page.setViewportSize(size);
-  await page.goto(`/?${query}`);
+  // A fixed quality level unless the test is about it: 'auto' would lower the render scale and the
+  // grid within seconds under SwiftShader, and the tests compare pictures and fields over longer.
+  await page.goto(`/?${/(^|&)quality=/.test(query) ? query : [query, 'quality=high'].filter(Boolean).join('&')}`);
   await page.waitForFunction(() => window.oceanApp !== undefined);
   // Narrow viewports (fast under SwiftShader) start with the panel closed.
   await page.evaluate((open) => window.oceanApp.panel.gui.open(open), openPanel);
@@ -111,7 +113,7 @@ test.describe('the app', () => {
     const errors = await openApp(page, 'resolution=64');
     const status = page.locator('#status .status-line');
     await expect(status).toHaveText(
-      new RegExp(`^${SEA_STATE_TEXT} · FFT: (GPU RGBA32F|GPU RGBA16F|JS in a worker|JS) · \\d+ fps · CPU time: sim \\d+\\.\\d ms, render \\d+\\.\\d ms$`),
+      new RegExp(`^${SEA_STATE_TEXT} · FFT: (GPU RGBA32F|GPU RGBA16F|JS in a worker|JS) · \\d+ fps · quality high(, frame \\d+ ms)? · CPU time: sim \\d+\\.\\d ms, render \\d+\\.\\d ms$`),
     );
     await expect(page.locator('#status .status-time')).toHaveText(/^t = \d+\.\d\d s · camera speed 20 m\/s$/);
     const path = await page.evaluate(() => window.oceanApp.ocean.simulation.path);
@@ -452,6 +454,37 @@ test.describe('the app', () => {
     console.log(`from t = 1e16: t = ${times.first} then ${times.later} s 1.5 s later (repeat period ${times.period} s)`);
     expect(times.first).toBeLessThan(times.period + 1); // wrapped, where a double still resolves milliseconds
     expect(times.later - times.first).toBeGreaterThan(1); // and it moves with real time
+  });
+
+  test("quality 'auto' lowers the render scale and the grid until the frames hold the target, and the status line says so; a fixed level stays", async ({ page }) => {
+    test.setTimeout(120_000);
+    // 60 fps is out of reach under SwiftShader: 'auto' must go down, a window (2 s) at a time.
+    await openApp(page, 'quality=auto&targetFps=60', { width: 640, height: 360 }, false);
+    const status = page.locator('#status .status-line');
+    await expect(status).toContainText('quality high (auto, for 60 fps');
+    await expect.poll(() => page.evaluate(() => window.oceanApp.quality.level), { timeout: 60_000 }).toBe('lowest');
+    const lowest = await page.evaluate(() => ({
+      pixelRatio: window.oceanApp.renderer.getPixelRatio(),
+      resolution: window.oceanApp.ocean.parameters.resolution,
+      asked: window.oceanApp.state.resolution,
+      frameMs: window.oceanApp.quality.medianFrameMs,
+    }));
+    console.log(`quality auto at 640x360 for 60 fps: lowest level, pixel ratio ${lowest.pixelRatio}, N ${lowest.resolution} (asked ${lowest.asked}), median frame ${lowest.frameMs?.toFixed(0)} ms`);
+    expect(lowest.pixelRatio).toBeCloseTo(0.35, 6);
+    expect(lowest.resolution).toBe(32);
+    expect(lowest.asked).toBe(256); // the URL and the panel keep what was asked for
+    await expect(status).toContainText(/quality lowest \(auto, for 60 fps, frame \d+ ms\)/);
+
+    // A fixed level is put in force at once and kept, whatever the frames.
+    await page.evaluate(() => window.oceanApp.set({ quality: 'medium' }));
+    await page.waitForTimeout(5000);
+    const medium = await page.evaluate(() => ({
+      level: window.oceanApp.quality.level,
+      pixelRatio: window.oceanApp.renderer.getPixelRatio(),
+      resolution: window.oceanApp.ocean.parameters.resolution,
+    }));
+    expect(medium).toEqual({ level: 'medium', pixelRatio: 0.75, resolution: 128 });
+    await expect.poll(() => new URL(page.url()).searchParams.get('quality')).toBe('medium');
   });
 
   test('resizing the viewport resizes the canvas and the camera aspect', async ({ page }) => {

@@ -179,7 +179,7 @@ test("the packed library in a new vite project: the README's Quick start shows t
     const appPage = await browser.newPage({ viewport: SIZE });
     try {
       const appProblems = watchProblems(appPage);
-      await appPage.goto(`/?t=${t}&paused=1`);
+      await appPage.goto(`/?t=${t}&paused=1&quality=high`); // the first view: quality is not yet adapted
       await appPage.waitForFunction(() => window.oceanApp !== undefined);
       // Hide what lies over the canvas (status line, panel) and let two frames draw.
       await appPage.addStyleTag({ content: 'body > :not(#app), #app > :not(canvas) { display: none !important; }' });

@@ -202,7 +202,7 @@ test('a link from the app and its shot agree pixel for pixel', async ({ page }) 
   test.setTimeout(300_000);
   const size = { width: 320, height: 180 };
   const query =
-    'windSpeed=14&windDirection=50&seed=5&sunElevation=18&sunAzimuth=70&absorption=0.3,0.06,0.03&scatterColour=%23103040&paused=1&t=7.25&cam=3,9,-4,20,-8';
+    'windSpeed=14&windDirection=50&seed=5&sunElevation=18&sunAzimuth=70&absorption=0.3,0.06,0.03&scatterColour=%23103040&quality=high&paused=1&t=7.25&cam=3,9,-4,20,-8';
   // The app, on the test server, as app.spec.ts drives it: its canvas right after a render.
   await page.setViewportSize(size);
   await page.goto(`/?${query}`);

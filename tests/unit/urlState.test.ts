@@ -52,6 +52,8 @@ function changed(): AppState {
     buoys: true,
     boat: true,
     path: 'js',
+    quality: 'low',
+    targetFps: 20,
     timeScale: 0.5,
     paused: true,
     t: 12.345,
