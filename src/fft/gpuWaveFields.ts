@@ -178,6 +178,14 @@ export class GpuWaveFields {
     const [result0, result1] = source.textures;
     this.unpackMaterial = material('fft/unpackFields.frag', { tSpectra0: { value: result0 }, tSpectra1: { value: result1 } });
     this.passCount = 2 + this.fftPasses.length;
+    // Checked now rather than at the first update, so that a device that cannot render to the
+    // layered framebuffer makes this throw and the 'auto' path falls back to JS with the reason.
+    try {
+      for (const spectra of this.working) spectra.prepare(renderer);
+    } catch (error) {
+      this.dispose();
+      throw error;
+    }
   }
 
   /** Computes every field at time t (seconds) into `displacement` and `derivatives`. */
@@ -239,9 +247,18 @@ class LayeredSpectra {
     this.target = new WebGLRenderTarget(size, size, { depthBuffer: false, generateMipmaps: false });
   }
 
+  /**
+   * Builds the framebuffer of the eight layers (again after a restored context), checking it is
+   * complete: throws an UnsupportedError if the device cannot render to it. Done when the GPU path
+   * is created, so that 'auto' can fall back then, and before every use.
+   */
+  prepare(renderer: WebGLRenderer): void {
+    if (!this.framebufferIsCurrent(renderer)) this.createFramebuffer(renderer);
+  }
+
   /** Makes the eight layers the render target of the next draw. Allocates nothing once set up. */
   bind(renderer: WebGLRenderer): void {
-    if (!this.framebufferIsCurrent(renderer)) this.createFramebuffer(renderer);
+    this.prepare(renderer);
     // Every time: after a restored context three.js has a new property map that no longer knows it.
     useExternalFramebuffer(renderer, this.target, this.framebuffer!);
     renderer.setRenderTarget(this.target);

@@ -781,6 +781,8 @@ test.describe('failures the app explains', () => {
     ['MAX_DRAW_BUFFERS of 4 (all WebGL2 promises)', { maxDrawBuffers: 4 }, /^js/, /MAX_DRAW_BUFFERS is 4/],
     ['no EXT_color_buffer_float', { extensions: ['EXT_color_buffer_float'] }, /^gpu-rgba16f$/, /no EXT_color_buffer_float: half floats/],
     ['no float render targets at all', { extensions: ['EXT_color_buffer_float', 'EXT_color_buffer_half_float'] }, /^js/, /no float render targets/],
+    // Found when the GPU path is built, not at its first update: 'auto' can still fall back then.
+    ['framebuffers of several attachments unsupported', { layeredFramebuffers: false }, /^js/, /the GPU path failed: GPU FFT: the layered framebuffer is incomplete \(status 0x8cdd\)/],
   ] as const) {
     test(`on a device with ${device} the sea falls back, says why, and looks the same`, async ({ page }) => {
       const query = 'resolution=64&paused=1&t=7.5';

@@ -2,10 +2,14 @@ import type { Page } from '@playwright/test';
 
 /**
  * Makes the page's WebGL2 contexts report less than they have, as a weaker device would: a smaller
- * MAX_DRAW_BUFFERS (WebGL2 guarantees 4), and extensions that are missing. The context itself is
- * the real one; only what it reports is changed.
+ * MAX_DRAW_BUFFERS (WebGL2 guarantees 4), extensions that are missing, or framebuffers with more
+ * than one colour attachment reported incomplete (a driver that cannot render to that combination:
+ * FRAMEBUFFER_UNSUPPORTED). The context itself is the real one; only what it reports is changed.
  */
-export async function withHiddenCapabilities(page: Page, hidden: { maxDrawBuffers?: number; extensions?: readonly string[] }): Promise<void> {
+export async function withHiddenCapabilities(
+  page: Page,
+  hidden: { maxDrawBuffers?: number; extensions?: readonly string[]; layeredFramebuffers?: false },
+): Promise<void> {
   await page.addInitScript((hidden) => {
     const prototype = WebGL2RenderingContext.prototype;
     const getParameter = prototype.getParameter;
@@ -22,5 +26,12 @@ export async function withHiddenCapabilities(page: Page, hidden: { maxDrawBuffer
     prototype.getSupportedExtensions = function (this: WebGL2RenderingContext) {
       return (getSupportedExtensions.call(this) ?? []).filter((name) => !missing.has(name));
     };
+    if (hidden.layeredFramebuffers === false) {
+      const checkFramebufferStatus = prototype.checkFramebufferStatus;
+      prototype.checkFramebufferStatus = function (this: WebGL2RenderingContext, target: number) {
+        const second = this.getFramebufferAttachmentParameter(target, this.COLOR_ATTACHMENT1, this.FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE);
+        return second !== this.NONE ? this.FRAMEBUFFER_UNSUPPORTED : checkFramebufferStatus.call(this, target);
+      };
+    }
   }, hidden);
 }
