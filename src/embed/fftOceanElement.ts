@@ -615,7 +615,8 @@ export class FftOceanElement extends ElementBase {
       try {
         this.draw(live);
       } catch (error) {
-        console.error('<fft-ocean>: drawing failed; stopping', error);
+        // Nothing to recover with: say so in the box and to the page (fft-ocean-error), and stop.
+        this.fail('Drawing the ocean failed; it has stopped.', error);
         return; // no further frames
       }
     }

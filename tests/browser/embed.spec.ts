@@ -463,3 +463,27 @@ test('without WebGL 2 the box shows a message instead of staying blank', async (
   expect(errors).toEqual([]); // a message, not an uncaught exception
   await expect(page.getByText('This ocean needs WebGL 2')).toBeVisible(); // what a person sees
 });
+
+test('a frame that fails to draw: the box says so and the page gets fft-ocean-error, once, with no uncaught error', async ({ page }) => {
+  const errors: string[] = [];
+  page.on('pageerror', (error) => errors.push(error.message));
+  await page.goto('/tests/browser/pages/embed.html');
+  await expect(page).toHaveTitle('ready');
+  const result = await page.evaluate(async () => {
+    const events: string[] = [];
+    const el = document.createElement('fft-ocean');
+    el.addEventListener('fft-ocean-error', (e) => events.push((e as CustomEvent).detail.message));
+    document.querySelector('#box')!.append(el);
+    await window.embed.frames(2);
+    // A fault nothing can recover from inside a frame (here: the ocean's update throws).
+    el.ocean!.update = () => {
+      throw new Error('a failure inside the frame');
+    };
+    await new Promise((resolve) => setTimeout(resolve, 1000));
+    const message = el.shadowRoot!.querySelector('[part="message"]');
+    return { events, message: message?.textContent ?? null };
+  });
+  expect(result.events).toEqual(['Drawing the ocean failed; it has stopped.']);
+  expect(result.message).toBe('Drawing the ocean failed; it has stopped.');
+  expect(errors).toEqual([]);
+});
