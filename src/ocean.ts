@@ -19,7 +19,7 @@ import { SkyEnvironment, sunAnglesFromDirection, type SunAngles, type SunDirecti
 import { OceanSimulation, type PathPreference, type SimulationOptions, type SimulationPath } from './layers/oceanSimulation';
 import type { LocalWaves } from './layers/localWaves';
 import { heightAt, normalAt, velocityAt } from './layers/surfaceQuery';
-import { DisposedError, optionAliases, unknownOption } from './parameters/options';
+import { DisposedError, isOptionsObject, optionAliases, unknownOption } from './parameters/options';
 import { ParameterError, SIMULATION_OPTIONS, type SimulationParameters } from './parameters/parameters';
 import { DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ShadingChanges, type ShadingOptions } from './parameters/sceneOptions';
 import type { InitialSpectrum } from './spectrum/initialSpectrum';
@@ -113,6 +113,7 @@ export class Ocean extends Object3D<OceanEventMap> {
   ) {
     super();
     this.name = 'Ocean';
+    if (!isOptionsObject(options)) throw new ParameterError('options', options, 'an object of options, such as { windSpeed: 12 }');
     for (const [key, value] of Object.entries(options)) {
       if (!OCEAN_OPTION_KEYS.includes(key) && !Object.hasOwn(SHADING_ALIASES, key)) throw unknownOption(key, value, OCEAN_OPTION_KEYS, SHADING_ALIASES);
     }
@@ -257,6 +258,7 @@ export class Ocean extends Object3D<OceanEventMap> {
   /** Changes simulation parameters; a bad one throws a ParameterError and nothing changes. */
   setParameters(changes: Partial<SimulationParameters>): void {
     this.checkAlive('setParameters');
+    if (!isOptionsObject(changes)) throw new ParameterError('setParameters', changes, 'an object of parameters, such as { windSpeed: 12 }');
     this.simulation.setParameters(changes);
   }
 
@@ -271,6 +273,7 @@ export class Ocean extends Object3D<OceanEventMap> {
    */
   setShading(changes: OceanShadingOptions): void {
     this.checkAlive('setShading');
+    if (!isOptionsObject(changes)) throw new ParameterError('setShading', changes, 'an object of shading options, such as { ior: 1.34 }');
     this.surface.material.setShading(changes);
   }
 
@@ -287,7 +290,7 @@ export class Ocean extends Object3D<OceanEventMap> {
     this.checkAlive('setSun');
     const current = { elevation: this.sky.sunElevation, azimuth: this.sky.sunAzimuth };
     const sun = typeof sunOrElevation === 'number' ? { elevation: sunOrElevation, azimuth } : sunOrElevation;
-    if (typeof sun !== 'object' || sun === null) {
+    if (!isOptionsObject(sun)) {
       throw new ParameterError('setSun', sun, '{ elevation, azimuth } (degrees), { direction } or (elevation, azimuth)');
     }
     for (const [key, value] of Object.entries(sun)) {
@@ -305,7 +308,7 @@ export class Ocean extends Object3D<OceanEventMap> {
    */
   heightAt(x: number, z: number): number {
     this.checkAlive('heightAt');
-    if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError('heightAt(x, z)', `${x}, ${z}`, 'finite coordinates');
+    checkCoordinates('heightAt(x, z)', x, z);
     return heightAt(this.simulation.surfaceLayers, this.simulation.parameters.choppiness, this.currentTime, x, z);
   }
 
@@ -316,7 +319,7 @@ export class Ocean extends Object3D<OceanEventMap> {
    */
   normalAt(x: number, z: number, target = new Vector3()): Vector3 {
     this.checkAlive('normalAt');
-    if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError('normalAt(x, z)', `${x}, ${z}`, 'finite coordinates');
+    checkCoordinates('normalAt(x, z)', x, z);
     return normalAt(this.simulation.surfaceLayers, this.simulation.parameters.choppiness, this.currentTime, x, z, target);
   }
 
@@ -327,7 +330,7 @@ export class Ocean extends Object3D<OceanEventMap> {
    */
   velocityAt(x: number, z: number, target = new Vector3()): Vector3 {
     this.checkAlive('velocityAt');
-    if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError('velocityAt(x, z)', `${x}, ${z}`, 'finite coordinates');
+    checkCoordinates('velocityAt(x, z)', x, z);
     return velocityAt(this.simulation.surfaceLayers, this.simulation.parameters.choppiness, this.currentTime, x, z, target);
   }
 
@@ -382,7 +385,7 @@ export class Ocean extends Object3D<OceanEventMap> {
       throw new ParameterError(`${method}(xz, out)`, out, `an array of at least ${perPoint * count} numbers (${perPoint} per point)`);
     }
     for (let i = 0; i < xz.length; i++) {
-      if (!Number.isFinite(xz[i])) throw new ParameterError(`${method}(xz)[${i}]`, xz[i], 'a finite coordinate in metres');
+      if (!isCoordinate(xz[i])) throw new ParameterError(`${method}(xz)[${i}]`, xz[i], `a finite coordinate ${WITHIN_RANGE}`);
     }
     return count;
   }
@@ -398,6 +401,25 @@ export class Ocean extends Object3D<OceanEventMap> {
     }
     return out;
   }
+}
+
+/**
+ * The farthest from the origin, in metres along x or z, that the queries are asked about. Up to
+ * it a double holds a coordinate to a tenth of a millimetre, finer than the finest texel of any
+ * sea (a 1 m patch at N = 1024); far beyond it the texel coordinates and the blend's phases
+ * overflow to ±Infinity, and the answer would be NaN.
+ */
+const MAX_COORDINATE = 1e12;
+/** MAX_COORDINATE as the errors say it. */
+const WITHIN_RANGE = 'in metres, at most 1e12 in size';
+
+function isCoordinate(value: unknown): boolean {
+  return typeof value === 'number' && Math.abs(value) <= MAX_COORDINATE;
+}
+
+/** Throws a ParameterError naming `method` unless x and z are coordinates the queries answer for. */
+function checkCoordinates(method: string, x: number, z: number): void {
+  if (!isCoordinate(x) || !isCoordinate(z)) throw new ParameterError(method, [x, z], `finite coordinates ${WITHIN_RANGE}`);
 }
 
 /**

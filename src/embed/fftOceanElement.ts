@@ -16,7 +16,7 @@
  *       ("#1a6b80", any CSS colour, or linear "r,g,b"), caustic-power, shading-mode (full,
  *       fresnel, reflection, refraction, caustics, height)               → ocean.setShading
  *   path (auto, gpu, js)                      which simulation path runs
- *   time-scale (default 1)                    simulated seconds per real second
+ *   time-scale (default 1)                    simulated seconds per real second, at most 1000 either way
  *   paused (boolean)                          freezes time; the view still redraws on changes
  *   camera-height (metres, default 8)         height of the viewpoint above the mean sea level
  *   boat (boolean)                            a boat circling ahead of the view, leaving a wake on
@@ -59,7 +59,7 @@ import { Ocean } from '../ocean';
 import { Boat } from '../objects/boat';
 import { SunLight } from '../objects/sunLight';
 import { SimulationClock, wrapLongTime } from '../timing/simulationClock';
-import { formatOptionText, optionKey, parseOptionText, quoteText, type OptionRule } from '../parameters/options';
+import { describeValue, formatOptionText, optionKey, parseOptionText, quoteText, type OptionRule } from '../parameters/options';
 import { DEFAULT_SHADING, DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ShadingOptions, type SunOptions } from '../parameters/sceneOptions';
 import type { PathPreference } from '../layers/oceanSimulation';
 import { CLICKED_STONE, seaPointUnder } from '../render/seaPointer';
@@ -104,7 +104,7 @@ export type FftOceanAttribute = (typeof FFT_OCEAN_ATTRIBUTES)[number];
 export interface ElementSettings {
   /** Which simulation path runs: 'auto', 'gpu' or 'js' (the Ocean's path option). @defaultValue 'auto' */
   path: PathPreference;
-  /** Simulated seconds per real second. @defaultValue 1 */
+  /** Simulated seconds per real second, [-1000, 1000]. @defaultValue 1 */
   timeScale: number;
   /** A boolean attribute: time stands still; the view still redraws on changes. @defaultValue false */
   paused: boolean;
@@ -128,6 +128,13 @@ export const ELEMENT_DEFAULTS: Readonly<ElementSettings> = {
   cameraHeight: 8,
   boat: false,
 };
+
+/**
+ * The fastest time-scale, either way: at 1000 the default sea's 200 s repeat period passes in a
+ * fifth of a second, and frames show unrelated seas. Far beyond it a frame's step overflows to
+ * Infinity (time-scale 1e308), and the time with it.
+ */
+const MAX_TIME_SCALE = 1000;
 
 /** Within this many px of the viewport an element creates its renderer and ocean. */
 const NEAR_MARGIN = 200;
@@ -264,7 +271,7 @@ export class FftOceanElement extends ElementBase {
 
   set time(seconds: number) {
     if (typeof seconds !== 'number' || !Number.isFinite(seconds)) {
-      console.warn(`<fft-ocean>: ignoring time = ${String(seconds)}: it must be a finite number of seconds`);
+      console.warn(`<fft-ocean>: ignoring time = ${describeValue(seconds)}: it must be a finite number of seconds`);
       return;
     }
     this.simulatedTime = seconds;
@@ -339,8 +346,8 @@ export class FftOceanElement extends ElementBase {
       if (ocean && ocean.simulation.pathPreference !== value) ocean.simulation.pathPreference = value;
     } else if (name === 'time-scale') {
       const value = raw === null ? ELEMENT_DEFAULTS.timeScale : parseDecimal(raw);
-      if (!Number.isFinite(value)) {
-        reject('it must be a finite number (simulated seconds per second)', s.timeScale);
+      if (!(Math.abs(value) <= MAX_TIME_SCALE)) {
+        reject(`it must be a number of simulated seconds per second from -${MAX_TIME_SCALE} to ${MAX_TIME_SCALE}`, s.timeScale);
         return;
       }
       s.timeScale = value;
@@ -642,8 +649,11 @@ export class FftOceanElement extends ElementBase {
   private draw(live: Live): void {
     const { renderer, scene, camera, ocean } = live;
     this.needsDraw = false;
-    placeCamera(camera, this.simulatedTime, this.settings.cameraHeight, this.optionSetting('sun', 'sunAzimuth') as number);
-    ocean.update(this.simulatedTime);
+    // The time as a double resolves it (the same sea): a time set far ahead (time = 1e300) would
+    // otherwise put the drifting view out where the surface's coordinates overflow.
+    const t = wrapLongTime(this.simulatedTime, ocean.repeatPeriod);
+    placeCamera(camera, t, this.settings.cameraHeight, this.optionSetting('sun', 'sunAzimuth') as number);
+    ocean.update(t);
     live.boat?.boat.update();
     live.boat?.light.update();
     // The far plane must reach the horizon.

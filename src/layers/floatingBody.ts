@@ -176,7 +176,7 @@ export class FloatingBody {
 
   private checkPosition(method: string): void {
     const { x, y, z } = this.position;
-    if (![x, y, z].every(Number.isFinite)) throw new ParameterError(`${method}: position`, `${x}, ${y}, ${z}`, 'finite x, y, z (m)');
+    if (![x, y, z].every(Number.isFinite)) throw new ParameterError(`${method}: position`, [x, y, z], 'finite x, y, z (m)');
   }
 
   private substep(h: number, water: WaterSurface): void {

@@ -208,7 +208,7 @@ export class LocalWaves implements WaveLayer {
       this.followPath = x;
       return;
     }
-    if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError('follow(x, z)', `${x}, ${z}`, 'finite coordinates in metres, null for the camera, or a path (t) => ({ x, z })');
+    if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError('follow(x, z)', [x, z], 'finite coordinates in metres, null for the camera, or a path (t) => ({ x, z })');
     this.target = [x, z as number];
   }
 
@@ -216,7 +216,7 @@ export class LocalWaves implements WaveLayer {
   private aimAt(t: number): void {
     if (this.followPath === null) return;
     const { x, z } = this.followPath(t);
-    if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError(`the followed path at t = ${t}`, `${x}, ${z}`, 'finite coordinates in metres');
+    if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError(`the followed path at t = ${t}`, [x, z], 'finite coordinates in metres');
     this.target = [x, z];
   }
 
@@ -230,7 +230,7 @@ export class LocalWaves implements WaveLayer {
    * grid is ignored (returns false).
    */
   drop(x: number, z: number, options: DropOptions = {}): boolean {
-    if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError('drop(x, z)', `${x}, ${z}`, 'finite coordinates in metres');
+    if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError('drop(x, z)', [x, z], 'finite coordinates in metres');
     const radius = options.radius ?? 1;
     const depth = options.depth ?? 0.5;
     if (!(radius >= 0.1 && radius <= 20)) throw new ParameterError('drop radius', radius, 'metres from 0.1 to 20');
@@ -468,7 +468,7 @@ function toLayerFields(
 
 function checkPose(pose: PressedPose): PressedPose {
   if (![pose.x, pose.z, pose.heading].every(Number.isFinite)) {
-    throw new ParameterError('hull pose', `${pose.x}, ${pose.z}, ${pose.heading}`, 'finite x, z (m) and heading (radians)');
+    throw new ParameterError('hull pose', [pose.x, pose.z, pose.heading], 'finite x, z (m) and heading (radians)');
   }
   if (!(pose.draft >= 0 && pose.draft <= 20)) throw new ParameterError('hull draft', pose.draft, 'metres from 0 to 20');
   return { x: pose.x, z: pose.z, heading: pose.heading, draft: pose.draft };

@@ -36,6 +36,8 @@ export const between = (low: number, high: number) => (v: unknown) => isNumber(v
 /** Angles in degrees: finite, and small enough that reducing them to a turn keeps their precision. */
 export const finiteAngle = (v: unknown) => isNumber(v) && Number.isFinite(v) && Math.abs(v) <= 1e6;
 export const oneOf = (choices: readonly string[]) => (v: unknown) => typeof v === 'string' && choices.includes(v);
+/** An object whose keys name options: not null, an array or a primitive (whose indices or nothing would be taken for names). */
+export const isOptionsObject = (v: unknown): v is object => typeof v === 'object' && v !== null && !Array.isArray(v);
 /** Linear RGB triples, each channel in [0, max]. */
 export const rgb = (max: number) => (v: unknown) => Array.isArray(v) && v.length === 3 && v.every(between(0, max));
 
@@ -92,7 +94,7 @@ export function quoteText(text: string): string {
  * by their fields without three's `isColor`-style type flags; one level deep and at most 8 items,
  * so that any object (a cyclic one too) gives a short message.
  */
-function describeValue(value: unknown, nested = false): string {
+export function describeValue(value: unknown, nested = false): string {
   if (typeof value === 'string') return quoteText(value);
   if (typeof value === 'function') return 'a function';
   if (typeof value !== 'object' || value === null) return String(value);

@@ -42,9 +42,22 @@ export function colorToLinear(value: unknown): Rgb | undefined {
   // Duck-typed (as three does), so a Color from another copy of three counts too.
   if (typeof value === 'object' && value !== null && (value as { isColor?: unknown }).isColor === true) color.copy(value as Color);
   else if (typeof value === 'number' && Number.isInteger(value) && value >= 0 && value <= 0xffffff) color.setHex(value);
-  else if (typeof value === 'string') color.setStyle(value); // leaves the NaNs when three cannot read it
+  else if (typeof value === 'string' && readsSilently(value)) color.setStyle(value); // leaves the NaNs when three cannot read it
   const { r, g, b } = color.getRGB({} as RGB, LinearSRGBColorSpace);
   return [r, g, b].some(Number.isNaN) ? undefined : [r, g, b];
+}
+
+/**
+ * Whether Color.setStyle takes `style` without a console warning of its own: a colour function of
+ * the models it knows (rgb, rgba, hsl, hsla; one it cannot read leaves the colour as it was), a
+ * hex colour of 3 or 6 digits, or a colour name. For anything else it warns ("Unknown color"),
+ * which would tell a caller, beside the ParameterError that names the option, of no option at all.
+ */
+function readsSilently(style: string): boolean {
+  const model = /^(\w+)\(([^)]*)\)/.exec(style)?.[1];
+  if (model !== undefined) return ['rgb', 'rgba', 'hsl', 'hsla'].includes(model);
+  if (style.startsWith('#')) return /^#([\da-f]{3}|[\da-f]{6})$/i.test(style);
+  return Object.hasOwn(Color.NAMES, style.toLowerCase());
 }
 
 const colorRule = (max: number): OptionRule => ({

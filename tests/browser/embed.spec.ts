@@ -105,6 +105,7 @@ test('attributes apply live; a bad value warns, naming the attribute, and keeps 
     el.setAttribute('sun-elevation', '95');
     el.setAttribute('shading-mode', 'shiny');
     el.setAttribute('time-scale', 'NaN');
+    el.setAttribute('time-scale', '1e308'); // finite, but a frame's step would overflow
     const kept = { ...ocean.parameters, sun: ocean.sky.sunElevation, mode: ocean.shading.shadingMode };
     el.removeAttribute('wind-speed'); // back to the default
     const defaulted = ocean.parameters.windSpeed;
@@ -123,6 +124,7 @@ test('attributes apply live; a bad value warns, naming the attribute, and keeps 
     ['sun-elevation', '95'],
     ['shading-mode', 'shiny'],
     ['time-scale', 'NaN'],
+    ['time-scale', '1e308'],
     ['patch-sizes', '100,20'],
   ]) {
     expect(warnings).toContain(`<fft-ocean>: ignoring ${name}="${value}"`);
@@ -207,6 +209,24 @@ test('paused freezes time and draws only on changes; the time can be set', async
   expect(result.afterChange).toBe(1); // two changes in one task: one frame
   expect(result.timeAfterChange).toBeGreaterThan(42.5);
   expect(result.running).toBeGreaterThan(4);
+});
+
+test('a time set far ahead shows the sea of that time as a double resolves it, seen from within reach', async ({ page }) => {
+  const { errors } = await openPage(page);
+  const result = await page.evaluate(async () => {
+    const el = window.embed.create({ resolution: '64', paused: '' });
+    await window.embed.drawn(el);
+    el.time = 1e300;
+    const far = window.embed.pixels(el); // drawn at once
+    const camera = el.camera!.position.toArray();
+    el.time = 1e300 % el.ocean!.repeatPeriod; // where the sea is the same
+    const near = window.embed.pixels(el);
+    return { far: far.samples, near: near.samples, camera };
+  });
+  // Before: the view drifted 1.5e300 m out, where the surface's coordinates overflow.
+  expect(Math.hypot(result.camera[0], result.camera[2])).toBeLessThan(1e8);
+  expect(result.far).toEqual(result.near);
+  expect(errors).toEqual([]);
 });
 
 test('it draws only while on screen, and time does not jump when it comes back', async ({ page }) => {

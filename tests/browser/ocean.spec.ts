@@ -191,8 +191,10 @@ test('the batch queries (heightsAt, normalsAt, velocitiesAt) on the GPU path equ
   expect(result.messages).toEqual([
     'heightsAt(xz) must be an array of x0, z0, x1, z1, … (an even length); got [1, 2, 3]',
     expect.stringMatching(/^velocitiesAt\(xz, out\) must be an array of at least 3 numbers \(3 per point\); got /),
-    'normalsAt(xz)[1] must be a finite coordinate in metres; got NaN',
-    'velocityAt(x, z) must be finite coordinates; got "Infinity, 0"',
+    'normalsAt(xz)[1] must be a finite coordinate in metres, at most 1e12 in size; got NaN',
+    'velocityAt(x, z) must be finite coordinates in metres, at most 1e12 in size; got [Infinity, 0]',
+    // Finite, but so far away that the query's texel coordinates would overflow (NaN before).
+    'heightAt(x, z) must be finite coordinates in metres, at most 1e12 in size; got [-1.6e+308, 0]',
   ]);
 });
 

@@ -94,11 +94,11 @@ test('a hull on a path: after a jump in time its wake is run up to the time, the
 test('bad input to the local waves raises errors naming it; a drop off the grid is ignored; nothing NaN', async ({ page }) => {
   const { messages, droppedOutside, finite } = await page.evaluate(() => window.harness.localWavesBadInput());
   expect(messages).toEqual([
-    expect.stringMatching(/^drop\(x, z\) must be finite coordinates in metres; got "NaN, 0"$/),
+    expect.stringMatching(/^drop\(x, z\) must be finite coordinates in metres; got \[NaN, 0\]$/),
     expect.stringMatching(/^drop radius must be metres from 0.1 to 20; got 0$/),
     expect.stringMatching(/^drop depth must be metres from 0 to 5; got -1$/),
     expect.stringMatching(/^hull length must be metres from 0.2 to 400; got -1$/),
-    expect.stringMatching(/^hull pose must be finite x, z \(m\) and heading \(radians\); got "0, Infinity, 0"$/),
+    expect.stringMatching(/^hull pose must be finite x, z \(m\) and heading \(radians\); got \[0, Infinity, 0\]$/),
     expect.stringMatching(/^hull draft must be metres from 0 to 20; got -2$/),
     expect.stringMatching(/^follow\(x, z\) must be finite coordinates/),
     expect.stringMatching(/^localWaves.resolution must be a power of two from 16 to 1024; got 100$/),

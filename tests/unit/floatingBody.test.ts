@@ -82,7 +82,7 @@ describe('FloatingBody input', () => {
     body.settle(flat);
     const before = body.position.clone();
     body.position.x = NaN;
-    expect(() => body.step(1 / 60, flat)).toThrow(/FloatingBody.step: position must be finite x, y, z \(m\); got "?NaN, /);
+    expect(() => body.step(1 / 60, flat)).toThrow(/FloatingBody.step: position must be finite x, y, z \(m\); got \[NaN, /);
     body.position.x = before.x;
     expect(() => body.step(NaN, flat)).toThrow(/FloatingBody.step\(dt\) must be a finite time step ≥ 0 \(s\); got NaN/);
     expect(() => body.step(-1, flat)).toThrow(/FloatingBody.step\(dt\)/);

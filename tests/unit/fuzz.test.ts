@@ -6,31 +6,13 @@
  */
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
+import { allFinite, anyText, anyValue } from '../arbitraries';
 import { parseState, simulationParameters, URL_KEYS } from '../../src/app/urlState';
 import { mergeOptions, ParameterError } from '../../src/parameters/options';
 import { DEFAULT_PARAMETERS, SIMULATION_OPTIONS, validateParameters } from '../../src/parameters/parameters';
 import { DEFAULT_SHADING, SHADING_OPTIONS } from '../../src/parameters/sceneOptions';
 
 const RUNS = { seed: 20261124, numRuns: 400 };
-
-/** Numbers as hostile as they come: huge, tiny, negative, NaN, ±Infinity, −0, and ordinary ones. */
-const anyNumber = fc.oneof(fc.double(), fc.constantFrom(NaN, Infinity, -Infinity, -0, 1e308, -1e308, 5e-324, 1e21, 1e39), fc.integer());
-/** Text a URL or an attribute may hold: numbers written oddly, words, lists, nothing, control characters. */
-const anyText = fc.oneof(
-  fc.string(),
-  anyNumber.map(String),
-  fc.array(anyNumber, { maxLength: 5 }).map((values) => values.join(',')),
-  fc.constantFrom('', ' ', 'deep', 'abc', '1e999', '-0', '0x10', '1,2,3', '#1a6b80', 'javascript:alert(1)', '<script>', '%00', '1_000'),
-);
-/** Any value a caller may pass: numbers, text, arrays, objects, null, undefined. */
-const anyValue = fc.oneof(anyNumber, anyText, fc.array(anyNumber, { maxLength: 5 }), fc.constantFrom(null, undefined, true, {}, [] as number[]));
-
-/** Every number in `value` (nested arrays too) is finite. */
-function allFinite(value: unknown): boolean {
-  if (typeof value === 'number') return Number.isFinite(value);
-  if (Array.isArray(value)) return value.every(allFinite);
-  return true;
-}
 
 /** The simulation parameters pass validation, and every number in them is finite. */
 function validSimulation(parameters: object): boolean {

@@ -6,7 +6,7 @@
  * given, shortened.
  */
 import { Color, ColorManagement, type WebGLRenderer } from 'three';
-import { describe, expect, it } from 'vitest';
+import { describe, expect, it, vi } from 'vitest';
 import { Ocean } from '../../src/ocean';
 import { mergeOptions, nearestName, ParameterError, parseOptionText, quoteText } from '../../src/parameters/options';
 import { validateParameters } from '../../src/parameters/parameters';
@@ -55,6 +55,14 @@ describe('unknown option names', () => {
     expect(error.message).toContain('did you mean windSpeed?');
     expect(errorOf(() => new Ocean({} as WebGLRenderer, { scatterColur: 0 } as never)).message).toContain('did you mean scatterColor?');
   });
+
+  it('the Ocean constructor rejects options that are not an object of them, naming them (before: a TypeError, or a string\'s indices taken for names)', () => {
+    for (const options of [null, 'windSpeed', [12], 12]) {
+      const error = errorOf(() => new Ocean({} as WebGLRenderer, options as never));
+      expect(error.parameter).toBe('options');
+      expect(error.message.startsWith('options must be an object of options, such as { windSpeed: 12 }; got ')).toBe(true);
+    }
+  });
 });
 
 describe('the British spellings are aliases', () => {
@@ -96,10 +104,17 @@ describe('colours', () => {
     expect(colorToLinear([0.0, 0.035, 0.06])).toEqual([0.0, 0.035, 0.06]);
   });
 
-  it('is undefined for anything that is not a colour', () => {
-    for (const bad of ['#12345', 'tealish', '', 'rgb(1, 2)', 0x1000000, -1, 1.5, NaN, {}, [1, 2], [1, 2, 3, 4], null, undefined, true]) {
-      expect(colorToLinear(bad), String(bad)).toBeUndefined();
+  it('is undefined for anything that is not a colour, and three.js warns of none (the ParameterError names the option)', () => {
+    const warn = vi.spyOn(console, 'warn').mockImplementation(() => {});
+    try {
+      for (const bad of ['#12345', '#zz', 'tealish', ' red', '!', '', 'rgb(1, 2)', 'RGB(1, 2, 3)', 'colour(1)', 0x1000000, -1, 1.5, NaN, {}, [1, 2], [1, 2, 3, 4], null, undefined, true]) {
+        expect(colorToLinear(bad), String(bad)).toBeUndefined();
+      }
+      expect(warn.mock.calls).toEqual([]);
+    } finally {
+      warn.mockRestore();
     }
+    expect(colorToLinear('TEAL')).toEqual(colorToLinear('teal'));
   });
 
   it('every form is accepted by the shading options and stored as linear RGB', () => {

@@ -232,6 +232,7 @@ const harness = {
       () => oceans[1].velocitiesAt([1, 2], new Float32Array(2)),
       () => oceans[1].normalsAt([1, NaN], new Float32Array(3)),
       () => oceans[1].velocityAt(Infinity, 0),
+      () => oceans[1].heightAt(-1.6e308, 0),
     ]) {
       try {
         attempt();
