@@ -11,6 +11,24 @@ const root = import.meta.dirname;
 const lilGuiCss = resolve(dirname(createRequire(import.meta.url).resolve('lil-gui')), 'lil-gui.css');
 
 /**
+ * Another three.js release for the dev server: THREE_FFT_OCEAN_THREE names its package folder
+ * (…/node_modules/three), and `three` and `three/addons/…` (the only forms the pages import)
+ * resolve there instead of to the devDependency. scripts/test-three-range.mjs runs browser tests
+ * against the oldest supported release this way. Its pre-bundled copy is cached apart, so
+ * switching releases never serves a stale bundle.
+ */
+const otherThree = process.env.THREE_FFT_OCEAN_THREE ? resolve(process.env.THREE_FFT_OCEAN_THREE) : null;
+const otherThreeOptions = otherThree
+  ? {
+      cacheDir: resolve(otherThree, '../.vite'),
+      alias: [
+        { find: /^three$/, replacement: resolve(otherThree, 'build/three.module.js') },
+        { find: /^three\/addons\//, replacement: `${resolve(otherThree, 'examples/jsm')}/` },
+      ],
+    }
+  : { cacheDir: undefined, alias: [] };
+
+/**
  * lil-gui's stylesheet without its icon font. The font is a data: URL, which a strict CSP refuses
  * (font-src falls back to default-src 'self'), and Chromium loads a data: font as soon as it
  * parses the rule, used or not. Its icons (↕ ▾ ▸ ✓) are ordinary characters, drawn here in
@@ -72,6 +90,7 @@ function workerWithoutSourceMap(): Plugin {
  *   `tsc -p tsconfig.build.json` into dist/lib/types.
  */
 export default defineConfig(({ mode }) => ({
+  cacheDir: otherThreeOptions.cacheDir,
   server: { port: 5173, strictPort: true, host: '127.0.0.1' },
   preview: { port: 4173, strictPort: true, host: '127.0.0.1' },
   worker: { format: 'es' },
@@ -103,7 +122,7 @@ export default defineConfig(({ mode }) => ({
         },
       }
     : {
-        resolve: { alias: { 'lil-gui/dist/lil-gui.css': lilGuiCss } },
+        resolve: { alias: [...otherThreeOptions.alias, { find: 'lil-gui/dist/lil-gui.css', replacement: lilGuiCss }] },
         plugins: [lilGuiWithoutIconFont()],
         build: {
           target: 'es2022',

@@ -18,6 +18,7 @@ import { SkyBackground } from './render/skyBackground';
 import { SkyEnvironment, sunAnglesFromDirection, type SunAngles, type SunDirection } from './render/skyEnvironment';
 import { OceanSimulation, type PathPreference, type SimulationOptions, type SimulationPath } from './layers/oceanSimulation';
 import type { LocalWaves } from './layers/localWaves';
+import { checkThreeRelease } from './fft/threeInternals';
 import { heightAt, normalAt, velocityAt } from './layers/surfaceQuery';
 import { DisposedError, isOptionsObject, optionAliases, unknownOption } from './parameters/options';
 import { ParameterError, SIMULATION_OPTIONS, type SimulationParameters } from './parameters/parameters';
@@ -112,6 +113,7 @@ export class Ocean extends Object3D<OceanEventMap> {
     options: OceanOptions = {},
   ) {
     super();
+    checkThreeRelease();
     this.name = 'Ocean';
     if (!isOptionsObject(options)) throw new ParameterError('options', options, 'an object of options, such as { windSpeed: 12 }');
     for (const [key, value] of Object.entries(options)) {

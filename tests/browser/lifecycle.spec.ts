@@ -1,6 +1,7 @@
 import { expect, test, type Page } from '@playwright/test';
 import type { WebGLRenderer } from 'three';
 import type { FftOceanElement } from '../../src/embed/fftOceanElement';
+import { ALSO_ON_OLDEST_THREE } from './threeRange';
 
 declare global {
   interface Window {
@@ -149,7 +150,7 @@ test('removing <fft-ocean> frees its renderer, context, canvas and listeners; pu
   expect(errors).toEqual([]);
 });
 
-test('after a lost and restored WebGL context the same scene is drawn again at the same time', async ({ page }) => {
+test('after a lost and restored WebGL context the same scene is drawn again at the same time', ALSO_ON_OLDEST_THREE, async ({ page }) => {
   const errors = await openPage(page);
   const result = await page.evaluate(async () => {
     const el = window.embed.create({ resolution: '64', paused: '' });

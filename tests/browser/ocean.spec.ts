@@ -1,4 +1,5 @@
 import { expect, test, type Page } from '@playwright/test';
+import { ALSO_ON_OLDEST_THREE } from './threeRange';
 
 async function openOcean(page: Page, width = 640, height = 360): Promise<void> {
   const errors: string[] = [];
@@ -18,7 +19,7 @@ test.describe('horizon geometry, read back from the real vertex shader', () => {
     ['2 m up, 10 000 km from the origin', [1e7 + 917.3, 2, 1e7 - 561.8], [1e7 + 1000, 0, 1e7 - 700]],
   ];
   for (const [name, position, target] of cameras) {
-    test(`each vertex is its rest point plus (Dx, h, Dz) of the simulation there, ${name}`, async ({ page }) => {
+    test(`each vertex is its rest point plus (Dx, h, Dz) of the simulation there, ${name}`, name === '2 m up' ? ALSO_ON_OLDEST_THREE : {}, async ({ page }) => {
       await openOcean(page);
       const results = await page.evaluate(
         ([position, target]) => {
@@ -74,7 +75,7 @@ test.describe('horizon geometry, read back from the real vertex shader', () => {
 });
 
 test.describe('shading', () => {
-  test('a flat sea under a uniform white sky reflects exactly the Fresnel reflectance', async ({ page }) => {
+  test('a flat sea under a uniform white sky reflects exactly the Fresnel reflectance', ALSO_ON_OLDEST_THREE, async ({ page }) => {
     await openOcean(page);
     // Pixels down the middle column, from near the horizon to straight below a tilted camera.
     const pixels: [number, number][] = [0, 10, 20, 30, 45, 60, 90, 130, 180, 240, 300, 359].map((y) => [320, y]);
@@ -198,7 +199,7 @@ test('the batch queries (heightsAt, normalsAt, velocitiesAt) on the GPU path equ
   ]);
 });
 
-test('the sea honours scene.fog (Fog and FogExp2) as three\'s materials do: far water takes the fog colour, near water hardly', async ({ page }) => {
+test('the sea honours scene.fog (Fog and FogExp2) as three\'s materials do: far water takes the fog colour, near water hardly', ALSO_ON_OLDEST_THREE, async ({ page }) => {
   await openOcean(page);
   const { near, far } = await page.evaluate(() => window.ocean.fogCheck());
   const [clearNear, clearFar] = [near[0], far[0]];
@@ -214,7 +215,7 @@ test('the sea honours scene.fog (Fog and FogExp2) as three\'s materials do: far 
   expect(clearFar[1]).toBeGreaterThan(60); // without fog the far sea is not magenta
 });
 
-test('with a plain, a logarithmic or a reversed depth buffer the sea hides the submerged half of a floating box', async ({ page }) => {
+test('with a plain, a logarithmic or a reversed depth buffer the sea hides the submerged half of a floating box', ALSO_ON_OLDEST_THREE, async ({ page }) => {
   await openOcean(page);
   const modes = await page.evaluate(() => window.ocean.depthBufferCheck());
   for (const { mode, inForce, above, below } of modes) {

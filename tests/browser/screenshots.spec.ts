@@ -1,4 +1,5 @@
 import { expect, test } from '@playwright/test';
+import { ALSO_ON_OLDEST_THREE } from './threeRange';
 
 // Deterministic pictures: fixed seed and time from the URL, compared with committed baselines
 // (tests/browser/screenshots.spec.ts-snapshots/, each looked at before it was committed). The
@@ -21,14 +22,14 @@ for (const [width, height] of [
   [400, 225],
 ]) {
   for (const view of ['default', 'horizon', 'high']) {
-    test(`${view} view at ${width}x${height}`, async ({ page }) => {
+    test(`${view} view at ${width}x${height}`, width === 400 ? ALSO_ON_OLDEST_THREE : {}, async ({ page }) => {
       await shot(page, `view=${view}`, width, height);
       await expect(page.locator('canvas')).toHaveScreenshot(`${view}-${width}x${height}.png`, TOLERANCE);
     });
   }
 }
 
-test('under water at 400x225', async ({ page }) => {
+test('under water at 400x225', ALSO_ON_OLDEST_THREE, async ({ page }) => {
   await shot(page, 'view=underwater', 400, 225);
   await expect(page.locator('canvas')).toHaveScreenshot('underwater-400x225.png', TOLERANCE);
 });

@@ -1,6 +1,9 @@
+import { readFileSync } from 'node:fs';
+import { resolve } from 'node:path';
 import { expect, test } from '@playwright/test';
 import { validateParameters } from '../../src/parameters/parameters';
 import { createCascadeSpectra } from '../../src/spectrum/initialSpectrum';
+import { ALSO_ON_OLDEST_THREE } from './threeRange';
 
 test.beforeEach(async ({ page }) => {
   const errors: string[] = [];
@@ -10,12 +13,19 @@ test.beforeEach(async ({ page }) => {
   expect(errors).toEqual([]);
 });
 
+test('the page runs the three.js release the dev server was given (THREE_FFT_OCEAN_THREE, else the devDependency)', ALSO_ON_OLDEST_THREE, async ({ page }) => {
+  // So a run against another release cannot pass on a server or a cached bundle of the devDependency.
+  const servedThree = process.env.THREE_FFT_OCEAN_THREE ?? resolve(import.meta.dirname, '../../node_modules/three');
+  const { version } = JSON.parse(readFileSync(resolve(servedThree, 'package.json'), 'utf8')) as { version: string };
+  expect(await page.evaluate(() => window.harness.threeRevision)).toBe(version.split('.')[1]);
+});
+
 test('the context offers float32 render targets (SwiftShader WebGL2)', async ({ page }) => {
   expect(await page.evaluate(() => window.harness.supportedPrecision())).toBe('float32');
 });
 
 for (const resolution of [16, 32, 64, 256, 512]) {
-  test(`GPU fields equal JS fields at N = ${resolution} (RGBA32F, two times)`, async ({ page }) => {
+  test(`GPU fields equal JS fields at N = ${resolution} (RGBA32F, two times)`, resolution === 256 ? ALSO_ON_OLDEST_THREE : {}, async ({ page }) => {
     const { results, passCount } = await page.evaluate(
       (n) => window.harness.compareGpuWithJs({ resolution: n, seed: 7, windSpeed: 14 }, [3.25, 117.5]),
       resolution,
@@ -34,7 +44,7 @@ for (const resolution of [16, 32, 64, 256, 512]) {
   });
 }
 
-test('GPU fields in half floats (RGBA16F) follow the JS fields within half-float precision', async ({ page }) => {
+test('GPU fields in half floats (RGBA16F) follow the JS fields within half-float precision', ALSO_ON_OLDEST_THREE, async ({ page }) => {
   const { results } = await page.evaluate(() => window.harness.compareGpuWithJs({ resolution: 256, seed: 7 }, [3.25], 'float16'));
   for (const channel of [...results[0].displacement, ...results[0].derivatives]) {
     // Half floats keep 11 significant bits (relative step 4.9e-4) through 9 passes; the field that
@@ -58,7 +68,7 @@ for (const [name, changes] of [
   });
 }
 
-test('the whitecap foam on the GPU equals the JS foam, through a warm-up and frame steps', async ({ page }) => {
+test('the whitecap foam on the GPU equals the JS foam, through a warm-up and frame steps', ALSO_ON_OLDEST_THREE, async ({ page }) => {
   // 20 m/s at N = 128: coverage of a few per cent. The first time is a jump (warm-up from nothing
   // over 3τ, twelve FFT updates), the next three are frame steps, the last a jump back in time.
   const results = await page.evaluate(() =>
@@ -72,7 +82,7 @@ test('the whitecap foam on the GPU equals the JS foam, through a warm-up and fra
   }
 });
 
-test('the local waves on the GPU equal the JS solver, through a stone, a turning hull and a moving grid', async ({ page }) => {
+test('the local waves on the GPU equal the JS solver, through a stone, a turning hull and a moving grid', ALSO_ON_OLDEST_THREE, async ({ page }) => {
   const results = await page.evaluate(() => window.harness.compareLocalWavesGpuWithJs(12));
   for (const { maxHeight, heightError, slopeError } of results) {
     expect(maxHeight).toBeGreaterThan(0.01);
@@ -142,7 +152,7 @@ test('a shader-only parameter (choppiness) rebuilds nothing; a spectrum paramete
   expect(result).toEqual({ choppiness: true, windSpeed: false, choppinessApplied: 2.5 });
 });
 
-test('every GPU resource a simulation makes is freed by dispose (memory back to its baseline)', async ({ page }) => {
+test('every GPU resource a simulation makes is freed by dispose (memory back to its baseline)', ALSO_ON_OLDEST_THREE, async ({ page }) => {
   const { before, during, after } = await page.evaluate(() => window.harness.memoryAfterCycles(12));
   // The GPU path's framebuffers (three.js's and the FFT's own layered ones) exist while it runs…
   expect(during).toBeGreaterThan((before as { framebuffers: number }).framebuffers + 4);

@@ -1,5 +1,6 @@
 import { expect, test, type Page } from '@playwright/test';
 import type { Vec3, ViewOptions, ViewSummary } from './pages/sky';
+import { ALSO_ON_OLDEST_THREE } from './threeRange';
 
 test.beforeEach(async ({ page }) => {
   const errors: string[] = [];
@@ -51,7 +52,7 @@ async function expectCubeMatchesAnalyticSky(page: Page, directions: Vec3[]): Pro
   }
 }
 
-test('the generated sky: not black, the sun where sunDirection points, deep water straight down', async ({ page }) => {
+test('the generated sky: not black, the sun where sunDirection points, deep water straight down', ALSO_ON_OLDEST_THREE, async ({ page }) => {
   await page.evaluate(() => window.skyHarness.create());
   const sun = await page.evaluate(() => window.skyHarness.sunDirection());
   expect(sun).toEqual((await page.evaluate(() => window.skyHarness.directionFromAngles(30, 40))).map((v) => expect.closeTo(v, 6)));
@@ -73,7 +74,7 @@ test('the generated sky: not black, the sun where sunDirection points, deep wate
   expect(luminance(brightest.value)).toBeLessThan(5); // the old position is just sky now
 });
 
-test('the 8-bit RGBM cube, seen through SkyBackground and environmentLookup.glsl, holds the analytic sky', async ({ page }) => {
+test('the 8-bit RGBM cube, seen through SkyBackground and environmentLookup.glsl, holds the analytic sky', ALSO_ON_OLDEST_THREE, async ({ page }) => {
   await page.evaluate(() => window.skyHarness.create());
   const sun = await page.evaluate(() => window.skyHarness.sunDirection());
   await expectCubeMatchesAnalyticSky(page, [sun, [1, 0.1, 0], [-0.3, 0.02, -1], [0, 1, 0], [0.2, -1, 0.1]]);

@@ -3,7 +3,7 @@
  * JS path beside it, and hands the Playwright tests summaries (errors relative to RMS) rather than
  * whole fields.
  */
-import { WebGLRenderer, type DataTexture, type WebGLRenderTarget } from 'three';
+import { REVISION, WebGLRenderer, type DataTexture, type WebGLRenderTarget } from 'three';
 import { CpuWaveFields } from '../../../src/fft/cpuWaveFields';
 import { GpuWaveFields, supportedGpuPrecision, type GpuPrecision } from '../../../src/fft/gpuWaveFields';
 import { LocalWaves } from '../../../src/layers/localWaves';
@@ -76,6 +76,9 @@ function compareChannels(gpu: Float32Array, js: Float32Array): ChannelComparison
 }
 
 const harness = {
+  /** The three.js release this page runs (threeRelease.spec.ts). */
+  threeRevision: REVISION,
+
   supportedPrecision: () => supportedGpuPrecision(renderer),
 
   /** GPU fields against JS fields for the given parameters at each time. */
