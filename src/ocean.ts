@@ -107,6 +107,7 @@ export class Ocean extends Object3D<OceanEventMap> {
   private disposed = false;
   private rms: { spectra: readonly InitialSpectrum[]; value: number } | null = null;
   private summary: { parameters: Readonly<SimulationParameters>; value: SeaStateSummary } | null = null;
+  private period: { parameters: Readonly<SimulationParameters>; value: number } | null = null;
 
   constructor(
     private readonly renderer: WebGLRenderer,
@@ -227,7 +228,10 @@ export class Ocean extends Object3D<OceanEventMap> {
    */
   get repeatPeriod(): number {
     this.checkAlive('repeatPeriod');
-    return seaRepeatPeriod(this.simulation.parameters);
+    // Asked every frame by the render loops: computed once per set of parameters.
+    const parameters = this.simulation.parameters;
+    if (this.period?.parameters !== parameters) this.period = { parameters, value: seaRepeatPeriod(parameters) };
+    return this.period.value;
   }
 
   /**

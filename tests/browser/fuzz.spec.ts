@@ -1,4 +1,5 @@
-import { expect, test, type Page } from '@playwright/test';
+import { openRobustnessPage as openPage } from './robustnessPage';
+import { expect, test } from '@playwright/test';
 
 // Hostile input, generated in the page (fast-check; tests/browser/pages/robustness.ts) against the
 // real Ocean and <fft-ocean> in WebGL2: every call either works or is refused with a ParameterError
@@ -9,17 +10,6 @@ import { expect, test, type Page } from '@playwright/test';
 
 const SEED = 20261124;
 
-/** Opens the test page; returns the page errors and console errors it collects from then on. */
-async function openPage(page: Page): Promise<string[]> {
-  const problems: string[] = [];
-  page.on('pageerror', (error) => problems.push(`page error: ${error.message}`));
-  page.on('console', (message) => {
-    if (message.type() === 'error') problems.push(`console error: ${message.text()}`);
-  });
-  await page.goto('/tests/browser/pages/robustness.html');
-  await expect(page).toHaveTitle('ready');
-  return problems;
-}
 
 /** Per kind of call: made, and refused (a ParameterError or a warning). */
 type Tally = Record<string, { calls: number; refused: number }>;

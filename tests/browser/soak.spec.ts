@@ -1,4 +1,5 @@
 import { expect, test } from '@playwright/test';
+import { openRobustnessPage } from './robustnessPage';
 
 // A long run (tests/browser/pages/robustness.ts, soak): 10 000 frames of an Ocean with a setting
 // changed every 100 frames, and what the page holds (three.js's geometries, textures and programs,
@@ -8,13 +9,7 @@ import { expect, test } from '@playwright/test';
 
 test('soak: 10 000 frames, a setting changed every 100; memory, programs, framebuffers and workers stay flat', async ({ page }) => {
   test.setTimeout(240_000);
-  const problems: string[] = [];
-  page.on('pageerror', (error) => problems.push(`page error: ${error.message}`));
-  page.on('console', (message) => {
-    if (message.type() === 'error') problems.push(`console error: ${message.text()}`);
-  });
-  await page.goto('/tests/browser/pages/robustness.html');
-  await expect(page).toHaveTitle('ready');
+  const problems = await openRobustnessPage(page);
   const report = await page.evaluate(() => window.robustness.soak(10_000, 100, 10));
   const holdings = ({ frame, ...held }: { frame: number }) => `frame ${frame}: ${JSON.stringify(held)}`;
   console.log(
