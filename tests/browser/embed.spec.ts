@@ -494,7 +494,8 @@ test('a frame that fails to draw: the box says so and the page gets fft-ocean-er
     const el = document.createElement('fft-ocean');
     el.addEventListener('fft-ocean-error', (e) => events.push((e as CustomEvent).detail.message));
     document.querySelector('#box')!.append(el);
-    await window.embed.frames(2);
+    // The element makes its ocean once it is seen near the screen (an observer's callback), so wait for drawn frames.
+    await window.embed.drawn(el, 2);
     // A fault nothing can recover from inside a frame (here: the ocean's update throws).
     el.ocean!.update = () => {
       throw new Error('a failure inside the frame');
