@@ -2,14 +2,12 @@
  * The JS path's output as textures in the layout of waveFieldLayout.ts, so the surface material
  * samples the same thing whichever path runs. The fields are computed either right here
  * (`worker: false`: the result is in the textures as soon as update() returns) or in a Web Worker
- * (the page stays responsive; the textures show the latest finished time, usually one frame
- * behind). Owns its two DataTextures and the worker.
+ * (fieldWorker.ts: the page stays responsive; the textures show the latest finished fields,
+ * asked for the time of the frame they arrive for). Owns its two DataTextures and the worker. The fields shown are also what the
+ * queries read (forQueries): with the worker, once the queries ask, it computes the velocities too.
  *
- * A worker can fail: an exception in it, a script that cannot load, one terminated from outside
- * (it then just never answers), or workers blocked altogether (a Content-Security-Policy without
- * worker-src). A failed worker is replaced by a new one; a worker that cannot be made, or that
- * fails before its first answer, or the WORKER_REPLACEMENTS-th failure, moves the computation onto
- * the main thread for good. `workerFault` then says why (OceanSimulation reports it as its path).
+ * When the worker is given up (fieldWorker.ts says when), the computation moves onto the main
+ * thread for good, and `workerFault` says why (OceanSimulation reports it as its path).
  */
 import {
   DataTexture,
@@ -23,29 +21,23 @@ import {
 } from 'three';
 import { CpuWaveFields } from './cpuWaveFields';
 import type { InitialSpectrum } from '../spectrum/initialSpectrum';
+import type { LayerQueryFields } from '../layers/waveLayer';
 import { FIELD_TEXTURES } from './waveFieldLayout';
-import type { WorkerReply, WorkerRequest } from './waveFieldWorker';
-
-/** A worker that has not answered a request after this long (ms) counts as dead. */
-const WORKER_TIMEOUT_MS = 4000;
-/** Failed workers replaced before the main thread takes over. */
-const WORKER_REPLACEMENTS = 3;
+import { FieldWorker, type FieldArrays } from './fieldWorker';
 
 export class CpuFieldTextures {
   readonly displacement: DataTexture;
   readonly derivatives: DataTexture;
+  /** The main thread's computation (no worker, or the worker given up), or null. */
   private fields: CpuWaveFields | null = null;
-  private worker: Worker | null = null;
-  /** When the request in flight was sent (performance.now()), or null when none is. */
-  private sentAt: number | null = null;
-  /** Whether the current worker has answered yet (one that never did is taken to be blocked). */
-  private answered = false;
-  private replacements = 0;
+  private worker: FieldWorker | null = null;
   private fault: string | null = null;
   /** Whether the mipmap levels are computed in JS (float textures that filter but cannot be rendered to). */
   private readonly levelsInJs: boolean;
-  /** Arrays to send to the worker for its next result (they travel back and forth, never reallocated). */
-  private spare: { displacement: Float32Array; derivatives: Float32Array } | null;
+  /** The fields shown, for the queries (null before the first), and whether their velocities are at hand. */
+  private shown: { forQueries: LayerQueryFields; hasVelocities: boolean } | null = null;
+  /** Set by the first query: from then on the worker computes the velocities as well. */
+  private velocitiesWanted = false;
 
   constructor(
     renderer: WebGLRenderer,
@@ -66,8 +58,9 @@ export class CpuFieldTextures {
     );
     this.displacement = displacement;
     this.derivatives = derivatives;
-    this.spare = null;
-    if (useWorker) this.startWorker();
+    if (useWorker) {
+      this.worker = new FieldWorker(spectrum, 'JS worker', (reply) => this.receive(reply.t, reply), (fault) => this.runOnMainThread(fault));
+    }
   }
 
   /**
@@ -78,80 +71,48 @@ export class CpuFieldTextures {
     return this.fault;
   }
 
-  update(t: number): void {
+  /** The fields at time t (s), `step` s after the last update (the worker's fields are asked ahead by it, fieldWorker.ts). */
+  update(t: number, step: number): void {
     if (this.fields) {
       this.fields.update(t);
+      this.shown = { forQueries: this.fields.forQueries(t), hasVelocities: true };
       this.markUpdated();
       return;
     }
-    if (this.sentAt !== null) {
-      // Drop frames while the worker is busy; one silent for too long has died.
-      if (performance.now() - this.sentAt > WORKER_TIMEOUT_MS) this.workerFailed(`it did not answer in ${WORKER_TIMEOUT_MS / 1000} s`);
-      return;
-    }
-    const { displacement, derivatives } = this.spare!;
-    const request: WorkerRequest = { type: 'update', t, displacement, derivatives };
-    this.worker!.postMessage(request, [displacement.buffer, derivatives.buffer]);
-    this.spare = null;
-    this.sentAt = performance.now();
+    // Frames are dropped while the worker is busy.
+    this.worker!.request(t, step, this.velocitiesWanted);
   }
 
-  /** A new worker, given the spectrum and new arrays (a dead worker keeps the ones it was sent). */
-  private startWorker(): void {
-    const n = this.spectrum.resolution;
-    this.spare = { displacement: new Float32Array(4 * n * n), derivatives: new Float32Array(4 * n * n) };
-    this.sentAt = null;
-    this.answered = false;
-    let worker: Worker;
-    try {
-      worker = new Worker(new URL('./waveFieldWorker.ts', import.meta.url), { type: 'module' });
-    } catch (error) {
-      this.runOnMainThread(`workers are blocked here (${error instanceof Error ? error.message : String(error)})`);
-      return;
-    }
-    worker.onmessage = (event: MessageEvent<WorkerReply>) => this.receive(event.data);
-    worker.onerror = (event) => {
-      event.preventDefault(); // handled here, not an uncaught error of the page
-      this.workerFailed(event.message || 'its script failed to load');
-    };
-    worker.onmessageerror = () => this.workerFailed('a message could not be read');
-    const request: WorkerRequest = { type: 'spectrum', spectrum: this.spectrum };
-    worker.postMessage(request);
-    this.worker = worker;
-  }
-
-  private workerFailed(why: string): void {
-    this.worker?.terminate();
-    this.worker = null;
-    if (!this.answered) {
-      this.runOnMainThread(`the JS worker failed before its first answer: ${why}`);
-    } else if (++this.replacements > WORKER_REPLACEMENTS) {
-      this.runOnMainThread(`the JS worker failed ${this.replacements} times, last: ${why}`);
-    } else {
-      console.warn(`three-fft-ocean: the JS worker failed (${why}); replaced by a new one.`);
-      this.startWorker();
-    }
+  /**
+   * The fields the textures show, for the queries, or null when there are none yet (or, from the
+   * worker, none with velocities yet: the next ones will have them). On the main thread their
+   * velocities are computed when first asked.
+   */
+  forQueries(): LayerQueryFields | null {
+    this.velocitiesWanted = true;
+    return this.shown?.hasVelocities ? this.shown.forQueries : null;
   }
 
   /** From now on the fields are computed here, in the arrays the textures show. */
   private runOnMainThread(fault: string): void {
     this.fault = fault;
     console.warn(`three-fft-ocean: ${fault}; the JS path runs on the main thread.`);
+    this.worker = null;
     this.fields = new CpuWaveFields(this.spectrum);
     this.displacement.image.data = this.fields.displacement;
     this.derivatives.image.data = this.fields.derivatives;
-    this.spare = null;
-    this.sentAt = null;
+    this.shown = null;
   }
 
-  private receive(reply: WorkerReply): void {
-    this.sentAt = null;
-    this.answered = true;
-    // Swap: the finished arrays go into the textures, the ones they held go back out next time.
-    this.spare = this.shownFields;
-    this.displacement.image.data = reply.displacement;
-    this.derivatives.image.data = reply.derivatives;
+  /** Shows the worker's finished fields; returns the arrays they replace, for its next request. */
+  private receive(t: number, arrays: FieldArrays): FieldArrays {
+    const previous = { ...this.shownFields, velocities: this.shown?.hasVelocities ? this.shown.forQueries.velocities() : null };
+    this.displacement.image.data = arrays.displacement;
+    this.derivatives.image.data = arrays.derivatives;
+    const { displacement, derivatives, velocities } = arrays;
+    this.shown = { forQueries: { time: t, displacement, derivatives, velocities: () => velocities! }, hasVelocities: velocities !== null };
     this.markUpdated();
+    return previous;
   }
 
   /** The arrays the textures show (the latest finished time). */
@@ -167,7 +128,7 @@ export class CpuFieldTextures {
   }
 
   dispose(): void {
-    this.worker?.terminate();
+    this.worker?.dispose();
     this.displacement.dispose();
     this.derivatives.dispose();
   }

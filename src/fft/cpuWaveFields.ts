@@ -17,6 +17,7 @@
 import { fillPhaseTable, PHASE_TABLE_SIZE } from '../spectrum/dispersion';
 import { BatchedInverseFft2D } from './fft';
 import type { InitialSpectrum } from '../spectrum/initialSpectrum';
+import type { LayerQueryFields } from '../layers/waveLayer';
 
 const PACKED_SPECTRA = 4;
 /**
@@ -94,6 +95,15 @@ export class CpuWaveFields {
     fillPhaseTable(this.phaseTable, t, this.repeatPeriod);
     this.evolve(this.fft, false);
     this.fft.runToTexels(this.textures);
+  }
+
+  /**
+   * The fields last computed, which are for time t (s), as the queries read them; their velocities
+   * are computed on the first call, then kept. Valid until the next update.
+   */
+  forQueries(t: number): LayerQueryFields {
+    let velocities: Float32Array | null = null;
+    return { time: t, displacement: this.displacement, derivatives: this.derivatives, velocities: () => (velocities ??= this.updateVelocities(t)) };
   }
 
   /**

@@ -1,18 +1,22 @@
 /**
- * Web Worker that runs the JS simulation path off the main thread (used by CpuFieldTextures).
+ * Web Worker that computes one cascade's JS fields off the main thread (driven by fieldWorker.ts):
+ * the fields at the time asked, and with `velocities` their time derivative too (for the queries).
  * The result arrays are transferred both ways, so a frame allocates nothing.
  */
 import { CpuWaveFields } from './cpuWaveFields';
 import type { InitialSpectrum } from '../spectrum/initialSpectrum';
 
-export type WorkerRequest =
-  | { type: 'spectrum'; spectrum: InitialSpectrum }
-  | { type: 'update'; t: number; displacement: Float32Array; derivatives: Float32Array };
-
-export interface WorkerReply {
-  t: number;
+/** A set of field arrays in the layout of waveFieldLayout.ts; `velocities` as CpuWaveFields.updateVelocities, or null. */
+export interface FieldArrays {
   displacement: Float32Array;
   derivatives: Float32Array;
+  velocities: Float32Array | null;
+}
+
+export type WorkerRequest = { type: 'spectrum'; spectrum: InitialSpectrum } | ({ type: 'update'; t: number } & FieldArrays);
+
+export interface WorkerReply extends FieldArrays {
+  t: number;
 }
 
 let fields: CpuWaveFields | null = null;
@@ -27,6 +31,8 @@ self.onmessage = (event: MessageEvent<WorkerRequest>) => {
   fields.update(request.t);
   request.displacement.set(fields.displacement);
   request.derivatives.set(fields.derivatives);
-  const reply: WorkerReply = { t: request.t, displacement: request.displacement, derivatives: request.derivatives };
-  (self as unknown as Worker).postMessage(reply, [reply.displacement.buffer, reply.derivatives.buffer]);
+  request.velocities?.set(fields.updateVelocities(request.t));
+  const { t, displacement, derivatives, velocities } = request;
+  const reply: WorkerReply = { t, displacement, derivatives, velocities };
+  (self as unknown as Worker).postMessage(reply, [displacement.buffer, derivatives.buffer, ...(velocities ? [velocities.buffer] : [])]);
 };

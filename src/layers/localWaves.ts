@@ -23,7 +23,7 @@ import { ParameterError } from '../parameters/options';
 import { GpuLocalWaves } from './gpuLocalWaves';
 import { CpuLocalWaves, MAX_IMPULSES_PER_STEP, type HeightImpulse, type LocalWaveGrid } from './localWaveModel';
 import { heightAt } from './surfaceQuery';
-import type { LayerFieldsOnCpu, LayerFrame, WaveLayer } from './waveLayer';
+import type { LayerFieldsOnCpu, LayerFrame, LayerQueryFields, WaveLayer } from './waveLayer';
 
 /** The longest step taken as a step; a longer dt (a hidden tab, a jump) clears the waves. */
 const MAX_STEP = 2;
@@ -365,6 +365,15 @@ export class LocalWaves implements WaveLayer {
       toLayerFields(this.cpuFields, state, state.subarray(2), state.subarray(3), 4);
     }
     return this.cpuFields;
+  }
+
+  /**
+   * The fields fieldsOnCpu gives, for the queries at time t: the local waves carry no time of their
+   * own (a history), so they are for the time asked and never carried forward.
+   */
+  queryFields(t: number): LayerQueryFields {
+    const { displacement, derivatives } = this.fieldsOnCpu(t);
+    return { time: t, displacement, derivatives, velocities: () => this.velocitiesOnCpu(t) };
   }
 
   /**

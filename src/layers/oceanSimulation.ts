@@ -35,7 +35,10 @@ export type PathPreference = 'auto' | 'gpu' | 'js';
 export interface SimulationOptions {
   /** 'auto': GPU when float render targets exist (RGBA32F, else RGBA16F), else JS. @defaultValue 'auto' */
   path?: PathPreference;
-  /** Run the JS path in a Web Worker so the page stays responsive. @defaultValue true where Worker exists */
+  /**
+   * Compute on the CPU in Web Workers, so the page stays responsive: the JS path's fields, and on
+   * the GPU path the copy of the fields that heightAt and the other queries read. @defaultValue true where Worker exists
+   */
   worker?: boolean;
   /**
    * Local waves from stones, hulls and floating bodies (localWaves.ts): false for none, or the grid
@@ -183,13 +186,13 @@ export class OceanSimulation {
     // Build the new layers before freeing the old ones, so three.js can reuse compiled programs.
     const previous = this.currentLayers;
     try {
-      this.currentLayers = spectra.map((spectrum) => new FftCascade(this.renderer, spectrum, backendFor(precision, this.useWorker)));
+      this.currentLayers = spectra.map((spectrum) => new FftCascade(this.renderer, spectrum, backendFor(precision, this.useWorker), this.useWorker));
     } catch (error) {
       if (precision === null) throw error;
       // The GPU path failed to build here (an adapter check, a framebuffer): the JS path instead.
       precision = null;
       this.currentReason = `the GPU path failed: ${error instanceof Error ? error.message : String(error)}`;
-      this.currentLayers = spectra.map((spectrum) => new FftCascade(this.renderer, spectrum, backendFor(null, this.useWorker)));
+      this.currentLayers = spectra.map((spectrum) => new FftCascade(this.renderer, spectrum, backendFor(null, this.useWorker), this.useWorker));
     }
     this.currentPath = precision ? (precision === 'float32' ? 'gpu-rgba32f' : 'gpu-rgba16f') : this.useWorker ? 'js-worker' : 'js';
     if (this.currentReason !== '' && this.preference !== 'js' && !warned.has(this.currentReason)) {

@@ -6,9 +6,14 @@
  * Jacobian is the gradient of the bilinear interpolation itself (so the steps converge
  * quadratically), without the blend weights' own slow gradient: the steps are a little off, the
  * converged point is not.
+ *
+ * Each layer gives its fields for a time close to the one asked (waveLayer.ts: usually those a
+ * worker finished a frame ago, fftCascade.ts); the displacement is carried to the time asked by its
+ * velocity, D(t) ≈ D(t0) + (t − t0)·∂D/∂t (first order; the derivatives and velocities are those at
+ * t0, a frame old at most LONGEST_CARRY).
  */
 import { blendAngle, COPY_OFFSET, largestPeriodicLayer, patchBlendUniforms } from './patchBlend';
-import type { LayerFieldsOnCpu, WaveLayer } from './waveLayer';
+import type { LayerQueryFields, WaveLayer } from './waveLayer';
 
 /** The summed fields at one rest point: displacement, slopes and the Jacobian terms of the choppy map. */
 interface SurfaceSample {
@@ -93,7 +98,7 @@ export function velocityAt<T extends { x: number; y: number; z: number }>(
   for (let i = 0; i < layers.length; i++) {
     const at = layerTexel(layers[i], rest.restX, rest.restZ);
     if (at === null) continue;
-    const texels = layers[i].velocitiesOnCpu(t);
+    const texels = layers[i].queryFields(t).velocities();
     const n = layers[i].frame.resolution;
     if (i !== blended) {
       addVelocity(texels, n, at.u, at.v, 1);
@@ -210,7 +215,7 @@ function sampleLayers(layers: readonly WaveLayer[], blended: number, t: number, 
     const at = layerTexel(layers[i], x, z);
     if (at === null) continue;
     const { resolution, size } = layers[i].frame;
-    const fields = layers[i].fieldsOnCpu(t);
+    const fields = carried(layers[i].queryFields(t), t);
     placeTaps(primary, resolution, at.u, at.v);
     if (i !== blended) {
       addFields(what, fields, primary, 1, resolution / size, out);
@@ -226,10 +231,9 @@ function sampleLayers(layers: readonly WaveLayer[], blended: number, t: number, 
     // Every field cos θ·f1 + sin θ·f2 also changes with θ: its derivative gains (−sin θ·f1 + cos θ·f2)·∇θ
     // (for the height's slope, as in ocean.vert). θ turns over hundreds of metres: a central
     // difference over 1 m is exact enough.
-    const d = fields.displacement;
-    const dx = -sin * tap(d, primary, 0) + cos * tap(d, copy, 0);
-    const height = -sin * tap(d, primary, 1) + cos * tap(d, copy, 1);
-    const dz = -sin * tap(d, primary, 2) + cos * tap(d, copy, 2);
+    const dx = -sin * displacementTap(fields, primary, 0) + cos * displacementTap(fields, copy, 0);
+    const height = -sin * displacementTap(fields, primary, 1) + cos * displacementTap(fields, copy, 1);
+    const dz = -sin * displacementTap(fields, primary, 2) + cos * displacementTap(fields, copy, 2);
     const thetaX = blendAngle(blendUniforms, x + 0.5, z) - blendAngle(blendUniforms, x - 0.5, z);
     const thetaZ = blendAngle(blendUniforms, x, z + 0.5) - blendAngle(blendUniforms, x, z - 0.5);
     out.slopeX += height * thetaX;
@@ -241,13 +245,44 @@ function sampleLayers(layers: readonly WaveLayer[], blended: number, t: number, 
   }
 }
 
+/** A layer's query fields and how far (s) their displacement is carried to the time asked. */
+interface CarriedFields {
+  fields: LayerQueryFields;
+  /** t − fields.time */
+  carry: number;
+  /** The fields' velocities, or null when they are for the time asked (nothing to carry). */
+  velocities: Float32Array | null;
+}
+
+const carriedFields: CarriedFields = { fields: null!, carry: 0, velocities: null };
+
+/** `fields` to be carried to time t (shared: read before the next call). */
+function carried(fields: LayerQueryFields, t: number): CarriedFields {
+  carriedFields.fields = fields;
+  carriedFields.carry = t - fields.time;
+  carriedFields.velocities = t === fields.time ? null : fields.velocities();
+  return carriedFields;
+}
+
+/** Displacement texel channel `index` (into the RGBA array), carried to the time asked. */
+function displacementAt(fields: CarriedFields, index: number): number {
+  const value = fields.fields.displacement[index];
+  return fields.velocities === null ? value : value + fields.carry * fields.velocities[index];
+}
+
+/** Channel c of the displacement at the taps, carried to the time asked. */
+function displacementTap(fields: CarriedFields, taps: Taps, c: number): number {
+  const value = tap(fields.fields.displacement, taps, c);
+  return fields.velocities === null ? value : value + fields.carry * tap(fields.velocities, taps, c);
+}
+
 /** Adds `weight` × every field at the taps into `out`. */
-function addSample(fields: LayerFieldsOnCpu, taps: Taps, weight: number, out: SurfaceSample): void {
-  const { displacement, derivatives } = fields;
-  out.dx += weight * tap(displacement, taps, 0);
-  out.height += weight * tap(displacement, taps, 1);
-  out.dz += weight * tap(displacement, taps, 2);
-  const crossDerivative = weight * tap(displacement, taps, 3);
+function addSample(fields: CarriedFields, taps: Taps, weight: number, out: SurfaceSample): void {
+  const { derivatives } = fields.fields;
+  out.dx += weight * displacementTap(fields, taps, 0);
+  out.height += weight * displacementTap(fields, taps, 1);
+  out.dz += weight * displacementTap(fields, taps, 2);
+  const crossDerivative = weight * displacementTap(fields, taps, 3);
   out.dxdz += crossDerivative;
   out.dzdx += crossDerivative;
   out.slopeX += weight * tap(derivatives, taps, 0);
@@ -262,15 +297,14 @@ function addSample(fields: LayerFieldsOnCpu, taps: Taps, weight: number, out: Su
  * interpolation does not quite follow between texels: with them Newton converges only linearly).
  * Two of the eight channels, at the same four texels.
  */
-function addSideways(fields: LayerFieldsOnCpu, taps: Taps, weight: number, texelsPerMetre: number, out: SurfaceSample): void {
-  const d = fields.displacement;
+function addSideways(fields: CarriedFields, taps: Taps, weight: number, texelsPerMetre: number, out: SurfaceSample): void {
   const { fu, fv } = taps;
   const perMetre = weight * texelsPerMetre;
   for (let c = 0; c <= 2; c += 2) {
-    const f00 = d[taps.at00 + c];
-    const f10 = d[taps.at10 + c];
-    const f01 = d[taps.at01 + c];
-    const f11 = d[taps.at11 + c];
+    const f00 = displacementAt(fields, taps.at00 + c);
+    const f10 = displacementAt(fields, taps.at10 + c);
+    const f01 = displacementAt(fields, taps.at01 + c);
+    const f11 = displacementAt(fields, taps.at11 + c);
     const value = weight * (taps.w00 * f00 + taps.w10 * f10 + taps.w01 * f01 + taps.w11 * f11);
     const alongX = perMetre * ((1 - fv) * (f10 - f00) + fv * (f11 - f01));
     const alongZ = perMetre * ((1 - fu) * (f01 - f00) + fu * (f11 - f10));
@@ -287,9 +321,9 @@ function addSideways(fields: LayerFieldsOnCpu, taps: Taps, weight: number, texel
 }
 
 /** Adds `weight` × `what` of the fields (FIELDS) at the taps into `out`. */
-function addFields(what: number, fields: LayerFieldsOnCpu, taps: Taps, weight: number, texelsPerMetre: number, out: SurfaceSample): void {
+function addFields(what: number, fields: CarriedFields, taps: Taps, weight: number, texelsPerMetre: number, out: SurfaceSample): void {
   if (what === FIELDS.newton) addSideways(fields, taps, weight, texelsPerMetre, out);
-  else if (what === FIELDS.height) out.height += weight * tap(fields.displacement, taps, 1);
+  else if (what === FIELDS.height) out.height += weight * displacementTap(fields, taps, 1);
   else addSample(fields, taps, weight, out);
 }
 

@@ -30,6 +30,19 @@ export interface LayerFieldsOnCpu {
   readonly derivatives: Float32Array;
 }
 
+/** A layer's fields for the queries, for one time. Valid until the layer's next update or query at another time. */
+export interface LayerQueryFields extends LayerFieldsOnCpu {
+  /** The time the fields are for, s (the time asked, or one close to it). */
+  readonly time: number;
+  /**
+   * The time derivative of `displacement` at `time`: RGBA texels (∂Dx/∂t, ∂h/∂t, ∂Dz/∂t,
+   * ∂²Dx/∂z∂t) in m/s, horizontal parts for a choppiness of 1, in the same texel layout. For
+   * velocityAt, and to carry the displacement from `time` to the time asked. Computed on the first
+   * call where the layer does not already have it.
+   */
+  velocities(): Float32Array;
+}
+
 export interface WaveLayer {
   /** What the surface samples; stable `{ value }` objects, so a material binds them once. */
   readonly textures: {
@@ -44,14 +57,13 @@ export interface WaveLayer {
   readonly movesSideways: boolean;
   /** Advances the layer to time t (s); dt is the step since the last update (0 for a jump). */
   update(t: number, dt: number): void;
-  /** The fields at time t on the CPU, for queries (computed on demand, then kept for that t). */
-  fieldsOnCpu(t: number): LayerFieldsOnCpu;
   /**
-   * The time derivative of the displacement field at time t on the CPU, for velocityAt: RGBA texels
-   * (∂Dx/∂t, ∂h/∂t, ∂Dz/∂t, ∂²Dx/∂z∂t) in m/s (horizontal parts for a choppiness of 1), in the
-   * texel layout of fieldsOnCpu. Computed on demand, then kept for that t.
+   * The layer's fields on the CPU for the queries (surfaceQuery.ts) at time t: the fields at t, or
+   * fields the layer already has for a time close to it (finished by a worker while the main thread
+   * drew), which the queries carry to t by their velocities. Layers compute on the main thread only
+   * when they have nothing close enough.
    */
-  velocitiesOnCpu(t: number): Float32Array;
+  queryFields(t: number): LayerQueryFields;
   /** Frees every GPU resource and worker the layer made. */
   dispose(): void;
 }

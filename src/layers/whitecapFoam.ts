@@ -145,7 +145,7 @@ class GpuFoam {
 
   /** One step; at `time` the cascades are first recomputed (warm-up), null: they are current. */
   step(cascades: readonly FftCascade[], time: number | null, choppiness: number, rate: number, persistence: number, dt: number): void {
-    if (time !== null) for (const cascade of cascades) cascade.update(time);
+    if (time !== null) for (const cascade of cascades) cascade.update(time, 0);
     const { decay, gain } = foamStep(rate, persistence, dt);
     this.draw(choppiness, decay, gain);
   }

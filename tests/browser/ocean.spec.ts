@@ -174,6 +174,23 @@ test('heightAt(x, z) is the height of the rendered surface over (x, z), choppy d
   expect(result.maxError / result.rms).toBeLessThan(0.01);
 });
 
+for (const [path, jitter] of [['gpu', 0], ['gpu', 0.005], ['js', 0.005]] as const) {
+  test(`the queries read fields the workers computed, not the main thread, and agree with the fields of the time asked: ${path} path, steps of 1/60 s ± ${jitter * 1000} ms`, async ({ page }) => {
+    await openOcean(page);
+    const result = await page.evaluate(([p, j]) => window.ocean.queriesFromWorkers(p, j), [path, jitter] as const);
+    console.log(`queries from workers, ${result.path}, jitter ${jitter * 1000} ms: started after ${result.warmUpFrames} frames; then over 20 frames computed here ${result.computedHere} times, worst error ${(result.worstError * 1000).toFixed(3)} mm (RMS height ${result.rms.toFixed(3)} m)`);
+    expect(result.path).toBe(path === 'gpu' ? 'gpu-rgba32f' : 'js-worker');
+    // Until the workers have started the queries compute here; from then on, never.
+    expect(result.warmUpFrames).toBeLessThan(40);
+    expect(result.computedHere).toBe(0);
+    // The workers' fields are asked for the next frame's time (fieldWorker.ts); steps that change
+    // by 2·jitter leave that much to carry by the velocities, within 1 % of the RMS height
+    // (surfaceQuery.test.ts); without the carry 10 ms off would be ~4 % off.
+    expect(result.rms).toBeGreaterThan(0.3);
+    expect(result.worstError).toBeLessThan(0.01 * result.rms);
+  });
+}
+
 test('heightAt and normalAt include the local waves: after a stone the height differs from the cascades\' by the local field', async ({ page }) => {
   await openOcean(page);
   const result = await page.evaluate(() => window.ocean.queriesWithLocalWaves());

@@ -21,8 +21,7 @@ function fakeLayer(size: number, resolution: number): WaveLayer {
     frame: { size, origin: [0, 0], periodic: true, resolution },
     movesSideways: true,
     update: () => {},
-    fieldsOnCpu: () => fields,
-    velocitiesOnCpu: () => fields.displacement,
+    queryFields: (t: number) => ({ time: t, ...fields, velocities: () => fields.displacement }),
     dispose: () => {},
   };
 }

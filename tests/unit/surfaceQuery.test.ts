@@ -18,8 +18,9 @@ import { heightAt, normalAt, velocityAt } from '../../src/layers/surfaceQuery';
 import { CpuWaveFields } from '../../src/fft/cpuWaveFields';
 import { validateParameters } from '../../src/parameters/parameters';
 import { GRAVITY } from '../../src/spectrum/dispersion';
+import { LONGEST_CARRY } from '../../src/layers/fftCascade';
 import { createCascadeSpectra } from '../../src/spectrum/initialSpectrum';
-import type { LayerFrame, WaveLayer } from '../../src/layers/waveLayer';
+import type { LayerFrame, LayerQueryFields, WaveLayer } from '../../src/layers/waveLayer';
 
 /** A layer with fixed fields (the same at every t), recording the times it was asked for. */
 interface FakeLayer extends WaveLayer {
@@ -34,11 +35,10 @@ function fakeLayer(frame: LayerFrame, displacement: Float32Array, derivatives: F
     frame,
     movesSideways: true,
     update: () => {},
-    fieldsOnCpu: (t: number) => {
+    queryFields: (t: number) => {
       times.push(t);
-      return { displacement, derivatives };
+      return { time: t, displacement, derivatives, velocities: () => velocities };
     },
-    velocitiesOnCpu: () => velocities,
     dispose: () => {},
   };
 }
@@ -239,7 +239,7 @@ function particleAt(layers: readonly WaveLayer[], lambda: number, t: number, x0:
   const sum = [0, 0, 0];
   layers.forEach((layer, i) => {
     const { size, resolution: n } = layer.frame;
-    const { displacement } = layer.fieldsOnCpu(t);
+    const { displacement } = layer.queryFields(t);
     const sample = (u: number, v: number, c: number) => {
       const [i0, j0] = [Math.floor(u), Math.floor(v)];
       const at = (a: number, b: number) => displacement[4 * ((((b % n) + n) % n) * n + (((a % n) + n) % n)) + c];
@@ -256,24 +256,26 @@ function particleAt(layers: readonly WaveLayer[], lambda: number, t: number, x0:
   return [x0 + lambda * sum[0], sum[1], z0 + lambda * sum[2]];
 }
 
-/** The JS path's fields of the cascades of `parameters`, as a layer each. */
-function realSeaLayers(parameters: ReturnType<typeof validateParameters>): WaveLayer[] {
+/**
+ * The JS path's fields of the cascades of `parameters`, as a layer each; with `lag` (s) each layer
+ * answers a query at t with its fields for t − lag, as a worker's fields a frame old (fftCascade.ts).
+ */
+function realSeaLayers(parameters: ReturnType<typeof validateParameters>, lag = 0): WaveLayer[] {
   return createCascadeSpectra(parameters).map((spectrum) => {
     const fields = new CpuWaveFields(spectrum);
-    let shown = NaN;
+    let shown: LayerQueryFields | null = null;
     return {
       textures: { displacement: { value: null }, derivatives: { value: null } },
       frame: { size: spectrum.patchSize, origin: [0, 0], periodic: true, resolution: spectrum.resolution },
       movesSideways: true,
       update: () => {},
-      fieldsOnCpu: (t: number) => {
-        if (t !== shown) {
-          fields.update(t);
-          shown = t;
+      queryFields: (t: number) => {
+        if (shown?.time !== t - lag) {
+          fields.update(t - lag);
+          shown = fields.forQueries(t - lag);
         }
-        return fields;
+        return shown;
       },
-      velocitiesOnCpu: (t: number) => fields.updateVelocities(t),
       dispose: () => {},
     };
   });
@@ -298,6 +300,33 @@ describe('heightAt over a real sea', () => {
     console.log(`heightAt over 200 particles of a 20 m/s sea: worst ${(worst * 1e6).toFixed(2)} µm off (mean |h| ${(heights / 200).toFixed(2)} m)`);
     expect(heights / 200).toBeGreaterThan(0.5); // a real storm sea (m)
     expect(worst).toBeLessThan(1e-5);
+  });
+});
+
+describe('heightAt from fields of an earlier time, carried by their velocities', () => {
+  it('is within 1 % of the RMS height of the answer from fields of the time asked, up to 40 ms late (LONGEST_CARRY); without the carry 10 times more', () => {
+    // D(t) ≈ D(t0) + (t − t0)·∂D/∂t: the error of the first-order step is ½·Δt²·∂²D/∂t², for one
+    // Airy wave ½·Δt²·ω²·a (Dean & Dalrymple 1991, §4.4): it grows with Δt², fastest for the short
+    // waves. 1 % of the RMS height is what heightAt holds against the drawn surface (ocean.spec.ts).
+    const parameters = validateParameters({ resolution: 64, windSpeed: 12, seed: 5, choppiness: 1.2 });
+    const exact = realSeaLayers(parameters);
+    const t = 41.5;
+    const points = Array.from({ length: 100 }, (_, p) => [(p % 10) * 17.3 - 80, Math.floor(p / 10) * 13.9 - 60]);
+    const heights = points.map(([x, z]) => heightAt(exact, parameters.choppiness, t, x, z));
+    const rms = Math.sqrt(heights.reduce((sum, h) => sum + h * h, 0) / heights.length);
+    const worstError = (query: (x: number, z: number) => number) => Math.max(...points.map(([x, z], p) => Math.abs(query(x, z) - heights[p])));
+    const carried: Record<number, number> = {};
+    for (const lag of [0.016, 0.033, LONGEST_CARRY, 0.1]) {
+      const late = realSeaLayers(parameters, lag);
+      carried[lag] = worstError((x, z) => heightAt(late, parameters.choppiness, t, x, z));
+    }
+    const notCarried = worstError((x, z) => heightAt(exact, parameters.choppiness, t - 0.016, x, z));
+    console.log(`heightAt from late fields: worst error / RMS height (${rms.toFixed(3)} m) by lag (s) ${JSON.stringify(Object.fromEntries(Object.entries(carried).map(([lag, e]) => [lag, +(e / rms).toFixed(5)])))}; 16 ms late, not carried: ${(notCarried / rms).toFixed(4)}`);
+    expect(rms).toBeGreaterThan(0.3); // a real sea (m): Hs ≈ 4·RMS ≈ 2 m at 12 m/s
+    expect(carried[LONGEST_CARRY]).toBeLessThan(0.01 * rms);
+    expect(carried[0.1]).toBeGreaterThan(0.01 * rms); // why the carry stops at LONGEST_CARRY
+    expect(carried[0.033]).toBeGreaterThan(2 * carried[0.016]); // it grows with the lag (about as Δt²)
+    expect(notCarried).toBeGreaterThan(10 * carried[0.016]);
   });
 });
 

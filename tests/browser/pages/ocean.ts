@@ -33,6 +33,7 @@ import { CpuWaveFields } from '../../../src/fft/cpuWaveFields';
 import { OceanSimulation } from '../../../src/layers/oceanSimulation';
 import { blendAngle, COPY_OFFSET, patchBlendUniforms } from '../../../src/layers/patchBlend';
 import { heightAt, normalAt } from '../../../src/layers/surfaceQuery';
+import type { WaveLayer } from '../../../src/layers/waveLayer';
 import type { SimulationParameters } from '../../../src/parameters/parameters';
 
 const query = new URLSearchParams(location.search);
@@ -403,6 +404,68 @@ const harness = {
     return results;
   },
   /**
+   * The queries in a frame loop as an app makes them: update, heightAt and normalAt at 25 points,
+   * then a pause for the workers (a frame of a slow renderer). On the GPU path the queries read the
+   * query workers' fields, on the JS path the JS workers' (fftCascade.ts). The steps are 1/60 s,
+   * or alternately 1/60 s ± `jitter`. Frames run until no cascade has computed fields here for
+   * three frames in a row (the workers started: `warmUpFrames`, at most 40), then 20 more, over which
+   * it returns how many times the cascades computed fields here, and the worst difference between
+   * heightAt and the height from fields computed for the time asked.
+   */
+  async queriesFromWorkers(path: 'gpu' | 'js', jitter: number): Promise<{ warmUpFrames: number; computedHere: number; worstError: number; rms: number; path: string }> {
+    const ocean = new Ocean(renderer, { path, worker: true, localWaves: false, seed: 3 });
+    const cascades = ocean.simulation.layers;
+    const { choppiness } = ocean.parameters;
+    // The same cascades, each answering with its fields computed here for the time asked.
+    const exact: WaveLayer[] = cascades.map((cascade) => ({
+      textures: cascade.textures,
+      frame: cascade.frame,
+      movesSideways: true,
+      update: () => {},
+      dispose: () => {},
+      queryFields: (t: number) => ({ time: t, ...cascade.fieldsOnCpu(t), velocities: () => new Float32Array(0) }),
+    }));
+    const points = Array.from({ length: 25 }, (_, p) => [(p % 5) * 23.1 - 40, Math.floor(p / 5) * 19.7 - 35]);
+    const normal = new Vector3();
+    const computedHere = () => cascades.reduce((sum, cascade) => sum + cascade.fieldsComputedHere, 0);
+    let t = 20;
+    let frame = 0;
+    /** One frame; with `compare`, heightAt's worst difference from the exact height, and the squared heights. */
+    const step = async (compare: boolean) => {
+      t += 1 / 60 + (frame++ % 2 === 0 ? jitter : -jitter);
+      ocean.update(t);
+      let [worst, squares] = [0, 0];
+      for (const [x, z] of points) {
+        const height = ocean.heightAt(x, z);
+        ocean.normalAt(x, z, normal);
+        if (!compare) continue;
+        const expected = heightAt(exact, choppiness, t, x, z);
+        worst = Math.max(worst, Math.abs(height - expected));
+        squares += expected ** 2;
+      }
+      await new Promise((resolve) => setTimeout(resolve, 80));
+      return { worst, squares };
+    };
+    try {
+      for (let quiet = 0; quiet < 3 && frame < 40; ) {
+        const before = computedHere();
+        await step(false);
+        quiet = computedHere() === before ? quiet + 1 : 0;
+      }
+      const warmUpFrames = frame;
+      const before = computedHere();
+      let [worstError, squares] = [0, 0];
+      for (let i = 0; i < 20; i++) {
+        const { worst, squares: s } = await step(true);
+        worstError = Math.max(worstError, worst);
+        squares += s;
+      }
+      return { warmUpFrames, computedHere: computedHere() - before, worstError, rms: Math.sqrt(squares / (20 * points.length)), path: ocean.path.running };
+    } finally {
+      ocean.dispose();
+    }
+  },
+  /**
    * The JS path in workers, and what happens when a worker fails: `fault` is 'throws' (an
    * exception in the worker), 'terminated' (killed from outside: it never answers again),
    * 'unloadable' (its script cannot load: it fails before any answer) or 'blocked' (new Worker
@@ -452,9 +515,9 @@ const harness = {
     };
     await runUntilShown(1, 20);
     const before = ocean.path.running;
-    const backend = (layers[0] as unknown as { backend: { worker: Worker } }).backend;
-    if (fault === 'throws') backend.worker.postMessage({ type: 'update', t: 2 }); // no arrays: it throws
-    if (fault === 'terminated') backend.worker.terminate();
+    const { worker } = (layers[0] as unknown as { backend: { worker: { worker: Worker } } }).backend;
+    if (fault === 'throws') worker.worker.postMessage({ type: 'update', t: 2 }); // no arrays: it throws
+    if (fault === 'terminated') worker.worker.terminate();
     // Long enough for a silent worker to be given up (4 s) and its replacement to answer.
     const largestError = await runUntilShown(3, 20);
     const largestHeight = Math.max(...layers.map((layer) => Math.max(...layer.fieldsOnCpu(3).displacement.map(Math.abs))));
