@@ -110,7 +110,7 @@ export class CpuFieldTextures {
     this.displacement.image.data = arrays.displacement;
     this.derivatives.image.data = arrays.derivatives;
     const { displacement, derivatives, velocities } = arrays;
-    this.shown = { forQueries: { time: t, displacement, derivatives, velocities: () => velocities! }, hasVelocities: velocities !== null };
+    this.shown = { forQueries: { time: t, resolution: this.spectrum.resolution, displacement, derivatives, velocities: () => velocities! }, hasVelocities: velocities !== null };
     this.markUpdated();
     return previous;
   }

@@ -103,7 +103,7 @@ export class CpuWaveFields {
    */
   forQueries(t: number): LayerQueryFields {
     let velocities: Float32Array | null = null;
-    return { time: t, displacement: this.displacement, derivatives: this.derivatives, velocities: () => (velocities ??= this.updateVelocities(t)) };
+    return { time: t, resolution: this.size, displacement: this.displacement, derivatives: this.derivatives, velocities: () => (velocities ??= this.updateVelocities(t)) };
   }
 
   /**

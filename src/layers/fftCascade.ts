@@ -3,7 +3,7 @@
  * (src/spectrum/cascadeBands.ts) by one FFT backend, the GPU's fragment passes
  * (src/fft/gpuWaveFields.ts) or JS (src/fft/cpuFieldTextures.ts, optionally in a worker).
  *
- * The queries (surfaceQuery.ts) read a CPU copy of the fields, which the main thread does not
+ * The queries (surfaceQuery.ts) read a CPU copy of the fields (at most QUERY_RESOLUTION² texels), which the main thread does not
  * compute while a worker can: on the JS path in a worker, the worker's fields the textures show
  * (with their velocities); on the GPU path, a second JS worker of its own (fieldWorker.ts), started
  * by the first query and then asked at each update that follows queries. Both ask for the time of
@@ -20,7 +20,7 @@ import { UnsupportedError } from '../parameters/options';
 import { CpuWaveFields } from '../fft/cpuWaveFields';
 import { FieldWorker } from '../fft/fieldWorker';
 import { GpuWaveFields, type GpuPrecision } from '../fft/gpuWaveFields';
-import type { InitialSpectrum } from '../spectrum/initialSpectrum';
+import { reducedSpectrum, type InitialSpectrum } from '../spectrum/initialSpectrum';
 import type { LayerFieldsOnCpu, LayerFrame, LayerQueryFields, WaveLayer } from './waveLayer';
 
 /** Which implementation computes a cascade's fields. */
@@ -34,28 +34,40 @@ export type FftBackend = { kind: 'gpu'; precision: GpuPrecision } | { kind: 'js'
  */
 export const LONGEST_CARRY = 0.04;
 
+/**
+ * The largest grid of the queries' CPU copy. A cascade on a larger grid is copied without its
+ * shortest waves (reducedSpectrum): a worker then keeps up with the frames at any N, and a copy
+ * computed here costs what N = 256 costs. Only the finest cascade has waves there (cascadeBands.ts),
+ * ripples of millimetres.
+ */
+export const QUERY_RESOLUTION = 256;
+
 export class FftCascade implements WaveLayer {
   readonly textures;
   readonly frame: LayerFrame;
   readonly movesSideways = true;
   private readonly backend: GpuWaveFields | CpuFieldTextures;
-  /** GPU path: the worker that computes the queries' CPU copy (made by the first query). */
+  /** The spectrum of the queries' CPU copy: the cascade's, or on a grid over QUERY_RESOLUTION a reduced one. */
+  private readonly querySpectrum: InitialSpectrum;
+  /** The worker that computes the queries' CPU copy where the JS path's worker cannot (made by the first query). */
   private queryWorker: FieldWorker | null = null;
-  /** GPU path: the newest fields the query worker finished. */
+  /** The newest fields the query worker finished. */
   private newest: LayerQueryFields | null = null;
   /** Whether queries came since the last update (the query worker is then asked at the next). */
   private queried = false;
-  /** Fields computed here on demand (fieldsOnCpu, and queries with nothing close enough), and the time of the last. */
-  private computed: { fields: CpuWaveFields; forQueries: LayerQueryFields | null } | null = null;
+  /** Fields computed here on demand: the cascade's (fieldsOnCpu), and the queries' copy when nothing is close enough. */
+  private computed: FieldsComputedHere | null = null;
+  private computedForQueries: FieldsComputedHere | null = null;
   private computedHere = 0;
 
   constructor(
     renderer: WebGLRenderer,
     readonly spectrum: InitialSpectrum,
     backend: FftBackend,
-    /** GPU path: whether the queries' fields are computed in a worker (else here, once per time asked). */
+    /** Whether the queries' fields may be computed in a worker (else here, once per time asked). */
     private readonly queryWorkerWanted = true,
   ) {
+    this.querySpectrum = spectrum.resolution > QUERY_RESOLUTION ? reducedSpectrum(spectrum, QUERY_RESOLUTION) : spectrum;
     this.backend =
       backend.kind === 'gpu' ? new GpuWaveFields(renderer, spectrum, backend.precision) : new CpuFieldTextures(renderer, spectrum, backend.worker);
     this.textures = { displacement: { value: this.backend.displacement }, derivatives: { value: this.backend.derivatives } };
@@ -81,14 +93,19 @@ export class FftCascade implements WaveLayer {
 
   /** The fields at time t, computed here on the main thread (for the foam's warm-up and the tests). */
   fieldsOnCpu(t: number): LayerFieldsOnCpu {
-    return this.computeHere(t);
+    this.computed ??= new FieldsComputedHere(this.spectrum);
+    return this.computed.at(t);
   }
 
   queryFields(t: number): LayerQueryFields {
-    const near = !(this.backend instanceof GpuWaveFields) ? this.backend.forQueries() : this.queryWorkerWanted ? this.fromQueryWorker(t) : null;
+    // The JS path's own fields where they are the queries' copy; else the query worker's.
+    const shared = this.backend instanceof CpuFieldTextures && this.querySpectrum === this.spectrum;
+    const near = shared ? (this.backend as CpuFieldTextures).forQueries() : this.queryWorkerWanted ? this.fromQueryWorker(t) : null;
     if (near !== null && Math.abs(t - near.time) <= LONGEST_CARRY) return near;
-    if (this.computed?.forQueries?.time !== t) this.computedHere++;
-    return this.computeHere(t);
+    if (this.querySpectrum === this.spectrum) this.computedForQueries = this.computed ??= new FieldsComputedHere(this.spectrum);
+    else this.computedForQueries ??= new FieldsComputedHere(this.querySpectrum);
+    if (!this.computedForQueries.isAt(t)) this.computedHere++;
+    return this.computedForQueries.at(t);
   }
 
   /** How many times the queries found no fields close enough to the time asked, and computed them here (once per time). */
@@ -96,16 +113,17 @@ export class FftCascade implements WaveLayer {
     return this.computedHere;
   }
 
-  /** GPU path: the query worker's newest fields (or null); the first query makes it and asks it for t. */
+  /** The query worker's newest fields (or null); the first query makes it and asks it for t. */
   private fromQueryWorker(t: number): LayerQueryFields | null {
     this.queried = true;
     if (this.queryWorker === null) {
+      const { resolution } = this.querySpectrum;
       this.queryWorker = new FieldWorker(
-        this.spectrum,
+        this.querySpectrum,
         'query worker',
         ({ t: time, displacement, derivatives, velocities }) => {
           const previous = this.newest;
-          this.newest = { time, displacement, derivatives, velocities: () => velocities! };
+          this.newest = { time, resolution, displacement, derivatives, velocities: () => velocities! };
           return previous && { displacement: previous.displacement, derivatives: previous.derivatives, velocities: previous.velocities() };
         },
         (fault) => console.warn(`three-fft-ocean: ${fault}; the queries compute their fields on the main thread.`),
@@ -113,16 +131,6 @@ export class FftCascade implements WaveLayer {
       this.queryWorker.request(t, 0, true);
     }
     return this.newest;
-  }
-
-  /** The fields at time t computed here (once per time asked), as the queries read them. */
-  private computeHere(t: number): LayerQueryFields {
-    this.computed ??= { fields: new CpuWaveFields(this.spectrum), forQueries: null };
-    if (this.computed.forQueries?.time !== t) {
-      this.computed.fields.update(t);
-      this.computed.forQueries = this.computed.fields.forQueries(t);
-    }
-    return this.computed.forQueries;
   }
 
   /** The fields the textures show now, on the JS path (no computation); the GPU path keeps none. */
@@ -134,7 +142,30 @@ export class FftCascade implements WaveLayer {
   dispose(): void {
     this.backend.dispose();
     this.queryWorker?.dispose();
-    this.computed = null;
+    this.computed = this.computedForQueries = null;
     this.newest = null;
+  }
+}
+
+/** A spectrum's fields computed on the main thread when asked, once per time. */
+class FieldsComputedHere {
+  private readonly fields: CpuWaveFields;
+  private last: LayerQueryFields | null = null;
+
+  constructor(spectrum: InitialSpectrum) {
+    this.fields = new CpuWaveFields(spectrum);
+  }
+
+  isAt(t: number): boolean {
+    return this.last?.time === t;
+  }
+
+  /** The fields at time t, as the queries read them. */
+  at(t: number): LayerQueryFields {
+    if (this.last?.time !== t) {
+      this.fields.update(t);
+      this.last = this.fields.forQueries(t);
+    }
+    return this.last;
   }
 }

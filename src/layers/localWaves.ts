@@ -373,7 +373,7 @@ export class LocalWaves implements WaveLayer {
    */
   queryFields(t: number): LayerQueryFields {
     const { displacement, derivatives } = this.fieldsOnCpu(t);
-    return { time: t, displacement, derivatives, velocities: () => this.velocitiesOnCpu(t) };
+    return { time: t, resolution: this.grid.resolution, displacement, derivatives, velocities: () => this.velocitiesOnCpu(t) };
   }
 
   /**

@@ -13,7 +13,7 @@
  * t0, a frame old at most LONGEST_CARRY).
  */
 import { blendAngle, COPY_OFFSET, largestPeriodicLayer, patchBlendUniforms } from './patchBlend';
-import type { LayerQueryFields, WaveLayer } from './waveLayer';
+import type { LayerFrame, LayerQueryFields, WaveLayer } from './waveLayer';
 
 /** The summed fields at one rest point: displacement, slopes and the Jacobian terms of the choppy map. */
 interface SurfaceSample {
@@ -96,10 +96,11 @@ export function velocityAt<T extends { x: number; y: number; z: number }>(
   const blended = prepareBlend(layers);
   velocity.x = velocity.y = velocity.z = 0;
   for (let i = 0; i < layers.length; i++) {
-    const at = layerTexel(layers[i], rest.restX, rest.restZ);
+    const fields = layers[i].queryFields(t);
+    const n = fields.resolution;
+    const at = layerTexel(layers[i].frame, n, rest.restX, rest.restZ);
     if (at === null) continue;
-    const texels = layers[i].queryFields(t).velocities();
-    const n = layers[i].frame.resolution;
+    const texels = fields.velocities();
     if (i !== blended) {
       addVelocity(texels, n, at.u, at.v, 1);
       continue;
@@ -126,9 +127,12 @@ function addVelocity(texels: Float32Array, n: number, u: number, v: number, weig
 
 const texel = { u: 0, v: 0 };
 
-/** Continuous texel coordinates of the world point (x, z) in `layer`, or null outside a local layer. */
-function layerTexel(layer: WaveLayer, x: number, z: number): { u: number; v: number } | null {
-  const { size, origin, resolution, periodic } = layer.frame;
+/**
+ * Continuous texel coordinates of the world point (x, z) in a layer's query fields of `resolution`
+ * texels a side over its frame, or null outside a local layer.
+ */
+function layerTexel(frame: LayerFrame, resolution: number, x: number, z: number): { u: number; v: number } | null {
+  const { size, origin, periodic } = frame;
   texel.u = ((x - origin[0]) / size) * resolution;
   texel.v = ((z - origin[1]) / size) * resolution;
   if (!periodic && (texel.u < 0 || texel.v < 0 || texel.u > resolution - 1 || texel.v > resolution - 1)) return null;
@@ -212,10 +216,12 @@ function sampleLayers(layers: readonly WaveLayer[], blended: number, t: number, 
   out.dx = out.height = out.dz = out.slopeX = out.slopeZ = out.dxdx = out.dzdz = out.dxdz = out.dzdx = 0;
   for (let i = 0; i < layers.length; i++) {
     if (what === FIELDS.newton && !layers[i].movesSideways) continue; // nothing Newton's steps need
-    const at = layerTexel(layers[i], x, z);
+    const query = layers[i].queryFields(t);
+    const { resolution } = query;
+    const at = layerTexel(layers[i].frame, resolution, x, z);
     if (at === null) continue;
-    const { resolution, size } = layers[i].frame;
-    const fields = carried(layers[i].queryFields(t), t);
+    const { size } = layers[i].frame;
+    const fields = carried(query, t);
     placeTaps(primary, resolution, at.u, at.v);
     if (i !== blended) {
       addFields(what, fields, primary, 1, resolution / size, out);

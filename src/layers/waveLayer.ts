@@ -35,6 +35,11 @@ export interface LayerQueryFields extends LayerFieldsOnCpu {
   /** The time the fields are for, s (the time asked, or one close to it). */
   readonly time: number;
   /**
+   * Texels a side, over the layer's frame: its own resolution, or fewer (a cascade's queries may
+   * read a coarser copy without its shortest waves, fftCascade.ts).
+   */
+  readonly resolution: number;
+  /**
    * The time derivative of `displacement` at `time`: RGBA texels (∂Dx/∂t, ∂h/∂t, ∂Dz/∂t,
    * ∂²Dx/∂z∂t) in m/s, horizontal parts for a choppiness of 1, in the same texel layout. For
    * velocityAt, and to carry the displacement from `time` to the time asked. Computed on the first

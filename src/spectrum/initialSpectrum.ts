@@ -120,3 +120,31 @@ function createInitialSpectrum(
   }
   return { resolution: n, patchSize: band.patchSize, repeatPeriod, band, amplitudes, waveVectors, density };
 }
+
+/**
+ * The same cascade on a coarser grid of `resolution` texels a side (a power of two below the
+ * spectrum's): the modes whose signed frequencies both lie strictly inside ±resolution/2, with the
+ * same amplitudes, wave vectors and frequencies. The rest are dropped: the shortest waves, and the
+ * coarser grid's Nyquist row and column (whose sign is ambiguous there). Its fields are the
+ * cascade's without those waves, at every (N/resolution)-th texel. For the queries' CPU copy
+ * (fftCascade.ts): the band of every cascade but the finest ends well inside such a grid
+ * (cascadeBands.ts), so it loses nothing; the finest loses its shortest ripples.
+ */
+export function reducedSpectrum(spectrum: InitialSpectrum, resolution: number): InitialSpectrum {
+  const n = spectrum.resolution;
+  const amplitudes = new Float32Array(4 * resolution * resolution);
+  const waveVectors = new Float32Array(4 * resolution * resolution);
+  const density = new Float32Array(resolution * resolution);
+  for (let j = 0; j < resolution; j++) {
+    for (let i = 0; i < resolution; i++) {
+      if (i === resolution / 2 || j === resolution / 2) continue;
+      const texel = j * resolution + i;
+      const from = ((signedFrequency(j, resolution) + n) % n) * n + ((signedFrequency(i, resolution) + n) % n);
+      amplitudes.set(spectrum.amplitudes.subarray(4 * from, 4 * from + 4), 4 * texel);
+      waveVectors.set(spectrum.waveVectors.subarray(4 * from, 4 * from + 4), 4 * texel);
+      density[texel] = spectrum.density[from];
+    }
+  }
+  const { patchSize, repeatPeriod, band } = spectrum;
+  return { resolution, patchSize, repeatPeriod, band, amplitudes, waveVectors, density };
+}

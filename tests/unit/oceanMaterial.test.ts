@@ -21,7 +21,7 @@ function fakeLayer(size: number, resolution: number): WaveLayer {
     frame: { size, origin: [0, 0], periodic: true, resolution },
     movesSideways: true,
     update: () => {},
-    queryFields: (t: number) => ({ time: t, ...fields, velocities: () => fields.displacement }),
+    queryFields: (t: number) => ({ time: t, resolution, ...fields, velocities: () => fields.displacement }),
     dispose: () => {},
   };
 }

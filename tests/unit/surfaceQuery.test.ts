@@ -37,7 +37,7 @@ function fakeLayer(frame: LayerFrame, displacement: Float32Array, derivatives: F
     update: () => {},
     queryFields: (t: number) => {
       times.push(t);
-      return { time: t, displacement, derivatives, velocities: () => velocities };
+      return { time: t, resolution: frame.resolution, displacement, derivatives, velocities: () => velocities };
     },
     dispose: () => {},
   };

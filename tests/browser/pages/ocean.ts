@@ -423,7 +423,7 @@ const harness = {
       movesSideways: true,
       update: () => {},
       dispose: () => {},
-      queryFields: (t: number) => ({ time: t, ...cascade.fieldsOnCpu(t), velocities: () => new Float32Array(0) }),
+      queryFields: (t: number) => ({ time: t, resolution: cascade.frame.resolution, ...cascade.fieldsOnCpu(t), velocities: () => new Float32Array(0) }),
     }));
     const points = Array.from({ length: 25 }, (_, p) => [(p % 5) * 23.1 - 40, Math.floor(p / 5) * 19.7 - 35]);
     const normal = new Vector3();
