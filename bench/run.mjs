@@ -36,6 +36,7 @@
 // frame, living, queries, app); the summary then has nulls for the others.
 //   app          the app page as a user opens it (quality 'auto', after it adapted) and at each
 //                fixed quality level, 1280x720: the median time between frames and the fps.
+// BENCH_PORT=<port> sets the first port tried for the servers (default 5180; the next free ones after it).
 import { createServer as createNetServer } from 'node:net';
 import { chromium } from '@playwright/test';
 import FFT from 'fft.js';
@@ -60,7 +61,8 @@ const CASCADE_ROUNDS = 40;
 /** The local-wave grid of the living-surface frame (the issue's 256², of 1 m texels). */
 const LOCAL_WAVES_N = 256;
 const TARGETS = { jsCascades3Ms256: 9, gpuCascades3Ms256: 30, frameMs256Cascades3: 100 };
-const FIRST_PORT = 5180;
+const FIRST_PORT = process.env.BENCH_PORT ? Number(process.env.BENCH_PORT) : 5180;
+if (!Number.isInteger(FIRST_PORT) || FIRST_PORT < 1024 || FIRST_PORT > 65000) throw new Error(`BENCH_PORT: not a port from 1024 to 65000: '${process.env.BENCH_PORT}'`);
 
 /** The app as opened adapts its quality for this long before it is timed, s; a fixed level warms up shorter. */
 const APP_SETTLE_SECONDS = 20;
