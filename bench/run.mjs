@@ -36,9 +36,23 @@
 // frame, living, queries, app); the summary then has nulls for the others.
 //   app          the app page as a user opens it (quality 'auto', after it adapted) and at each
 //                fixed quality level, 1280x720: the median time between frames and the fps.
+//                With --compare=<dir> (or BENCH_COMPARE=<dir>), a checkout of David Li's WebGL
+//                FFT ocean (git clone https://github.com/dli/waves; MIT, not part of this
+//                repository) is served from <dir> on a static server of its own and timed the
+//                same way, right after the app as opened: the row `compare` (subject dli/waves,
+//                with the FFT grid N its page sets), and `compare-ratio` (app ms / dli/waves ms
+//                for each app row; the goal is ≤ 0.5 for the app as opened). Its page must
+//                visibly draw (a screenshot is checked and saved), or the row is an error.
+// BENCH_PORT=<port> sets the first port tried for the servers (default 5180; the next free ones after it).
+import { existsSync, statSync } from 'node:fs';
+import { readFile, writeFile } from 'node:fs/promises';
+import { createServer as createHttpServer } from 'node:http';
 import { createServer as createNetServer } from 'node:net';
+import { tmpdir } from 'node:os';
+import { extname, join, resolve, sep } from 'node:path';
 import { chromium } from '@playwright/test';
 import FFT from 'fft.js';
+import { PNG } from 'pngjs';
 import { createServer } from 'vite';
 import { BROWSER_ARGS, findBrowser } from '../scripts/browser.mjs';
 
@@ -60,14 +74,29 @@ const CASCADE_ROUNDS = 40;
 /** The local-wave grid of the living-surface frame (the issue's 256², of 1 m texels). */
 const LOCAL_WAVES_N = 256;
 const TARGETS = { jsCascades3Ms256: 9, gpuCascades3Ms256: 30, frameMs256Cascades3: 100 };
-const FIRST_PORT = 5180;
+const FIRST_PORT = process.env.BENCH_PORT ? Number(process.env.BENCH_PORT) : 5180;
+if (!Number.isInteger(FIRST_PORT) || FIRST_PORT < 1024 || FIRST_PORT > 65000) throw new Error(`BENCH_PORT: not a port from 1024 to 65000: '${process.env.BENCH_PORT}'`);
 
 /** The app as opened adapts its quality for this long before it is timed, s; a fixed level warms up shorter. */
 const APP_SETTLE_SECONDS = 20;
 const APP_WARMUP_SECONDS = 5;
 const APP_FRAMES = 30;
 
+/** The comparison ocean: David Li's WebGL FFT ocean, a static page (index.html and scripts). */
+const COMPARE_NAME = 'dli/waves';
+const COMPARE_CLONE = 'git clone https://github.com/dli/waves';
+/** The app as opened must take at most this fraction of the comparison's frame time (issue 10). */
+const COMPARE_GOAL_RATIO = 0.5;
+/** At least this fraction of the comparison's screenshot must be coloured (not grey, white or black): its sea. */
+const COMPARE_MIN_DRAWN = 0.05;
+
 const GROUPS = ['fft2d', 'fields', 'cascades', 'frame', 'living', 'queries', 'app'];
+const compareArgument = process.argv.slice(2).find((argument) => argument.startsWith('--compare='));
+/** The directory of a dli/waves checkout to time beside the app, or null. */
+const compareDir = compareArgument ? resolve(compareArgument.slice('--compare='.length)) : process.env.BENCH_COMPARE ? resolve(process.env.BENCH_COMPARE) : null;
+if (compareDir !== null && !(existsSync(join(compareDir, 'index.html')) && statSync(compareDir).isDirectory())) {
+  throw new Error(`--compare / BENCH_COMPARE: ${compareDir} is not a directory with an index.html (get one with: ${COMPARE_CLONE})`);
+}
 const onlyArgument = process.argv.slice(2).find((argument) => argument.startsWith('--only='));
 const only = onlyArgument ? onlyArgument.slice('--only='.length).split(',') : GROUPS;
 for (const group of only) {
@@ -285,9 +314,9 @@ async function nodeBenchmarks(results) {
   }
 }
 
-/** The first port from FIRST_PORT on that 127.0.0.1 lets us listen on. */
-async function freePort() {
-  for (let port = FIRST_PORT; port < FIRST_PORT + 50; port++) {
+/** The first port from `first` on that 127.0.0.1 lets us listen on. */
+async function freePort(first = FIRST_PORT) {
+  for (let port = first; port < first + 50; port++) {
     const free = await new Promise((resolve) => {
       const probe = createNetServer();
       probe.once('error', () => resolve(false));
@@ -295,7 +324,7 @@ async function freePort() {
     });
     if (free) return port;
   }
-  throw new Error(`no free port in ${FIRST_PORT}-${FIRST_PORT + 49}`);
+  throw new Error(`no free port in ${first}-${first + 49}`);
 }
 
 function withTimeout(promise, ms, what) {
@@ -304,6 +333,145 @@ function withTimeout(promise, ms, what) {
     timer = setTimeout(() => reject(new Error(`${what} took more than ${ms / 1000} s`)), ms);
   });
   return Promise.race([promise, timeout]).finally(() => clearTimeout(timer));
+}
+
+/**
+ * In the page: the real time between `count` successive frames (requestAnimationFrame
+ * timestamps, ms), what users see. Shared by the app and the comparison so both are timed alike.
+ */
+async function frameIntervals(count) {
+  const frame = () => new Promise((resolve) => requestAnimationFrame(resolve));
+  const samples = [];
+  let last = await frame();
+  for (let i = 0; i < count; i++) {
+    const now = await frame();
+    samples.push(now - last);
+    last = now;
+  }
+  return samples;
+}
+
+const STATIC_TYPES = { '.html': 'text/html', '.js': 'text/javascript', '.css': 'text/css', '.png': 'image/png', '.jpg': 'image/jpeg', '.json': 'application/json' };
+
+/**
+ * A static file server for `root` on 127.0.0.1:port (GET and HEAD, nothing outside root), with the
+ * same cross-origin isolation headers as the app's Vite server, so both pages get the same timer
+ * resolution. Resolves to the server once it listens.
+ */
+async function serveStatic(root, port) {
+  const server = createHttpServer(async (request, response) => {
+    if (request.method !== 'GET' && request.method !== 'HEAD') {
+      response.writeHead(405).end();
+      return;
+    }
+    let path;
+    try {
+      path = decodeURIComponent(new URL(request.url ?? '/', 'http://127.0.0.1').pathname);
+    } catch {
+      response.writeHead(400).end();
+      return;
+    }
+    const file = resolve(root, `.${path.endsWith('/') ? `${path}index.html` : path}`);
+    if (!file.startsWith(root + sep)) {
+      response.writeHead(403).end();
+      return;
+    }
+    try {
+      const body = await readFile(file);
+      response.writeHead(200, {
+        'Content-Type': STATIC_TYPES[extname(file).toLowerCase()] ?? 'application/octet-stream',
+        'Cross-Origin-Opener-Policy': 'same-origin',
+        'Cross-Origin-Embedder-Policy': 'require-corp',
+        'Cache-Control': 'no-store',
+      });
+      response.end(request.method === 'HEAD' ? undefined : body);
+    } catch {
+      response.writeHead(404).end();
+    }
+  });
+  await new Promise((resolveListen, reject) => {
+    server.once('error', reject);
+    server.listen(port, '127.0.0.1', resolveListen);
+  });
+  return server;
+}
+
+/**
+ * The fraction of a PNG screenshot's pixels that are coloured: channels apart by more than 40 of
+ * 255 (not white, black or grey). A sea drawn under WebGL is; a blank, black or error page is not.
+ */
+function colouredFraction(png) {
+  const { data, width, height } = PNG.sync.read(png);
+  let coloured = 0;
+  for (let k = 0; k < data.length; k += 4) {
+    const r = data[k];
+    const g = data[k + 1];
+    const b = data[k + 2];
+    if (Math.max(r, g, b) - Math.min(r, g, b) > 40) coloured++;
+  }
+  return coloured / (width * height);
+}
+
+/**
+ * dli/waves served from compareDir on a server of its own, timed like the app as opened: the same
+ * browser, viewport, warm-up and number of frames (the app's page is blank meanwhile, so nothing
+ * else draws). Requests off 127.0.0.1 (its page asks Google Fonts) are aborted. Returns the row.
+ */
+async function compareBenchmark(browser) {
+  const port = await freePort(FIRST_PORT + 1);
+  const server = await serveStatic(compareDir, port);
+  const origin = `http://127.0.0.1:${port}/`;
+  log(`${COMPARE_NAME} from ${compareDir} on ${origin} at ${FRAME_SIZE.width}x${FRAME_SIZE.height}`);
+  const page = await browser.newPage({ viewport: FRAME_SIZE });
+  page.on('pageerror', (error) => log(`${COMPARE_NAME} page error: ${error.message}`));
+  try {
+    await page.route('**/*', (route) => (route.request().url().startsWith(origin) ? route.continue() : route.abort()));
+    await page.goto(origin);
+    await page.waitForTimeout(1000 * APP_SETTLE_SECONDS);
+    const samples = await withTimeout(page.evaluate(frameIntervals, APP_FRAMES), BROWSER_STEP_TIMEOUT_MS, COMPARE_NAME);
+    // The page's own globals (shared.js): the FFT grid and the mesh it displaces; WebGL 1, whose
+    // context it made on #simulator (getContext returns that one).
+    const info = await page.evaluate(() => {
+      const canvas = document.getElementById('simulator');
+      const gl = canvas instanceof HTMLCanvasElement ? canvas.getContext('webgl') : null;
+      const error = document.getElementById('error');
+      return {
+        N: typeof window.RESOLUTION === 'number' ? window.RESOLUTION : null,
+        grid: typeof window.GEOMETRY_RESOLUTION === 'number' ? window.GEOMETRY_RESOLUTION : null,
+        canvas: canvas instanceof HTMLCanvasElement ? `${canvas.width}x${canvas.height}` : null,
+        webgl: gl === null ? null : gl.getParameter(gl.VERSION),
+        contextLost: gl === null ? null : gl.isContextLost(),
+        errorShown: error !== null && getComputedStyle(error).display !== 'none',
+        devicePixelRatio,
+      };
+    });
+    const screenshot = await page.screenshot();
+    const shotPath = join(tmpdir(), 'bench-compare-dli-waves.png');
+    await writeFile(shotPath, screenshot);
+    const drawn = Math.round(colouredFraction(screenshot) * 1000) / 1000;
+    log(`${COMPARE_NAME} screenshot: ${shotPath} (${(drawn * 100).toFixed(1)} % coloured pixels)`);
+    if (info.errorShown || info.webgl === null || info.contextLost || drawn < COMPARE_MIN_DRAWN) {
+      throw new Error(`${COMPARE_NAME} did not draw (${JSON.stringify(info)}, ${drawn} coloured): not a measurement; see ${shotPath}`);
+    }
+    const row = stats(samples);
+    return {
+      bench: 'compare',
+      subject: COMPARE_NAME,
+      size: `${FRAME_SIZE.width}x${FRAME_SIZE.height}`,
+      fps: Math.round(10000 / row.ms) / 10,
+      N: info.N,
+      fft: info.N === null ? null : `one ${info.N}x${info.N} GPU FFT (WebGL 1, OES_texture_float)`,
+      grid: info.grid === null ? null : `${info.grid}x${info.grid} vertices`,
+      canvas: info.canvas,
+      pixelRatio: info.devicePixelRatio,
+      webgl: info.webgl,
+      drawnFraction: drawn,
+      ...row,
+    };
+  } finally {
+    await page.close();
+    await new Promise((resolveClose) => server.close(resolveClose));
+  }
 }
 
 /**
@@ -321,25 +489,49 @@ async function appBenchmarks(browser, server, port, results) {
       await appPage.goto(`http://127.0.0.1:${port}/${quality === 'as opened' ? '' : `?quality=${quality}`}`);
       await appPage.waitForFunction(() => window.oceanApp !== undefined, null, { timeout: 60_000 });
       await appPage.waitForTimeout(1000 * (quality === 'as opened' ? APP_SETTLE_SECONDS : APP_WARMUP_SECONDS));
-      const run = await withTimeout(
-        appPage.evaluate(async (count) => {
-          const frame = () => new Promise((resolve) => requestAnimationFrame(resolve));
-          const samples = [];
-          let last = await frame();
-          for (let i = 0; i < count; i++) {
-            const now = await frame();
-            samples.push(now - last);
-            last = now;
-          }
-          const app = window.oceanApp;
-          return { samples, level: app.quality.level, pixelRatio: app.renderer.getPixelRatio(), resolution: app.ocean.parameters.resolution, path: app.ocean.simulation.path };
-        }, APP_FRAMES),
-        BROWSER_STEP_TIMEOUT_MS,
-        `the app at quality ${quality}`,
-      );
-      const row = stats(run.samples);
-      results.app[quality] = { ms: row.ms, fps: 1000 / row.ms, level: run.level };
+      const samples = await withTimeout(appPage.evaluate(frameIntervals, APP_FRAMES), BROWSER_STEP_TIMEOUT_MS, `the app at quality ${quality}`);
+      const run = await appPage.evaluate(() => {
+        const app = window.oceanApp;
+        return { level: app.quality.level, pixelRatio: app.renderer.getPixelRatio(), resolution: app.ocean.parameters.resolution, path: app.ocean.simulation.path };
+      });
+      const row = stats(samples);
+      results.app[quality] = { ms: row.ms, fps: 1000 / row.ms, level: run.level, N: run.resolution };
       emit({ bench: 'app', quality, level: run.level, size: `${FRAME_SIZE.width}x${FRAME_SIZE.height}`, fps: Math.round(10000 / row.ms) / 10, pixelRatio: run.pixelRatio, N: run.resolution, path: run.path, ...row });
+      if (quality !== 'as opened') continue;
+      // The comparison right after the app as opened, so that the two share the machine's load.
+      if (compareDir === null) {
+        log(`compare ${COMPARE_NAME}: skipped; to time it beside the app, ${COMPARE_CLONE} and pass --compare=<that directory> (or BENCH_COMPARE=<it>)`);
+        continue;
+      }
+      await appPage.goto('about:blank'); // the app stops drawing while the comparison is timed
+      try {
+        const compare = await compareBenchmark(browser);
+        results.compare = { ms: compare.ms, N: compare.N };
+        emit(compare);
+      } catch (error) {
+        results.compare = { error: error.message ?? String(error) };
+        log(`compare ${COMPARE_NAME} FAILED: ${error.stack ?? error}`);
+      }
+    }
+    if (results.compare?.ms !== undefined) {
+      const asOpened = results.app['as opened'];
+      const ratioOf = (quality) => ratio(results.app[quality].ms, results.compare.ms);
+      emit({
+        bench: 'compare-ratio',
+        subject: COMPARE_NAME,
+        // app ms / dli/waves ms: below 1 the app draws its frames faster.
+        asOpened: ratioOf('as opened'),
+        goal: COMPARE_GOAL_RATIO,
+        within: ratioOf('as opened') <= COMPARE_GOAL_RATIO,
+        appAsOpenedMs: asOpened.ms,
+        appAsOpenedLevel: asOpened.level,
+        appAsOpenedN: asOpened.N,
+        compareMs: results.compare.ms,
+        compareN: results.compare.N,
+        sameN: asOpened.N === results.compare.N,
+        byQuality: Object.fromEntries(Object.keys(results.app).map((quality) => [quality, ratioOf(quality)])),
+        NByQuality: Object.fromEntries(Object.entries(results.app).map(([quality, { N }]) => [quality, N])),
+      });
     }
   } finally {
     await appPage.close();
@@ -563,6 +755,8 @@ const results = {
   livingCost: null,
   queries: null,
   app: {},
+  /** dli/waves: { ms, N }, or { error }; null when not asked for (no --compare). */
+  compare: null,
 };
 let exitCode = 0;
 let browserError = null;
@@ -579,6 +773,7 @@ try {
   log(`FAILED in the browser benchmarks (GPU and js-browser rows missing): ${error.stack ?? error}`);
   exitCode = 1;
 }
+if (results.compare?.error !== undefined) exitCode = 1; // asked for with --compare, and not measured
 
 const gpu = (n, timer) => results.gpu[n]?.[timer] ?? null;
 const gpuCascades = (count) => results.gpuCascades[count]?.timerQuery ?? results.gpuCascades[count]?.readPixels ?? null;
@@ -618,6 +813,9 @@ emit({
   appFrameMs: Object.fromEntries(Object.entries(results.app).map(([quality, { ms }]) => [quality, ms])),
   appAsOpenedFps: results.app['as opened']?.fps ?? null,
   appAsOpenedLevel: results.app['as opened']?.level ?? null,
+  // dli/waves at the same size in the same run (--compare), and app as opened / it (goal ≤ 0.5).
+  compareDliWavesMs: results.compare?.ms ?? null,
+  appAsOpenedVsDliWaves: ratio(results.app['as opened']?.ms, results.compare?.ms),
   queries1000Ms: results.queries,
   jsCascadesMs256: byCascades((count) => results.jsCascades[count]),
   jsBrowserCascadesMs256: byCascades((count) => results.jsBrowserCascades[count]),
