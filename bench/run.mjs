@@ -25,6 +25,10 @@
 //                interleaved; living-cost gives what foam and local waves add to the bare frame.
 //   queries      1000 points in one heightsAt / velocitiesAt call from the page's main thread, the
 //                fields for the time already computed (firstCallMs: the call that computes them).
+//   query-frames heightAt and normalAt at 5 points a frame (a boat and four buoys) on the GPU path at
+//                N = 256, 512, 1024, frames of 50 ms with steps of 1/60 s: every call's time after
+//                40 frames (the query workers started; goal: none over 1 ms), the first frame's
+//                calls (fields computed here), and how often fields were computed here afterwards.
 //   targets      the issue's targets next to the figures (reported, never asserted): per update of
 //                three 256² cascades JS ≤ 9 ms and GPU ≤ 30 ms; a frame with three cascades
 //                ≤ 100 ms at 1280x720.
@@ -90,6 +94,8 @@ const COMPARE_GOAL_RATIO = 0.5;
 /** At least this fraction of the comparison's screenshot must be coloured (not grey, white or black): its sea. */
 const COMPARE_MIN_DRAWN = 0.05;
 
+/** The grids of the query-frames rows (`--query-frames=256` for one). */
+const QUERY_FRAME_RESOLUTIONS = (process.argv.find((a) => a.startsWith('--query-frames='))?.slice(15) ?? '256,512,1024').split(',').map(Number);
 const GROUPS = ['fft2d', 'fields', 'cascades', 'frame', 'living', 'queries', 'app'];
 const compareArgument = process.argv.slice(2).find((argument) => argument.startsWith('--compare='));
 /** The directory of a dli/waves checkout to time beside the app, or null. */
@@ -716,6 +722,21 @@ async function browserBenchmarks(results) {
         const row = stats(samples);
         results.queries[name] = row.ms;
         emit({ bench: 'queries', query: name, points: 1000, N: CASCADE_N, firstCallMs: firstMs, ...row, target: name === 'heightsAt' ? 2 : null });
+      }
+      // As an app asks them: a few points a frame while the workers compute the fields.
+      results.queryFrames = {};
+      for (const resolution of QUERY_FRAME_RESOLUTIONS) {
+        log(`query frames: heightAt and normalAt at 5 points a frame, GPU path, N = ${resolution}`);
+        const run = await withTimeout(
+          page.evaluate((o) => window.frameBench.queryFrames(o), { resolution, warmUp: 40, frames: 60, frameMs: 50 }),
+          BROWSER_STEP_TIMEOUT_MS,
+          `the query frames at N = ${resolution}`,
+        );
+        const row = stats(run.callMs);
+        const largestCallMs = Math.max(...run.callMs);
+        const callsOver1Ms = run.callMs.filter((ms) => ms > 1).length;
+        results.queryFrames[resolution] = { ms: row.ms, largestCallMs, callsOver1Ms, firstFrameMs: run.firstFrameMs, computedHere: run.computedHere };
+        emit({ bench: 'query-frames', N: resolution, calls: run.callMs.length, ...row, largestCallMs, callsOver1Ms, computedHereAfterWarmUp: run.computedHere, firstFrameMs: run.firstFrameMs, target: 'no call over 1 ms' });
       }
     }
     if (wanted('app')) await appBenchmarks(browser, server, port, results);

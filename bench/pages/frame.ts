@@ -8,7 +8,7 @@
  * the same canvas; each round renders a frame of every one of them in turn, so machine noise hits
  * the cascade counts alike.
  */
-import { ACESFilmicToneMapping, PerspectiveCamera, Scene, WebGLRenderer } from 'three';
+import { ACESFilmicToneMapping, PerspectiveCamera, Scene, Vector3, WebGLRenderer } from 'three';
 import type { PressureSource } from '../../src/layers/localWaves';
 import { Ocean, type OceanOptions } from '../../src/ocean';
 
@@ -137,10 +137,48 @@ async function queries(options: { resolution: number; points: number; rounds: nu
   }
 }
 
-declare global {
-  interface Window {
-    frameBench: { frames: typeof frames; queries: typeof queries };
+/**
+ * The queries as an app asks them, on the GPU path at N = `resolution`: each frame update(t),
+ * then heightAt and normalAt at 5 points (a boat and four buoys), then a pause of `frameMs` (a
+ * frame of a slow renderer), with steps of 1/60 s. Every call's time on the main thread after
+ * `warmUp` frames (the query workers started), the first frame's calls together (the fields
+ * computed here: the workers have nothing yet), and how often the fields were computed here
+ * after the warm-up.
+ */
+async function queryFrames(options: { resolution: number; warmUp: number; frames: number; frameMs: number }): Promise<{ firstFrameMs: number; callMs: number[]; computedHere: number }> {
+  const renderer = new WebGLRenderer();
+  const ocean = new Ocean(renderer, { resolution: options.resolution, seed: 7, path: 'gpu', localWaves: false });
+  const points = [[0, 0], [12, -8], [-15, 4], [30, 22], [-6, -25]];
+  const normal = new Vector3();
+  const computedHere = () => ocean.simulation.layers.reduce((sum, layer) => sum + layer.fieldsComputedHere, 0);
+  const callMs: number[] = [];
+  let [firstFrameMs, computedAtWarmUp] = [0, 0];
+  try {
+    for (let frame = 0; frame < options.warmUp + options.frames; frame++) {
+      ocean.update(30 + frame / 60);
+      const frameStart = performance.now();
+      for (const [x, z] of points) {
+        for (const query of [() => ocean.heightAt(x, z), () => ocean.normalAt(x, z, normal)]) {
+          const start = performance.now();
+          query();
+          if (frame >= options.warmUp) callMs.push(performance.now() - start);
+        }
+      }
+      if (frame === 0) firstFrameMs = performance.now() - frameStart;
+      if (frame === options.warmUp - 1) computedAtWarmUp = computedHere();
+      await new Promise((resolve) => setTimeout(resolve, options.frameMs));
+    }
+    return { firstFrameMs, callMs, computedHere: computedHere() - computedAtWarmUp };
+  } finally {
+    ocean.dispose();
+    renderer.dispose();
   }
 }
-window.frameBench = { frames, queries };
+
+declare global {
+  interface Window {
+    frameBench: { frames: typeof frames; queries: typeof queries; queryFrames: typeof queryFrames };
+  }
+}
+window.frameBench = { frames, queries, queryFrames };
 document.title = 'ready';

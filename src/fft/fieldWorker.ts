@@ -25,7 +25,10 @@ export type { FieldArrays } from './waveFieldWorker';
 
 /** A worker that has not answered a request after this long (ms) counts as dead. */
 const WORKER_TIMEOUT_MS = 4000;
-/** The same for a new worker's first request, which also waits for its script to load (and compile, on a busy dev server). */
+/**
+ * The same for a new worker's first request, which also waits for its script to load (and compile,
+ * on a busy dev server), by default. An owner that answers from the main thread meanwhile may wait for ever.
+ */
 const FIRST_ANSWER_TIMEOUT_MS = 20_000;
 /** Failed workers replaced before the owner is told to compute on the main thread. */
 const WORKER_REPLACEMENTS = 3;
@@ -49,13 +52,14 @@ export class FieldWorker {
   /**
    * `role` names the worker in warnings; `receive` gets each finished set of fields and returns the
    * set it no longer needs (or null); `giveUp` is called once, with the reason, when the worker is
-   * given up.
+   * given up; `firstAnswerTimeout` (ms) is how long a new worker may take to answer its first request.
    */
   constructor(
     private readonly spectrum: InitialSpectrum,
     private readonly role: string,
     private readonly receive: (reply: WorkerReply) => FieldArrays | null,
     private readonly giveUp: (fault: string) => void,
+    private readonly firstAnswerTimeout = FIRST_ANSWER_TIMEOUT_MS,
   ) {
     this.start();
   }
@@ -75,7 +79,7 @@ export class FieldWorker {
     if (this.givenUp) return;
     if (this.sentAt !== null) {
       this.updatesWhileBusy++;
-      const timeout = this.answered ? WORKER_TIMEOUT_MS : FIRST_ANSWER_TIMEOUT_MS;
+      const timeout = this.answered ? WORKER_TIMEOUT_MS : this.firstAnswerTimeout;
       if (performance.now() - this.sentAt > timeout) this.failed(`it did not answer in ${timeout / 1000} s`);
       return;
     }

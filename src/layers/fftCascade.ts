@@ -127,6 +127,8 @@ export class FftCascade implements WaveLayer {
           return previous && { displacement: previous.displacement, derivatives: previous.derivatives, velocities: previous.velocities() };
         },
         (fault) => console.warn(`three-fft-ocean: ${fault}; the queries compute their fields on the main thread.`),
+        // A busy machine can hold up a new worker for long; the queries are answered here meanwhile.
+        Infinity,
       );
       this.queryWorker.request(t, 0, true);
     }
