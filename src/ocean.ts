@@ -127,7 +127,7 @@ export class Ocean extends Object3D<OceanEventMap> {
       { elevation: DEFAULT_SUN.sunElevation, azimuth: DEFAULT_SUN.sunAzimuth },
       'sunDirection',
     );
-    this.simulation = new OceanSimulation(renderer, simulationParameters, { path: options.path, worker: options.worker });
+    this.simulation = new OceanSimulation(renderer, simulationParameters, { path: options.path, worker: options.worker, localWaves: options.localWaves });
     this.sky = new SkyEnvironment(renderer, { sunElevation: sun.elevation, sunAzimuth: sun.azimuth });
     const sim = this.simulation;
     this.surface = new OceanSurface(

@@ -122,7 +122,7 @@ export class LocalWaves implements WaveLayer {
   private quietFor = Infinity;
   /** The time of the last update, null before the first. */
   private time: number | null = null;
-  /** The GPU path's fields read back for queries, and the state they are read from. */
+  /** The GPU path's fields read back for queries, and the state they are read from (readBackLater swaps in newer ones). */
   private cpuFields: { displacement: Float32Array; derivatives: Float32Array; state: Float32Array } | null = null;
   private stepCount = 0;
   /** The velocities for queries, and the update they are for. */
@@ -130,6 +130,11 @@ export class LocalWaves implements WaveLayer {
   /** The GPU path's velocities are computed in JS from the read-back potential. */
   private velocitySolver: CpuLocalWaves | null = null;
   private readBackStep = -1;
+  /** GPU path: the array a read-back without waiting fills, while one is in flight (else null). */
+  private pendingRead: Float32Array | null = null;
+  /** GPU path: the spare array for the next read-back without waiting. */
+  private spareState: Float32Array | null = null;
+  private disposed = false;
   /** This layer as a list of layers, for the queries. */
   private readonly asLayers: readonly WaveLayer[] = [this];
 
@@ -368,34 +373,71 @@ export class LocalWaves implements WaveLayer {
   }
 
   /**
-   * The fields fieldsOnCpu gives, for the queries at time t: the local waves carry no time of their
-   * own (a history), so they are for the time asked and never carried forward.
+   * The fields for the queries at time t: the local waves carry no time of their own (a history),
+   * so they are for the time asked and never carried forward. On the GPU path they are the last
+   * read-back's, and a new read-back of the current state starts without waiting (readBackLater);
+   * only the first is read back at once.
    */
   queryFields(t: number): LayerQueryFields {
-    const { displacement, derivatives } = this.fieldsOnCpu(t);
+    const { displacement, derivatives } = this.backend.kind === 'gpu' && this.cpuFields !== null && this.active ? this.readBackLater() : this.fieldsOnCpu(t);
     return { time: t, resolution: this.grid.resolution, displacement, derivatives, velocities: () => this.velocitiesOnCpu(t) };
   }
 
   /**
-   * ∂h/∂t of the fields fieldsOnCpu gives (the last update's), in the layout of a layer's velocities:
-   * the local waves move the surface only up and down.
+   * GPU path: the fields of the last read-back, after starting a read-back of the current state
+   * if it is newer and none is in flight. three.js's readRenderTargetPixelsAsync copies into a
+   * pixel buffer behind a fence and polls it, so the main thread never waits for the GPU; the
+   * queries read the waves a frame or two old (local waves move by centimetres a second: under a
+   * millimetre in a frame).
+   */
+  private readBackLater(): LayerFieldsOnCpu {
+    const fields = this.cpuFields!;
+    if (this.readBackStep !== this.stepCount && this.pendingRead === null && this.backend.kind === 'gpu') {
+      const n = this.grid.resolution;
+      const step = this.stepCount;
+      const target = (this.pendingRead = this.spareState ?? new Float32Array(4 * n * n));
+      this.spareState = null;
+      this.renderer.readRenderTargetPixelsAsync(this.backend.solver.state, 0, 0, n, n, target).then(
+        () => {
+          this.pendingRead = null;
+          // Disposed meanwhile, or a read-back that waited has come first: nothing newer here.
+          if (this.disposed || step <= this.readBackStep) {
+            this.spareState = target;
+            return;
+          }
+          this.spareState = fields.state;
+          fields.state = target;
+          this.readBackStep = step;
+          toLayerFields(fields, target, target.subarray(2), target.subarray(3), 4);
+        },
+        () => (this.pendingRead = null), // a lost context: the next query starts another
+      );
+    }
+    return fields;
+  }
+
+  /**
+   * ∂h/∂t of the fields the queries read (the last update's, on the GPU path the last read-back's),
+   * in the layout of a layer's velocities: the local waves move the surface only up and down.
    */
   velocitiesOnCpu(t: number): Float32Array {
     const n = this.grid.resolution;
     this.velocities ??= { texels: new Float32Array(4 * n * n), step: -1 };
-    if (this.velocities.step !== this.stepCount) {
-      this.fieldsOnCpu(t); // on the GPU path, reads the state back
+    if (this.backend.kind === 'gpu' && this.cpuFields === null) this.fieldsOnCpu(t); // the first read-back
+    const step = this.backend.kind === 'js' ? this.stepCount : this.readBackStep;
+    if (this.velocities.step !== step) {
       if (this.backend.kind === 'js') this.backend.solver.verticalVelocity(this.backend.solver.potential, 1, this.velocities.texels);
       else {
         this.velocitySolver ??= new CpuLocalWaves(this.grid);
         this.velocitySolver.verticalVelocity(this.cpuFields!.state.subarray(1), 4, this.velocities.texels);
       }
-      this.velocities.step = this.stepCount;
+      this.velocities.step = step;
     }
     return this.velocities.texels;
   }
 
   dispose(): void {
+    this.disposed = true;
     if (this.backend.kind === 'gpu') this.backend.solver.dispose();
     else for (const texture of this.backend.textures) texture.dispose();
   }

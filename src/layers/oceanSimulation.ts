@@ -21,6 +21,7 @@ import {
   validateParameters,
   type SimulationParameters,
 } from '../parameters/parameters';
+import { unknownOption } from '../parameters/options';
 import { createCascadeSpectra, type InitialSpectrum } from '../spectrum/initialSpectrum';
 import { FftCascade, type FftBackend } from './fftCascade';
 import { isSoftwareRenderer } from './gpuLocalWaves';
@@ -70,8 +71,7 @@ export class OceanSimulation {
     this.currentParameters = validateParameters(parameters);
     this.preference = checkPreference(options.path ?? 'auto');
     this.useWorker = options.worker ?? typeof Worker !== 'undefined';
-    const localWaves = options.localWaves ?? true;
-    this.localWaveOptions = localWaves === false ? null : localWaves === true ? {} : localWaves;
+    this.localWaveOptions = checkLocalWaves(options.localWaves ?? true);
     const localPath = this.localWaveOptions?.path ?? 'auto';
     if (localPath !== 'auto' && localPath !== 'gpu' && localPath !== 'js') throw new ParameterError('localWaves.path', localPath, "'auto', 'gpu' or 'js'");
     this.rebuild(true);
@@ -230,6 +230,20 @@ const PATH_NAMES: Record<SimulationPath, string> = { 'gpu-rgba32f': 'GPU RGBA32F
 
 function backendFor(precision: GpuPrecision | null, worker: boolean): FftBackend {
   return precision ? { kind: 'gpu', precision } : { kind: 'js', worker };
+}
+
+const LOCAL_WAVES_KEYS: readonly string[] = ['resolution', 'cellSize', 'path'];
+
+/** The local waves' options (null for none), or a ParameterError naming what is wrong in them; their values are checked by LocalWaves. */
+function checkLocalWaves(localWaves: boolean | LocalWavesOptions): LocalWavesOptions | null {
+  if (typeof localWaves === 'boolean') return localWaves ? {} : null;
+  if (localWaves === null || typeof localWaves !== 'object' || Array.isArray(localWaves)) {
+    throw new ParameterError('localWaves', localWaves, 'true, false or an object { resolution, cellSize, path }');
+  }
+  for (const [key, value] of Object.entries(localWaves)) {
+    if (!LOCAL_WAVES_KEYS.includes(key)) throw unknownOption(`localWaves.${key}`, value, LOCAL_WAVES_KEYS);
+  }
+  return localWaves;
 }
 
 function checkPreference(preference: PathPreference): PathPreference {

@@ -191,6 +191,17 @@ for (const [path, jitter] of [['gpu', 0], ['gpu', 0.005], ['js', 0.005]] as cons
   });
 }
 
+test('the queries read the local waves on the GPU without waiting for it: read back behind a fence, a frame or two late, then the same', async ({ page }) => {
+  await openOcean(page);
+  const result = await page.evaluate(() => window.ocean.localWavesQueriedOnGpu());
+  console.log(`local waves on the GPU, queried every frame: ${result.waited} read-backs waited after the first, ${result.notWaited} did not; then ${result.worstDifference} m from the fields read back at once (local field up to ${result.largestLocal.toFixed(3)} m)`);
+  expect(result.path).toBe('gpu');
+  expect(result.waited).toBe(0);
+  expect(result.notWaited).toBeGreaterThan(1);
+  expect(result.largestLocal).toBeGreaterThan(0.01); // rings around the stone
+  expect(result.worstDifference).toBeLessThan(1e-5); // the same fields once the last read-back is in
+});
+
 test('heightAt and normalAt include the local waves: after a stone the height differs from the cascades\' by the local field', async ({ page }) => {
   await openOcean(page);
   const result = await page.evaluate(() => window.ocean.queriesWithLocalWaves());

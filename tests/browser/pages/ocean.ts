@@ -466,6 +466,69 @@ const harness = {
     }
   },
   /**
+   * The local waves on the GPU and the queries: after a stone, frames of an update and heightAt at
+   * points around it. Returns the read-backs that waited for the GPU (readRenderTargetPixels) after
+   * the first query, those that did not (readRenderTargetPixelsAsync), and, after frames with no
+   * update (the last read-back in), the largest difference between heightAt and the same query over
+   * the fields read back at once (fieldsOnCpu), and how far the local field reaches there.
+   */
+  async localWavesQueriedOnGpu(): Promise<{ path: string; waited: number; notWaited: number; worstDifference: number; largestLocal: number }> {
+    const ocean = new Ocean(renderer, { resolution: 64, choppiness: 0, seed: 4, localWaves: { path: 'gpu' } });
+    const waves = ocean.localWaves!;
+    const counts = { waited: 0, notWaited: 0, inFlight: 0 };
+    const { readRenderTargetPixels, readRenderTargetPixelsAsync } = renderer;
+    renderer.readRenderTargetPixels = (...args: Parameters<typeof readRenderTargetPixels>) => {
+      counts.waited++;
+      return readRenderTargetPixels.apply(renderer, args);
+    };
+    renderer.readRenderTargetPixelsAsync = (...args: Parameters<typeof readRenderTargetPixelsAsync>) => {
+      counts.notWaited++;
+      counts.inFlight++;
+      return readRenderTargetPixelsAsync.apply(renderer, args).finally(() => counts.inFlight--);
+    };
+    const points = Array.from({ length: 36 }, (_, p) => [(p % 6) * 1.3 - 2, Math.floor(p / 6) * 1.3 - 5]);
+    try {
+      waves.follow(0, 0);
+      ocean.update(10);
+      waves.drop(1, -2, { radius: 1.2, depth: 0.8 });
+      ocean.heightAt(0, 0); // the first query reads back at once
+      const waitedAtFirst = counts.waited;
+      for (let t = 10.05; t < 12; t += 0.05) {
+        ocean.update(t);
+        for (const [x, z] of points) ocean.heightAt(x, z);
+        await new Promise((resolve) => setTimeout(resolve, 20));
+      }
+      // No more updates: queries until the read-backs in flight are in and none newer is started.
+      for (let i = 0; i < 200; i++) {
+        const started = counts.notWaited;
+        ocean.heightAt(0, 0);
+        if (counts.inFlight === 0 && counts.notWaited === started) break;
+        await new Promise((resolve) => setTimeout(resolve, 50));
+      }
+      const waited = counts.waited - waitedAtFirst;
+      const queried = points.map(([x, z]) => ocean.heightAt(x, z));
+      const local = waves.fieldsOnCpu(ocean.time).displacement; // read back at once
+      const cascadesOnly = points.map(([x, z]) => heightAt(ocean.simulation.layers, 0, ocean.time, x, z));
+      const { size, origin, resolution } = waves.frame;
+      let [worstDifference, largestLocal] = [0, 0];
+      points.forEach(([x, z], p) => {
+        // choppiness 0: the local field at (x, z) itself, bilinear
+        const [u, v] = [((x - origin[0]) / size) * resolution, ((z - origin[1]) / size) * resolution];
+        const [i, j] = [Math.floor(u), Math.floor(v)];
+        const [fu, fv] = [u - i, v - j];
+        const h = (a: number, b: number) => local[4 * (b * resolution + a) + 1];
+        const localHeight = (1 - fv) * ((1 - fu) * h(i, j) + fu * h(i + 1, j)) + fv * ((1 - fu) * h(i, j + 1) + fu * h(i + 1, j + 1));
+        largestLocal = Math.max(largestLocal, Math.abs(localHeight));
+        worstDifference = Math.max(worstDifference, Math.abs(queried[p] - cascadesOnly[p] - localHeight));
+      });
+      return { path: waves.path, waited, notWaited: counts.notWaited, worstDifference, largestLocal };
+    } finally {
+      renderer.readRenderTargetPixels = readRenderTargetPixels;
+      renderer.readRenderTargetPixelsAsync = readRenderTargetPixelsAsync;
+      ocean.dispose();
+    }
+  },
+  /**
    * The JS path in workers, and what happens when a worker fails: `fault` is 'throws' (an
    * exception in the worker), 'terminated' (killed from outside: it never answers again),
    * 'unloadable' (its script cannot load: it fails before any answer) or 'blocked' (new Worker
