@@ -42,7 +42,7 @@ export const QUALITY_STEPS: Readonly<Record<QualityLevel, QualityStep>> = {
   high: { renderScale: 1, maxResolution: 1024, msaa: true, maxCascades: MAX_CASCADES },
   medium: { renderScale: 0.75, maxResolution: 128, msaa: false, maxCascades: MAX_CASCADES },
   low: { renderScale: 0.5, maxResolution: 64, msaa: false, maxCascades: 2 },
-  lowest: { renderScale: 0.35, maxResolution: 32, msaa: false, maxCascades: 1 },
+  lowest: { renderScale: 0.3, maxResolution: 32, msaa: false, maxCascades: 2 },
 };
 
 /**

@@ -169,7 +169,7 @@ test('quality and target-fps: a level sets the render scale, MSAA, N and cascade
   });
   console.log(`<fft-ocean> auto for 120 fps: ${levels.changes.map(({ level, medianFrameMs }) => `${level} (median ${medianFrameMs?.toFixed(0)} ms)`).join(' → ')}`);
   expect(levels.high).toEqual({ level: 'high', pixelRatio: 1, msaa: true, samples: 4, resolution: 64, cascades: [13.7, 79.3, 457] });
-  expect(levels.lowest).toEqual({ level: 'lowest', pixelRatio: 0.35, msaa: false, samples: 0, resolution: 32, cascades: [457] });
+  expect(levels.lowest).toEqual({ level: 'lowest', pixelRatio: 0.3, msaa: false, samples: 0, resolution: 32, cascades: [79.3, 457] });
   expect(levels.kept).toEqual({ ...levels.lowest, targetFps: 30 });
   expect(levels.auto).toEqual(levels.lowest);
   expect(levels.targetFps).toBe(120);
