@@ -78,7 +78,11 @@ export class SceneOutput {
     renderer.render(scene, camera); // three.js resolves the samples into target.texture at the end
     renderer.setRenderTarget(previous);
     this.copy.material.uniforms.source.value = target.texture;
+    // renderer.info then counts the scene's draws and the copy's, as one frame.
+    const autoReset = renderer.info.autoReset;
+    renderer.info.autoReset = false;
     renderer.render(this.copy, this.copyCamera);
+    renderer.info.autoReset = autoReset;
   }
 
   dispose(): void {
