@@ -13,7 +13,7 @@ import { Scene } from 'three';
 import { ParameterError } from '../parameters/options';
 import { CLICKED_STONE, seaPointUnder } from '../render/seaPointer';
 import { SimulationClock, wrapLongTime } from '../timing/simulationClock';
-import { AdaptiveQuality, simulationAtQuality } from '../timing/adaptiveQuality';
+import { AdaptiveQuality } from '../timing/adaptiveQuality';
 import { validateParameters } from '../parameters/parameters';
 import { SceneOutput } from '../render/sceneOutput';
 import { applyQualityStep } from '../timing/applyQuality';
@@ -48,8 +48,8 @@ const ocean = createAppOcean(renderer, state);
 const output = new SceneOutput(renderer);
 let quality = new AdaptiveQuality(state.quality, state.targetFps);
 /** Puts the quality level in force: the pixel ratio, MSAA, and the grid and cascades the ocean runs. */
-function applyQuality(): void {
-  applyQualityStep({ renderer, output, ocean, pixelRatio: devicePixelRatio }, simulationParameters(state), quality.step);
+function applyQuality(asked = simulationParameters(state)): void {
+  applyQualityStep({ renderer, output, ocean, pixelRatio: devicePixelRatio }, asked, quality.step);
 }
 applyQuality();
 const sunLight = new SunLight(ocean);
@@ -145,17 +145,14 @@ controls.onChange = () => {
 function apply(changes: Partial<AppState>): void {
   const has = (key: keyof AppState) => Object.hasOwn(changes, key);
   const simulation: Record<string, unknown> = Object.fromEntries(Object.entries(changes).filter(([key]) => key in ocean.parameters));
-  if (Object.keys(simulation).length > 0) {
-    // What is asked for must hold at every level (the grid and cascades may rise again later);
-    // the ocean runs it within the level's grid and cascades.
-    const asked = validateParameters({ ...simulationParameters(state), ...simulation });
-    if (changes.resolution !== undefined || changes.patchSizes !== undefined) Object.assign(simulation, simulationAtQuality(asked, quality.step));
-    ocean.setParameters(simulation);
-  }
-  if (changes.quality !== undefined || changes.targetFps !== undefined) {
-    quality = new AdaptiveQuality(changes.quality ?? state.quality, changes.targetFps ?? state.targetFps);
-    applyQuality();
-  }
+  // What is asked for must hold at every level (the grid and cascades may rise again later); the
+  // ocean runs its grid and cascades within the level's (applyQualityStep), the rest as asked.
+  const asked = validateParameters({ ...simulationParameters(state), ...simulation });
+  const { resolution, patchSizes, ...rest } = simulation;
+  if (Object.keys(rest).length > 0) ocean.setParameters(rest);
+  const newQuality = changes.quality !== undefined || changes.targetFps !== undefined;
+  if (newQuality) quality = new AdaptiveQuality(changes.quality ?? state.quality, changes.targetFps ?? state.targetFps);
+  if (newQuality || resolution !== undefined || patchSizes !== undefined) applyQuality(asked);
   const shading = {
     ior: changes.ior,
     absorption: changes.absorption,
