@@ -35,7 +35,8 @@
 // `npm run bench -- --only=queries,living` runs only the groups named (fft2d, fields, cascades,
 // frame, living, queries, app); the summary then has nulls for the others.
 //   app          the app page as a user opens it (quality 'auto', after it adapted) and at each
-//                fixed quality level, 1280x720: the median time between frames and the fps.
+//                fixed quality level, 1280x720: the median time between frames and the fps, with
+//                the level's pixel ratio, MSAA, N and cascade count.
 import { createServer as createNetServer } from 'node:net';
 import { chromium } from '@playwright/test';
 import FFT from 'fft.js';
@@ -332,14 +333,34 @@ async function appBenchmarks(browser, server, port, results) {
             last = now;
           }
           const app = window.oceanApp;
-          return { samples, level: app.quality.level, pixelRatio: app.renderer.getPixelRatio(), resolution: app.ocean.parameters.resolution, path: app.ocean.simulation.path };
+          return {
+            samples,
+            level: app.quality.level,
+            pixelRatio: app.renderer.getPixelRatio(),
+            msaa: app.output.msaa,
+            resolution: app.ocean.parameters.resolution,
+            cascades: app.ocean.parameters.patchSizes.length,
+            path: app.ocean.simulation.path,
+          };
         }, APP_FRAMES),
         BROWSER_STEP_TIMEOUT_MS,
         `the app at quality ${quality}`,
       );
       const row = stats(run.samples);
       results.app[quality] = { ms: row.ms, fps: 1000 / row.ms, level: run.level };
-      emit({ bench: 'app', quality, level: run.level, size: `${FRAME_SIZE.width}x${FRAME_SIZE.height}`, fps: Math.round(10000 / row.ms) / 10, pixelRatio: run.pixelRatio, N: run.resolution, path: run.path, ...row });
+      emit({
+        bench: 'app',
+        quality,
+        level: run.level,
+        size: `${FRAME_SIZE.width}x${FRAME_SIZE.height}`,
+        fps: Math.round(10000 / row.ms) / 10,
+        pixelRatio: run.pixelRatio,
+        msaa: run.msaa,
+        N: run.resolution,
+        cascades: run.cascades,
+        path: run.path,
+        ...row,
+      });
     }
   } finally {
     await appPage.close();
