@@ -11,6 +11,7 @@ import { boatWake } from './boatWake';
 import { slowFrames } from './slowFrames';
 import { withHiddenCapabilities } from './hiddenCapabilities';
 import { withoutWebGL2 } from './withoutWebGL2';
+import { ALSO_ON_OLDEST_THREE } from './threeRange';
 
 type Vec3 = [number, number, number];
 
@@ -506,7 +507,8 @@ test.describe('the app', () => {
     await expect.poll(() => new URL(page.url()).searchParams.get('quality')).toBe('medium');
   });
 
-  test('quality high multisamples (4x) through its render target onto a canvas without antialiasing: the picture differs from the one without MSAA at edges only', async ({ page }) => {
+  // Also on the oldest three.js: the render target is drawn like the canvas through a three.js internal (drawLikeCanvas).
+  test('quality high multisamples (4x) through its render target onto a canvas without antialiasing: the picture differs from the one without MSAA at edges only', ALSO_ON_OLDEST_THREE, async ({ page }) => {
     await openApp(page, 'resolution=32&paused=1&t=3&quality=high', { width: 480, height: 270 });
     const target = await page.evaluate(async () => {
       await window.oceanApp.capturePixels();
