@@ -39,7 +39,8 @@
 // `npm run bench -- --only=queries,living` runs only the groups named (fft2d, fields, cascades,
 // frame, living, queries, app); the summary then has nulls for the others.
 //   app          the app page as a user opens it (quality 'auto', after it adapted) and at each
-//                fixed quality level, 1280x720: the median time between frames and the fps.
+//                fixed quality level, 1280x720: the median time between frames and the fps, with
+//                the level's pixel ratio, MSAA, N and cascade count.
 //                With --compare=<dir> (or BENCH_COMPARE=<dir>), a checkout of David Li's WebGL
 //                FFT ocean (git clone https://github.com/dli/waves; MIT, not part of this
 //                repository) is served from <dir> on a static server of its own and timed the
@@ -498,11 +499,30 @@ async function appBenchmarks(browser, server, port, results) {
       const samples = await withTimeout(appPage.evaluate(frameIntervals, APP_FRAMES), BROWSER_STEP_TIMEOUT_MS, `the app at quality ${quality}`);
       const run = await appPage.evaluate(() => {
         const app = window.oceanApp;
-        return { level: app.quality.level, pixelRatio: app.renderer.getPixelRatio(), resolution: app.ocean.parameters.resolution, path: app.ocean.simulation.path };
+        return {
+          level: app.quality.level,
+          pixelRatio: app.renderer.getPixelRatio(),
+          msaa: app.output.msaa,
+          resolution: app.ocean.parameters.resolution,
+          cascades: app.ocean.parameters.patchSizes.length,
+          path: app.ocean.simulation.path,
+        };
       });
       const row = stats(samples);
       results.app[quality] = { ms: row.ms, fps: 1000 / row.ms, level: run.level, N: run.resolution };
-      emit({ bench: 'app', quality, level: run.level, size: `${FRAME_SIZE.width}x${FRAME_SIZE.height}`, fps: Math.round(10000 / row.ms) / 10, pixelRatio: run.pixelRatio, N: run.resolution, path: run.path, ...row });
+      emit({
+        bench: 'app',
+        quality,
+        level: run.level,
+        size: `${FRAME_SIZE.width}x${FRAME_SIZE.height}`,
+        fps: Math.round(10000 / row.ms) / 10,
+        pixelRatio: run.pixelRatio,
+        msaa: run.msaa,
+        N: run.resolution,
+        cascades: run.cascades,
+        path: run.path,
+        ...row,
+      });
       if (quality !== 'as opened') continue;
       // The comparison right after the app as opened, so that the two share the machine's load.
       if (compareDir === null) {

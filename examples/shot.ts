@@ -28,7 +28,8 @@
  * the query or the skybox was bad, 'failure' otherwise, e.g. without WebGL 2).
  */
 import { Scene } from 'three';
-import { createAppCamera, createAppOcean, createAppRenderer, loadAppSkybox, prepareAppFrame } from '../src/app/appView';
+import { createAppCamera, createAppOcean, createAppRenderer, loadAppSkybox, prepareAppFrame, startingQuality } from '../src/app/appView';
+import { SceneOutput } from '../src/render/sceneOutput';
 import { Boat, centreAhead } from '../src/objects/boat';
 import { FlyControls } from '../src/app/flyControls';
 import { Inspector } from '../src/app/inspector';
@@ -251,13 +252,16 @@ async function start(): Promise<void> {
 
   // The app's renderer; preserveDrawingBuffer keeps the frame for toDataURL (it changes no pixel).
   const renderer = createAppRenderer({ preserveDrawingBuffer: true });
-  // Pixel ratio 1 at every quality level: the PNG has the size asked for (a level's grid still applies).
+  // Pixel ratio 1 at every quality level: the PNG has the size asked for (a level's grid, cascades
+  // and MSAA still apply).
   renderer.setPixelRatio(1);
   renderer.setSize(width, height);
   document.body.appendChild(renderer.domElement);
   const gl = renderer.getContext();
   if (!(gl instanceof WebGL2RenderingContext)) throw new Error('WebGL 2 is not available');
 
+  // The level's MSAA; the page lives as long as the shot, and the output with it.
+  const output = new SceneOutput(renderer, startingQuality(state).msaa);
   // worker: false, so the JS path's fields are ready when update returns.
   const ocean = createAppOcean(renderer, state, { worker: false });
   const scene = new Scene();
@@ -293,7 +297,7 @@ async function start(): Promise<void> {
     prepareAppFrame(ocean, camera, t);
     boat?.update();
     sunLight.update();
-    renderer.render(scene, camera);
+    output.render(scene, camera);
     inspector?.render(renderer);
     // A one-pixel readback waits for the GPU to finish the frame (gl.finish does not, in Chromium).
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);

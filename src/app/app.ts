@@ -14,6 +14,9 @@ import { ParameterError } from '../parameters/options';
 import { CLICKED_STONE, seaPointUnder } from '../render/seaPointer';
 import { SimulationClock, wrapLongTime } from '../timing/simulationClock';
 import { AdaptiveQuality } from '../timing/adaptiveQuality';
+import { validateParameters } from '../parameters/parameters';
+import { SceneOutput } from '../render/sceneOutput';
+import { applyQualityStep } from '../timing/applyQuality';
 import { Boat, centreAhead } from '../objects/boat';
 import { Buoys } from '../objects/buoys';
 import { createAppCamera, createAppOcean, createAppRenderer, loadAppSkybox, prepareAppFrame } from './appView';
@@ -22,7 +25,7 @@ import { Inspector } from './inspector';
 import { SunLight } from '../objects/sunLight';
 import { Panel } from './panel';
 import { describeSeaState, PATH_LABELS, StatusOverlay, TimingAverager } from './statusOverlay';
-import { parseState, roundTime, serializeState, type AppState } from './urlState';
+import { parseState, roundTime, serializeState, simulationParameters, type AppState } from './urlState';
 
 const container = document.querySelector<HTMLElement>('#app')!;
 const overlay = new StatusOverlay(document.querySelector<HTMLElement>('#status')!, CONTROLS_HELP);
@@ -40,23 +43,13 @@ const scene = new Scene();
 const camera = createAppCamera();
 const ocean = createAppOcean(renderer, state);
 
-// Adaptive quality (adaptiveQuality.ts): the render scale and the grid that hold the frame rate.
+// Adaptive quality (adaptiveQuality.ts): the render scale, MSAA, grid and cascades that hold the
+// frame rate. The scene goes to the canvas through `output`, which multisamples when the level says.
+const output = new SceneOutput(renderer);
 let quality = new AdaptiveQuality(state.quality, state.targetFps);
-/** The grid the ocean runs: the one asked for, at most the quality level's. */
-function qualityResolution(asked: number): number {
-  return Math.min(asked, quality.step.maxResolution);
-}
-/** Puts the quality level in force: the pixel ratio and the grid. */
-function applyQuality(): void {
-  renderer.setPixelRatio(devicePixelRatio * quality.step.renderScale);
-  const resolution = qualityResolution(state.resolution);
-  if (ocean.parameters.resolution === resolution) return;
-  try {
-    ocean.setParameters({ resolution });
-  } catch (error) {
-    // Cascades this far apart need the finer grid (parameters.ts): keep it.
-    if (!(error instanceof ParameterError)) throw error;
-  }
+/** Puts the quality level in force: the pixel ratio, MSAA, and the grid and cascades the ocean runs. */
+function applyQuality(asked = simulationParameters(state)): void {
+  applyQualityStep({ renderer, output, ocean, pixelRatio: devicePixelRatio }, asked, quality.step);
 }
 applyQuality();
 const sunLight = new SunLight(ocean);
@@ -152,12 +145,14 @@ controls.onChange = () => {
 function apply(changes: Partial<AppState>): void {
   const has = (key: keyof AppState) => Object.hasOwn(changes, key);
   const simulation: Record<string, unknown> = Object.fromEntries(Object.entries(changes).filter(([key]) => key in ocean.parameters));
-  if (changes.resolution !== undefined) simulation.resolution = qualityResolution(changes.resolution);
-  if (Object.keys(simulation).length > 0) ocean.setParameters(simulation);
-  if (changes.quality !== undefined || changes.targetFps !== undefined) {
-    quality = new AdaptiveQuality(changes.quality ?? state.quality, changes.targetFps ?? state.targetFps);
-    applyQuality();
-  }
+  // What is asked for must hold at every level (the grid and cascades may rise again later); the
+  // ocean runs its grid and cascades within the level's (applyQualityStep), the rest as asked.
+  const asked = validateParameters({ ...simulationParameters(state), ...simulation });
+  const { resolution, patchSizes, ...rest } = simulation;
+  if (Object.keys(rest).length > 0) ocean.setParameters(rest);
+  const newQuality = changes.quality !== undefined || changes.targetFps !== undefined;
+  if (newQuality) quality = new AdaptiveQuality(changes.quality ?? state.quality, changes.targetFps ?? state.targetFps);
+  if (newQuality || resolution !== undefined || patchSizes !== undefined) applyQuality(asked);
   const shading = {
     ior: changes.ior,
     absorption: changes.absorption,
@@ -277,7 +272,7 @@ renderer.setAnimationLoop((now: number) => {
   boat?.update();
   sunLight.update();
   const simulated = performance.now();
-  renderer.render(scene, camera);
+  output.render(scene, camera);
   inspector?.render(renderer);
   const rendered = performance.now();
   if (pendingCaptures.length > 0) {
@@ -311,6 +306,8 @@ const oceanApp = {
   state,
   panel,
   overlay,
+  /** Draws the scene onto the canvas, multisampled at the levels with MSAA. */
+  output,
   /** The adaptive quality in force (adaptiveQuality.ts). */
   get quality(): AdaptiveQuality {
     return quality;

@@ -7,13 +7,17 @@
 import { ACESFilmicToneMapping, PerspectiveCamera, WebGLRenderer, type WebGLRendererParameters } from 'three';
 import { Ocean, type OceanOptions } from '../ocean';
 import { ParameterError } from '../parameters/options';
-import { QUALITY_LEVELS, QUALITY_STEPS, type QualityStep } from '../timing/adaptiveQuality';
+import { QUALITY_LEVELS, QUALITY_STEPS, simulationAtQuality, type QualityStep } from '../timing/adaptiveQuality';
 import { skyboxFaceUrls } from '../render/skyEnvironment';
 import { simulationParameters, type AppState } from './urlState';
 
-/** The app's renderer: antialiased, ACES filmic tone mapping. The caller sets pixel ratio and size. */
+/**
+ * The app's renderer: ACES filmic tone mapping, and a canvas without antialiasing of its own, since
+ * that could not be turned off later: the quality level's MSAA is a SceneOutput's
+ * (render/sceneOutput.ts). The caller sets pixel ratio and size.
+ */
 export function createAppRenderer(parameters: WebGLRendererParameters = {}): WebGLRenderer {
-  const renderer = new WebGLRenderer({ antialias: true, ...parameters });
+  const renderer = new WebGLRenderer({ antialias: false, ...parameters });
   renderer.toneMapping = ACESFilmicToneMapping;
   return renderer;
 }
@@ -23,7 +27,6 @@ export function createAppCamera(aspect = 1): PerspectiveCamera {
   return new PerspectiveCamera(55, aspect, 0.5, 1e5);
 }
 
-/** The ocean `state` describes (simulation, path, sun, shading, wireframe), generated sky. */
 /**
  * The quality level a state is drawn at first: its fixed level, or for 'auto' the best (the app
  * then adapts it; `npm run shot` keeps its grid, at pixel ratio 1, so that its pictures are
@@ -33,10 +36,14 @@ export function startingQuality(state: Readonly<AppState>): QualityStep {
   return QUALITY_STEPS[state.quality === 'auto' ? QUALITY_LEVELS[0] : state.quality];
 }
 
+/**
+ * The ocean `state` describes (simulation, path, sun, shading, wireframe), generated sky, with the
+ * grid and cascades of its starting quality level.
+ */
 export function createAppOcean(renderer: WebGLRenderer, state: Readonly<AppState>, options: Pick<OceanOptions, 'worker'> = {}): Ocean {
   const ocean = new Ocean(renderer, {
     ...simulationParameters(state),
-    resolution: Math.min(state.resolution, startingQuality(state).maxResolution),
+    ...simulationAtQuality(state, startingQuality(state)),
     ...options,
     path: state.path,
     sunElevation: state.sunElevation,

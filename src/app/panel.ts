@@ -13,7 +13,8 @@ import { Color } from 'three';
 import { colorToLinear, SHADING_MODES } from '../parameters/sceneOptions';
 import { ParameterError, SPECTRUM_MODELS, SPREADING_MODELS, type SimulationParameters } from '../parameters/parameters';
 import { beaufortPreset, SEA_PRESETS } from '../spectrum/presets';
-import { assignState, cloneState, MIN_TARGET_FPS, PATH_PREFERENCES, urlRounded, type AppState, type Rgb } from './urlState';
+import { MIN_TARGET_FPS } from '../parameters/qualityOptions';
+import { assignState, cloneState, PATH_PREFERENCES, urlRounded, type AppState, type Rgb } from './urlState';
 import { QUALITY_SETTINGS, type QualitySetting } from '../timing/adaptiveQuality';
 
 /** The presets the panel offers: the named sea states, then Beaufort forces 0–12. */

@@ -42,7 +42,8 @@ import {
   type ShadingMode,
 } from '../parameters/sceneOptions';
 import { clampPitch, MIN_HEIGHT, wrapYaw } from './flyControls';
-import { DEFAULT_TARGET_FPS, QUALITY_SETTINGS, type QualitySetting } from '../timing/adaptiveQuality';
+import type { QualitySetting } from '../timing/adaptiveQuality';
+import { DEFAULT_QUALITY, QUALITY_OPTIONS } from '../parameters/qualityOptions';
 
 export type PathPreference = 'auto' | 'gpu' | 'js';
 export const PATH_PREFERENCES: readonly PathPreference[] = ['auto', 'gpu', 'js'];
@@ -92,8 +93,7 @@ export const DEFAULT_STATE: Readonly<AppState> = Object.freeze({
   buoys: false,
   boat: false,
   path: 'auto' as PathPreference,
-  quality: 'auto' as QualitySetting,
-  targetFps: DEFAULT_TARGET_FPS,
+  ...DEFAULT_QUALITY,
   timeScale: 1,
   paused: false,
   t: 0,
@@ -102,8 +102,6 @@ export const DEFAULT_STATE: Readonly<AppState> = Object.freeze({
 });
 
 export const MAX_TIME_SCALE = 10;
-export const MIN_TARGET_FPS = 5;
-export const MAX_TARGET_FPS = 240;
 
 /** A fresh, mutable copy of the defaults (arrays copied too). */
 export function defaultState(): AppState {
@@ -274,11 +272,8 @@ export function parseValue<K extends keyof AppState>(key: K, text: string): { va
     case 'path':
       return (PATH_PREFERENCES as readonly string[]).includes(text) ? ok(text) : bad(PATH_PREFERENCES.join(', '));
     case 'quality':
-      return (QUALITY_SETTINGS as readonly string[]).includes(text) ? ok(text) : bad(QUALITY_SETTINGS.join(', '));
-    case 'targetFps': {
-      const v = parseNumber(text);
-      return Number.isFinite(v) && v >= MIN_TARGET_FPS && v <= MAX_TARGET_FPS ? ok(v) : bad(`a number of frames per second from ${MIN_TARGET_FPS} to ${MAX_TARGET_FPS}`);
-    }
+    case 'targetFps':
+      return fromTable(QUALITY_OPTIONS, key);
     case 'wireframe':
     case 'inspector':
     case 'buoys':

@@ -21,7 +21,13 @@
  *   camera-height (metres, default 8)         height of the viewpoint above the mean sea level
  *   boat (boolean)                            a boat circling ahead of the view, leaving a wake on
  *                                             the local waves (src/objects/boat.ts)
- * A click or tap on the sea drops a stone there: rings spread on the local waves.
+ *   quality (auto, high, medium, low, lowest) 'auto' lowers and raises the quality level (render
+ *                                             scale, MSAA, grid, cascades: timing/adaptiveQuality.ts)
+ *                                             to hold target-fps; a level stays fixed
+ *   target-fps (default 30)                   the frame rate 'auto' holds
+ * A click or tap on the sea drops a stone there: rings spread on the local waves. When the quality
+ * level changes the element dispatches fft-ocean-quality-change (detail: { level, medianFrameMs });
+ * element.quality is the AdaptiveQuality in force.
  *
  * A bad value logs a console warning that names the attribute and quotes the value as written
  * (its first 40 characters), and the last good value stays.
@@ -56,6 +62,10 @@
  */
 import { ACESFilmicToneMapping, PerspectiveCamera, Scene, Vector2, WebGLRenderer } from 'three';
 import { Ocean } from '../ocean';
+import { SceneOutput } from '../render/sceneOutput';
+import { AdaptiveQuality, simulationAtQuality, type QualitySetting } from '../timing/adaptiveQuality';
+import { applyQualityStep } from '../timing/applyQuality';
+import { DEFAULT_QUALITY, QUALITY_OPTIONS } from '../parameters/qualityOptions';
 import { Boat } from '../objects/boat';
 import { SunLight } from '../objects/sunLight';
 import { SimulationClock, wrapLongTime } from '../timing/simulationClock';
@@ -97,6 +107,8 @@ export const FFT_OCEAN_ATTRIBUTES = [
   'paused',
   'camera-height',
   'boat',
+  'quality',
+  'target-fps',
 ] as const;
 export type FftOceanAttribute = (typeof FFT_OCEAN_ATTRIBUTES)[number];
 
@@ -112,6 +124,10 @@ export interface ElementSettings {
   cameraHeight: number;
   /** A boolean attribute: a boat circling ahead of the view, leaving a wake on the local waves. @defaultValue false */
   boat: boolean;
+  /** 'auto' lowers and raises the quality level (render scale, MSAA, grid, cascades) to hold target-fps; high, medium, low or lowest stays fixed. @defaultValue 'auto' */
+  quality: QualitySetting;
+  /** The frame rate 'auto' holds, frames per second, [5, 240]. @defaultValue 30 */
+  targetFps: number;
 }
 
 /** The element's current (last good) settings: the options its attributes set, and its own. */
@@ -127,6 +143,7 @@ export const ELEMENT_DEFAULTS: Readonly<ElementSettings> = {
   paused: false,
   cameraHeight: 8,
   boat: false,
+  ...DEFAULT_QUALITY,
 };
 
 /**
@@ -153,6 +170,10 @@ interface Live {
   scene: Scene;
   camera: PerspectiveCamera;
   ocean: Ocean;
+  /** Draws the scene onto the canvas, multisampled at the quality levels with MSAA. */
+  output: SceneOutput;
+  /** The pixel ratio at render scale 1. */
+  pixelRatio: number;
   resizeObserver: ResizeObserver;
   /** Removes every listener start() added. */
   removeListeners: () => void;
@@ -220,6 +241,8 @@ export class FftOceanElement extends ElementBase {
   private frameRequest = 0;
   private needsDraw = true;
   private framesDrawn = 0;
+  /** The quality level in force (the quality and target-fps attributes); kept while the element has no context. */
+  private adaptiveQuality = new AdaptiveQuality(ELEMENT_DEFAULTS.quality, ELEMENT_DEFAULTS.targetFps);
   private readonly onVisibilityChange = () => this.activityChanged();
   /** The observers of the viewport and of the NEAR_MARGIN and FAR_MARGIN bands while the element is on the page (else empty). */
   private proximityObservers: IntersectionObserver[] = [];
@@ -259,6 +282,11 @@ export class FftOceanElement extends ElementBase {
     return this.live?.scene ?? null;
   }
 
+  /** What draws the scene onto the canvas, multisampled or not as the quality level says; null with no context (see ocean). */
+  get output(): SceneOutput | null {
+    return this.live?.output ?? null;
+  }
+
   /** The element's canvas (inside its shadow root), or null when it has none (see ocean). */
   get canvas(): HTMLCanvasElement | null {
     return this.live?.canvas ?? null;
@@ -276,6 +304,14 @@ export class FftOceanElement extends ElementBase {
     }
     this.simulatedTime = seconds;
     this.invalidate();
+  }
+
+  /**
+   * The adaptive quality in force (timing/adaptiveQuality.ts): its setting, its level and step,
+   * and the median frame time that chose it.
+   */
+  get quality(): AdaptiveQuality {
+    return this.adaptiveQuality;
   }
 
   /** Frames drawn since the element was created (for diagnostics and tests). */
@@ -367,6 +403,18 @@ export class FftOceanElement extends ElementBase {
     } else if (name === 'boat') {
       s.boat = booleanAttribute(raw);
       if (this.live) this.showBoat(this.live);
+    } else if (name === 'quality' || name === 'target-fps') {
+      // The URL's rule and message (parameters/qualityOptions.ts), under the attribute's name.
+      const key = name === 'quality' ? 'quality' : 'targetFps';
+      try {
+        const value = raw === null ? ELEMENT_DEFAULTS[key] : parseOptionText(QUALITY_OPTIONS, key, raw);
+        Object.assign(s, { [key]: value });
+      } catch (error) {
+        reject(errorMessage(error), s[key]);
+        return;
+      }
+      this.adaptiveQuality = new AdaptiveQuality(s.quality, s.targetFps);
+      if (this.live) this.applyQuality(this.live);
     }
     this.invalidate();
   }
@@ -387,8 +435,13 @@ export class FftOceanElement extends ElementBase {
     else next[key] = parseOptionText(TABLES[group], name, raw);
     const ocean = this.live?.ocean;
     if (group === 'simulation') {
-      validateParameters(next); // throws a ParameterError naming the rule
-      ocean?.setParameters({ [key]: this.optionSetting(group, key, next) });
+      const asked = validateParameters(next); // throws a ParameterError naming the rule
+      // The grid and the cascades run within the quality level's.
+      if (key === 'resolution' || key === 'patchSizes') {
+        if (this.live) applyQualityStep(this.live, asked, this.adaptiveQuality.step);
+      } else {
+        ocean?.setParameters({ [key]: this.optionSetting(group, key, next) });
+      }
     } else if (group === 'sun') {
       ocean?.setSun(this.optionSetting(group, 'sunElevation', next) as number, this.optionSetting(group, 'sunAzimuth', next) as number);
     } else {
@@ -456,7 +509,8 @@ export class FftOceanElement extends ElementBase {
     canvas.setAttribute('aria-label', 'An animated view of the open sea');
     let renderer: WebGLRenderer;
     try {
-      renderer = new WebGLRenderer({ canvas, antialias: true, powerPreference: 'high-performance' });
+      // No antialiasing of the canvas's own, which could not be turned off: MSAA is the quality level's (SceneOutput).
+      renderer = new WebGLRenderer({ canvas, antialias: false, powerPreference: 'high-performance' });
     } catch (error) {
       this.fail(
         'This ocean needs WebGL 2, which this browser does not provide (or has switched off).',
@@ -469,6 +523,7 @@ export class FftOceanElement extends ElementBase {
     try {
       ocean = new Ocean(renderer, {
         ...s.simulation,
+        ...simulationAtQuality(validateParameters(s.simulation), this.adaptiveQuality.step),
         ...s.sun,
         ...s.shading,
         path: s.path,
@@ -479,7 +534,6 @@ export class FftOceanElement extends ElementBase {
       this.fail('The ocean could not start in this browser.', error);
       return;
     }
-    renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
     renderer.toneMapping = ACESFilmicToneMapping;
     const scene = new Scene();
     scene.add(ocean);
@@ -515,6 +569,8 @@ export class FftOceanElement extends ElementBase {
       scene,
       camera,
       ocean,
+      output: new SceneOutput(renderer),
+      pixelRatio: Math.min(window.devicePixelRatio || 1, 2),
       resizeObserver,
       contextLost: false,
       boat: null,
@@ -526,6 +582,7 @@ export class FftOceanElement extends ElementBase {
       },
     };
     this.live = live;
+    this.applyQuality(live);
     FftOceanElement.contextHolders.add(this);
     this.showBoat(live);
     this.clock.restart();
@@ -545,6 +602,7 @@ export class FftOceanElement extends ElementBase {
       this.showBoat(live, false);
       live.scene.remove(live.ocean);
       live.ocean.dispose();
+      live.output.dispose();
       live.renderer.dispose();
       // Give the context back now rather than at garbage collection: browsers allow few at once.
       live.renderer.forceContextLoss();
@@ -554,6 +612,11 @@ export class FftOceanElement extends ElementBase {
     this.message = null;
     this.clock.restart();
     this.needsDraw = true;
+  }
+
+  /** Puts the quality level in force: pixel ratio, MSAA, grid and cascades (applyQuality.ts). */
+  private applyQuality(live: Live): void {
+    applyQualityStep(live, validateParameters(this.settings.simulation), this.adaptiveQuality.step);
   }
 
   /** Puts the boat (and its light) in the scene, or takes it out and frees it, as `show` says. */
@@ -618,6 +681,12 @@ export class FftOceanElement extends ElementBase {
     const animating = !this.settings.paused;
     // Kept within what a double resolves (wrapLongTime): the same sea, and time that still moves.
     if (animating) this.simulatedTime = wrapLongTime(this.simulatedTime, live.ocean.repeatPeriod) + this.clock.advance(now, this.settings.timeScale);
+    // Only frames drawn one after another tell how fast they come (paused, frames come on changes).
+    if (animating && this.adaptiveQuality.frame(this.clock.realStep)) {
+      this.applyQuality(live);
+      const { level, medianFrameMs } = this.adaptiveQuality;
+      this.dispatchEvent(new CustomEvent('fft-ocean-quality-change', { detail: { level, medianFrameMs } }));
+    }
     if (animating || this.needsDraw) {
       try {
         this.draw(live);
@@ -647,7 +716,7 @@ export class FftOceanElement extends ElementBase {
   }
 
   private draw(live: Live): void {
-    const { renderer, scene, camera, ocean } = live;
+    const { scene, camera, ocean } = live;
     this.needsDraw = false;
     // The time as a double resolves it (the same sea): a time set far ahead (time = 1e300) would
     // otherwise put the drifting view out where the surface's coordinates overflow.
@@ -659,7 +728,7 @@ export class FftOceanElement extends ElementBase {
     // The far plane must reach the horizon.
     camera.far = Math.max(1e4, 1.5 * ocean.horizonDistanceFor(camera.position.y));
     camera.updateProjectionMatrix();
-    renderer.render(scene, camera);
+    live.output.render(scene, camera);
     this.framesDrawn++;
     if (this.framesDrawn === 1) this.dispatchEvent(new CustomEvent('fft-ocean-ready'));
   }

@@ -75,3 +75,15 @@ export function glTextureOf(renderer: WebGLRenderer, target: WebGLRenderTarget):
 export function useExternalFramebuffer(renderer: WebGLRenderer, target: WebGLRenderTarget, framebuffer: WebGLFramebuffer): void {
   (renderer as unknown as RendererInternals).setRenderTargetFramebuffer!(target, framebuffer);
 }
+
+/**
+ * Makes three.js draw into `target` as it draws onto the canvas: tone mapped, and encoded into the
+ * colour space of the target's texture (sRGB). three.js does this only for the canvas and for the
+ * render targets of WebXR, which it tells by `isXRRenderTarget` (read in r180 to r187 by
+ * WebGLRenderer's setProgram, WebGLPrograms, WebGLTextures and UniformsUtils); any other target
+ * gets linear colour without tone mapping. A multisampled target made so and copied onto a
+ * canvas without antialiasing gives the pixels a multisampled canvas would (render/sceneOutput.ts).
+ */
+export function drawLikeCanvas(target: WebGLRenderTarget): void {
+  (target as unknown as { isXRRenderTarget: boolean }).isXRRenderTarget = true;
+}

@@ -1,11 +1,15 @@
 /**
- * Adaptive quality: holds a frame rate by drawing fewer pixels and simulating coarser grids when
- * frames are slow, and more again when they are fast, for a render loop (the app, <fft-ocean>).
+ * Adaptive quality: holds a frame rate by drawing fewer pixels, without multisampling, and
+ * simulating coarser grids and fewer cascades when frames are slow, and more again when they are
+ * fast, for a render loop (the app, <fft-ocean>).
  *
  * Each level sets a render scale (a factor on the pixel ratio: under a software renderer the
- * frame's cost is about proportional to the pixels drawn) and a largest simulation grid N (the FFT's
- * cost is about N² log N per cascade). The loop reports every frame's real length; over a window of
- * WINDOW_SECONDS the median decides:
+ * frame's cost is about proportional to the pixels drawn), whether the picture is multisampled
+ * (MSAA: under SwiftShader it shades every sample, so it costs about as much as the pixels
+ * themselves), a largest simulation grid N (the FFT's cost is about N² log N per cascade) and a
+ * largest number of cascades (each one is an FFT per frame and a texture fetch per vertex and
+ * pixel; the finest go first, so the sea keeps its longest waves). The loop reports every
+ * frame's real length; over a window of WINDOW_SECONDS the median decides:
  *   - slower than the target by more than LOWER_ABOVE: one level down;
  *   - faster than RAISE_BELOW of the target, after STAY_SECONDS at the level: one level up.
  * The gap between the two (hysteresis), the median (one slow frame, a garbage collection, does not
@@ -13,6 +17,8 @@
  * afresh after every change (the frames just after one are not representative) and after a pause
  * in the frames (a hidden tab).
  */
+
+import { MAX_CASCADES } from '../parameters/parameters';
 
 /** The levels, best first. */
 export const QUALITY_LEVELS = ['high', 'medium', 'low', 'lowest'] as const;
@@ -26,14 +32,33 @@ export interface QualityStep {
   renderScale: number;
   /** The largest simulation grid N (the sea's resolution is the smaller of this and the one asked for). */
   maxResolution: number;
+  /** Whether the picture is drawn multisampled (4× MSAA; render/sceneOutput.ts). */
+  msaa: boolean;
+  /** The most cascades simulated and drawn: the largest patch sizes asked for, up to this many. */
+  maxCascades: number;
 }
 
 export const QUALITY_STEPS: Readonly<Record<QualityLevel, QualityStep>> = {
-  high: { renderScale: 1, maxResolution: 1024 },
-  medium: { renderScale: 0.75, maxResolution: 128 },
-  low: { renderScale: 0.5, maxResolution: 64 },
-  lowest: { renderScale: 0.35, maxResolution: 32 },
+  high: { renderScale: 1, maxResolution: 1024, msaa: true, maxCascades: MAX_CASCADES },
+  medium: { renderScale: 0.75, maxResolution: 128, msaa: false, maxCascades: MAX_CASCADES },
+  low: { renderScale: 0.5, maxResolution: 64, msaa: false, maxCascades: 2 },
+  lowest: { renderScale: 0.3, maxResolution: 32, msaa: false, maxCascades: 2 },
 };
+
+/**
+ * The grid and the cascades a sea asked for with `resolution` and `patchSizes` runs at under
+ * `step`: N at most the level's, and the largest patch sizes (the longest waves, which shape the
+ * sea; the finest cascades add ripples that a coarse picture cannot show anyway).
+ */
+export function simulationAtQuality(
+  asked: { readonly resolution: number; readonly patchSizes: readonly number[] },
+  step: QualityStep,
+): { resolution: number; patchSizes: number[] } {
+  return {
+    resolution: Math.min(asked.resolution, step.maxResolution),
+    patchSizes: asked.patchSizes.slice(Math.max(0, asked.patchSizes.length - step.maxCascades)),
+  };
+}
 
 /** The frame rate 'auto' holds unless told otherwise, frames per second. */
 export const DEFAULT_TARGET_FPS = 30;

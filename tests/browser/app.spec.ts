@@ -11,6 +11,7 @@ import { boatWake } from './boatWake';
 import { slowFrames } from './slowFrames';
 import { withHiddenCapabilities } from './hiddenCapabilities';
 import { withoutWebGL2 } from './withoutWebGL2';
+import { ALSO_ON_OLDEST_THREE } from './threeRange';
 
 type Vec3 = [number, number, number];
 
@@ -456,7 +457,7 @@ test.describe('the app', () => {
     expect(times.later - times.first).toBeGreaterThan(1); // and it moves with real time
   });
 
-  test("quality 'auto' lowers the render scale and the grid until the frames hold the target, and the status line says so; a fixed level stays", async ({ page }) => {
+  test("quality 'auto' lowers the render scale, MSAA, the grid and the cascades until the frames hold the target, and the status line says so; a fixed level stays", async ({ page }) => {
     test.setTimeout(120_000);
     // 60 fps is out of reach under SwiftShader: 'auto' must go down, a window (2 s) at a time.
     await openApp(page, 'quality=auto&targetFps=60', { width: 640, height: 360 }, false);
@@ -467,12 +468,20 @@ test.describe('the app', () => {
       pixelRatio: window.oceanApp.renderer.getPixelRatio(),
       resolution: window.oceanApp.ocean.parameters.resolution,
       asked: window.oceanApp.state.resolution,
+      msaa: window.oceanApp.output.msaa,
+      msaaTarget: window.oceanApp.output.multisampleTarget !== null,
+      cascades: window.oceanApp.ocean.simulation.layers.map((layer) => layer.spectrum.patchSize),
+      askedPatchSizes: window.oceanApp.state.patchSizes,
       frameMs: window.oceanApp.quality.medianFrameMs,
     }));
-    console.log(`quality auto at 640x360 for 60 fps: lowest level, pixel ratio ${lowest.pixelRatio}, N ${lowest.resolution} (asked ${lowest.asked}), median frame ${lowest.frameMs?.toFixed(0)} ms`);
-    expect(lowest.pixelRatio).toBeCloseTo(0.35, 6);
+    console.log(`quality auto at 640x360 for 60 fps: lowest level, pixel ratio ${lowest.pixelRatio}, N ${lowest.resolution} (asked ${lowest.asked}), cascades ${lowest.cascades}, median frame ${lowest.frameMs?.toFixed(0)} ms`);
+    expect(lowest.pixelRatio).toBeCloseTo(0.3, 6);
     expect(lowest.resolution).toBe(32);
     expect(lowest.asked).toBe(256); // the URL and the panel keep what was asked for
+    expect(lowest.msaa).toBe(false);
+    expect(lowest.msaaTarget).toBe(false); // freed
+    expect(lowest.cascades).toEqual([79.3, 457]); // the two largest patches: the longest waves stay
+    expect(lowest.askedPatchSizes).toEqual([13.7, 79.3, 457]);
     await expect(status).toContainText(/quality lowest \(auto, for 60 fps, frame \d+ ms\)/);
 
     // A fixed level is put in force at once and kept, whatever the frames.
@@ -482,9 +491,43 @@ test.describe('the app', () => {
       level: window.oceanApp.quality.level,
       pixelRatio: window.oceanApp.renderer.getPixelRatio(),
       resolution: window.oceanApp.ocean.parameters.resolution,
+      msaa: window.oceanApp.output.msaa,
+      cascades: window.oceanApp.ocean.simulation.layers.length,
     }));
-    expect(medium).toEqual({ level: 'medium', pixelRatio: 0.75, resolution: 128 });
+    expect(medium).toEqual({ level: 'medium', pixelRatio: 0.75, resolution: 128, msaa: false, cascades: 3 });
+    // Patch sizes changed in the panel run within the level's cascades; the URL keeps all of them.
+    await page.evaluate(() => window.oceanApp.set({ quality: 'low', patchSizes: [10, 50, 250, 1250] }));
+    const low = await page.evaluate(() => ({
+      cascades: window.oceanApp.ocean.simulation.layers.map((layer) => layer.spectrum.patchSize),
+      resolution: window.oceanApp.ocean.parameters.resolution,
+    }));
+    expect(low).toEqual({ cascades: [250, 1250], resolution: 64 });
+    await expect.poll(() => new URL(page.url()).searchParams.get('patchSizes')).toBe('10,50,250,1250');
+    await page.evaluate(() => window.oceanApp.set({ quality: 'medium' }));
     await expect.poll(() => new URL(page.url()).searchParams.get('quality')).toBe('medium');
+  });
+
+  // Also on the oldest three.js: the render target is drawn like the canvas through a three.js internal (drawLikeCanvas).
+  test('quality high multisamples (4x) through its render target onto a canvas without antialiasing: the picture differs from the one without MSAA at edges only', ALSO_ON_OLDEST_THREE, async ({ page }) => {
+    await openApp(page, 'resolution=32&paused=1&t=3&quality=high', { width: 480, height: 270 });
+    const target = await page.evaluate(async () => {
+      await window.oceanApp.capturePixels();
+      const target = window.oceanApp.output.multisampleTarget;
+      return { samples: target?.samples, width: target?.width, canvasAntialias: window.oceanApp.renderer.getContextAttributes()!.antialias };
+    });
+    expect(target).toEqual({ samples: 4, width: 480, canvasAntialias: false });
+    const withMsaa = await pixels(page);
+    await page.evaluate(() => (window.oceanApp.output.msaa = false));
+    const without = await pixels(page);
+    await page.evaluate(() => (window.oceanApp.output.msaa = true));
+    const again = await pixels(page);
+    let differing = 0;
+    for (let i = 0; i < without.length; i += 4) if (Math.abs(without[i] - withMsaa[i]) + Math.abs(without[i + 1] - withMsaa[i + 1]) + Math.abs(without[i + 2] - withMsaa[i + 2]) > 6) differing++;
+    const share = differing / (without.length / 4);
+    console.log(`MSAA on and off: ${(100 * share).toFixed(2)} % of pixels differ by more than 6 levels, mean difference ${meanAbsDifference(without, withMsaa).toFixed(3)}`);
+    expect(share).toBeGreaterThan(0.001); // the edges (the horizon, crests against the sky) change
+    expect(meanAbsDifference(without, withMsaa)).toBeLessThan(2); // and nothing else: tone mapping and sRGB as on the canvas
+    expect(meanAbsDifference(again, withMsaa)).toBe(0);
   });
 
   test('resizing the viewport resizes the canvas and the camera aspect', async ({ page }) => {

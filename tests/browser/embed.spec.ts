@@ -134,6 +134,55 @@ test('attributes apply live; a bad value warns, naming the attribute, and keeps 
   expect(warnings).toContain('keeping 20,100'); // patch-sizes kept its last good value
 });
 
+test('quality and target-fps: a level sets the render scale, MSAA, N and cascades; auto lowers them to hold the frame rate and says so; bad values warn as the URL does', async ({ page }) => {
+  test.setTimeout(120_000);
+  const log = await openPage(page);
+  const levels = await page.evaluate(async () => {
+    const el = window.embed.create({ resolution: '64' }); // quality high (the harness's default)
+    await window.embed.drawn(el, 2);
+    const look = () => ({
+      level: el.quality.level,
+      pixelRatio: el.renderer!.getPixelRatio(),
+      msaa: el.output!.msaa,
+      samples: el.output!.multisampleTarget?.samples ?? 0,
+      resolution: el.ocean!.parameters.resolution,
+      cascades: el.ocean!.simulation.layers.map((layer) => layer.spectrum.patchSize),
+    });
+    const high = look();
+    el.setAttribute('quality', 'lowest');
+    await window.embed.drawn(el, el.frameCount + 2);
+    const lowest = look();
+    // Bad values: the last good ones stay.
+    el.setAttribute('quality', 'best');
+    el.setAttribute('target-fps', '1000');
+    el.setAttribute('target-fps', 'fast');
+    const kept = { ...look(), targetFps: el.quality.targetFps };
+    // 'auto' for 120 fps, out of reach under SwiftShader: down a level per 2-second window.
+    const changes: { level: string; medianFrameMs: number | null }[] = [];
+    el.addEventListener('fft-ocean-quality-change', (event) => changes.push((event as CustomEvent).detail));
+    el.setAttribute('quality', 'auto');
+    el.setAttribute('target-fps', '120');
+    const started = performance.now();
+    while (el.quality.level !== 'lowest' && performance.now() - started < 60_000) await new Promise((resolve) => setTimeout(resolve, 200));
+    await window.embed.drawn(el, el.frameCount + 2);
+    return { high, lowest, kept, auto: look(), changes, targetFps: el.quality.targetFps };
+  });
+  console.log(`<fft-ocean> auto for 120 fps: ${levels.changes.map(({ level, medianFrameMs }) => `${level} (median ${medianFrameMs?.toFixed(0)} ms)`).join(' → ')}`);
+  expect(levels.high).toEqual({ level: 'high', pixelRatio: 1, msaa: true, samples: 4, resolution: 64, cascades: [13.7, 79.3, 457] });
+  expect(levels.lowest).toEqual({ level: 'lowest', pixelRatio: 0.3, msaa: false, samples: 0, resolution: 32, cascades: [79.3, 457] });
+  expect(levels.kept).toEqual({ ...levels.lowest, targetFps: 30 });
+  expect(levels.auto).toEqual(levels.lowest);
+  expect(levels.targetFps).toBe(120);
+  // It went down one level at a time from high, and said so each time.
+  expect(levels.changes.map(({ level }) => level)).toEqual(['medium', 'low', 'lowest']);
+  for (const { medianFrameMs } of levels.changes) expect(medianFrameMs).toBeGreaterThan(1000 / 120);
+  const warnings = log.warnings.join('\n');
+  // The app's URL rules and messages (parameters/qualityOptions.ts), under the attribute's name.
+  expect(warnings).toContain('<fft-ocean>: ignoring quality="best": quality must be one of auto, high, medium, low, lowest; got "best"; keeping lowest');
+  expect(warnings).toContain('<fft-ocean>: ignoring target-fps="1000": targetFps must be a number of frames per second from 5 to 240; got "1000"; keeping 30');
+  expect(warnings).toContain('<fft-ocean>: ignoring target-fps="fast": targetFps must be');
+});
+
 test('shading attributes from the table: colours as "#rrggbb", CSS or linear "r,g,b", also under their British names', async ({ page }) => {
   const log = await openPage(page);
   const result = await page.evaluate(async () => {

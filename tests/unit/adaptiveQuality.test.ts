@@ -1,5 +1,14 @@
 import { describe, expect, it } from 'vitest';
-import { AdaptiveQuality, QUALITY_LEVELS, QUALITY_STEPS, STAY_SECONDS, WINDOW_SECONDS, type QualityLevel } from '../../src/timing/adaptiveQuality';
+import { MAX_CASCADES } from '../../src/parameters/parameters';
+import {
+  AdaptiveQuality,
+  QUALITY_LEVELS,
+  QUALITY_STEPS,
+  simulationAtQuality,
+  STAY_SECONDS,
+  WINDOW_SECONDS,
+  type QualityLevel,
+} from '../../src/timing/adaptiveQuality';
 
 /**
  * Runs `seconds` of frames whose length is frameSeconds(level) (a device model), and returns the
@@ -68,5 +77,55 @@ describe('AdaptiveQuality', () => {
     quality.frame(30);
     run(quality, 1.5, () => 0.02);
     expect(quality.level).toBe('high');
+  });
+});
+
+describe('the quality levels', () => {
+  it('each level draws and simulates no more than the one above it, in every step', () => {
+    for (let i = 1; i < QUALITY_LEVELS.length; i++) {
+      const [better, worse] = [QUALITY_STEPS[QUALITY_LEVELS[i - 1]], QUALITY_STEPS[QUALITY_LEVELS[i]]];
+      expect(worse.renderScale, QUALITY_LEVELS[i]).toBeLessThan(better.renderScale);
+      expect(worse.maxResolution).toBeLessThanOrEqual(better.maxResolution);
+      expect(worse.maxCascades).toBeLessThanOrEqual(better.maxCascades);
+      expect(!worse.msaa || better.msaa, `${QUALITY_LEVELS[i]}: MSAA only where the level above has it`).toBe(true);
+    }
+  });
+
+  it('high keeps MSAA and every cascade; the levels below turn MSAA off; low and lowest draw fewer cascades, never none', () => {
+    expect(QUALITY_STEPS.high).toMatchObject({ renderScale: 1, msaa: true, maxCascades: MAX_CASCADES });
+    expect(QUALITY_STEPS.medium).toMatchObject({ msaa: false, maxCascades: MAX_CASCADES });
+    for (const level of ['low', 'lowest'] as const) {
+      expect(QUALITY_STEPS[level].msaa).toBe(false);
+      expect(QUALITY_STEPS[level].maxCascades).toBeLessThan(3); // the default sea has 3
+      expect(QUALITY_STEPS[level].maxCascades).toBeGreaterThanOrEqual(1);
+    }
+  });
+
+  it('cuts the finest cascades and keeps the largest patches (the longest waves), and caps N', () => {
+    const asked = { resolution: 256, patchSizes: [2.37, 13.7, 79.3, 457] };
+    expect(simulationAtQuality(asked, QUALITY_STEPS.high)).toEqual(asked);
+    expect(simulationAtQuality(asked, { ...QUALITY_STEPS.high, maxCascades: 2, maxResolution: 64 })).toEqual({ resolution: 64, patchSizes: [79.3, 457] });
+    expect(simulationAtQuality(asked, { ...QUALITY_STEPS.high, maxCascades: 1 }).patchSizes).toEqual([457]);
+    // Fewer cascades asked than a level allows: all of them; a finer grid than asked is never made.
+    expect(simulationAtQuality({ resolution: 32, patchSizes: [457] }, QUALITY_STEPS.medium)).toEqual({ resolution: 32, patchSizes: [457] });
+    expect(asked.patchSizes).toHaveLength(4); // the asked sizes are not changed
+  });
+
+  it('with MSAA and cascades in the cost, auto settles where the frames hold the target and stays', () => {
+    // A software renderer: a fixed part, the pixels (twice over with MSAA: SwiftShader shades every
+    // sample) and each cascade of the default three. 176 ms at high, 61 at medium, 32 at low.
+    const model = (level: QualityLevel) => {
+      const step = QUALITY_STEPS[level];
+      return 0.004 + 0.08 * step.renderScale ** 2 * (step.msaa ? 2 : 1) + 0.004 * Math.min(3, step.maxCascades);
+    };
+    // At 30 fps: lowered above 40 ms, raised below 16.7 ms; low is neither.
+    expect(model('medium')).toBeGreaterThan(0.04);
+    expect(model('low')).toBeLessThan(0.04);
+    expect(model('low')).toBeGreaterThan(0.0167);
+    const quality = new AdaptiveQuality('auto', 30);
+    const levels = run(quality, 120, model);
+    const changes = levels.filter((level, i) => i > 0 && level !== levels[i - 1]).length;
+    expect(levels[levels.length - 1]).toBe('low');
+    expect(changes).toBe(2);
   });
 });

@@ -45,10 +45,14 @@ function frames(count: number): Promise<void> {
   });
 }
 
-/** Creates `<fft-ocean>` with these attributes inside `parent` (default #box). */
+/**
+ * Creates `<fft-ocean>` with these attributes inside `parent` (default #box), at the fixed quality
+ * level high unless they give one: 'auto' would lower the render scale, grid and cascades within
+ * seconds under SwiftShader, and the tests compare pictures and fields over longer.
+ */
 function create(attributes: Record<string, string> = {}, parent: Element = document.querySelector('#box')!): FftOceanElement {
   const el = document.createElement('fft-ocean');
-  for (const [name, value] of Object.entries(attributes)) el.setAttribute(name, value);
+  for (const [name, value] of Object.entries({ quality: 'high', ...attributes })) el.setAttribute(name, value);
   parent.append(el);
   return el;
 }
