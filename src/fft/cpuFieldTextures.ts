@@ -63,6 +63,11 @@ export class CpuFieldTextures {
     }
   }
 
+  /** Whether the fields come from a worker (not given up). */
+  get inWorker(): boolean {
+    return this.worker !== null;
+  }
+
   /**
    * Why the fields are computed on the main thread although a worker was asked for (the worker
    * failed, or workers are blocked), or null.

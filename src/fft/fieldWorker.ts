@@ -44,7 +44,7 @@ export class FieldWorker {
   private replacements = 0;
   /** Arrays for the next request (a dead worker keeps the ones it was sent: then new ones). */
   private spare: FieldArrays | null = null;
-  private givenUp = false;
+  private stopped = false;
   /** Requests refused while one was in flight (updates the round trip took, less one), and the last round trip's count. */
   private updatesWhileBusy = 0;
   private latency = 1;
@@ -64,9 +64,14 @@ export class FieldWorker {
     this.start();
   }
 
+  /** Whether the worker has been given up (the owner computes on the main thread). */
+  get givenUp(): boolean {
+    return this.stopped;
+  }
+
   /** True while no request is in flight (and the worker has not been given up). */
   get idle(): boolean {
-    return !this.givenUp && this.sentAt === null;
+    return !this.stopped && this.sentAt === null;
   }
 
   /**
@@ -76,7 +81,7 @@ export class FieldWorker {
    * given up.
    */
   request(t: number, step: number, velocities: boolean): void {
-    if (this.givenUp) return;
+    if (this.stopped) return;
     if (this.sentAt !== null) {
       this.updatesWhileBusy++;
       const timeout = this.answered ? WORKER_TIMEOUT_MS : this.firstAnswerTimeout;
@@ -97,7 +102,7 @@ export class FieldWorker {
   dispose(): void {
     this.worker?.terminate();
     this.worker = null;
-    this.givenUp = true;
+    this.stopped = true;
   }
 
   /** A new worker, given the spectrum. */
@@ -144,7 +149,7 @@ export class FieldWorker {
   }
 
   private stop(fault: string): void {
-    this.givenUp = true;
+    this.stopped = true;
     this.sentAt = null;
     this.giveUp(fault);
   }

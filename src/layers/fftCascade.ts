@@ -10,7 +10,8 @@
  * the frame the fields arrive for (fieldWorker.ts), and the queries carry them the rest of the way
  * by their velocities (surfaceQuery.ts). Only when there are none within LONGEST_CARRY of the time
  * asked (the first query, a jump in time, a frame step far from the last, a worker given up or one
- * slower than the frames) are the fields computed here (`fieldsComputedHere` counts them).
+ * slower than the frames) are the fields computed here (`fieldsComputedHere` counts them): while a
+ * worker is on its way, a coarse copy (PROVISIONAL_QUERY_RESOLUTION), else the whole.
  *
  * Owns its backend, its query worker and its CPU copy for queries, and frees them in dispose().
  */
@@ -42,6 +43,14 @@ export const LONGEST_CARRY = 0.04;
  */
 export const QUERY_RESOLUTION = 256;
 
+/**
+ * The grid of the copy computed here while a query worker is on its way (the first queries, a jump
+ * in time): every cascade but the finest keeps its whole band on it at N = 256 (cascadeBands.ts:
+ * up to about 27 rings), the finest loses its ripples shorter than a 64th of its patch; it costs a
+ * sixteenth of a 256² copy, so no query waits long for it. Exact answers follow from the worker.
+ */
+export const PROVISIONAL_QUERY_RESOLUTION = 64;
+
 export class FftCascade implements WaveLayer {
   readonly textures;
   readonly frame: LayerFrame;
@@ -58,6 +67,7 @@ export class FftCascade implements WaveLayer {
   /** Fields computed here on demand: the cascade's (fieldsOnCpu), and the queries' copy when nothing is close enough. */
   private computed: FieldsComputedHere | null = null;
   private computedForQueries: FieldsComputedHere | null = null;
+  private computedProvisionally: FieldsComputedHere | null = null;
   private computedHere = 0;
 
   constructor(
@@ -102,15 +112,34 @@ export class FftCascade implements WaveLayer {
     const shared = this.backend instanceof CpuFieldTextures && this.querySpectrum === this.spectrum;
     const near = shared ? (this.backend as CpuFieldTextures).forQueries() : this.queryWorkerWanted ? this.fromQueryWorker(t) : null;
     if (near !== null && Math.abs(t - near.time) <= LONGEST_CARRY) return near;
-    if (this.querySpectrum === this.spectrum) this.computedForQueries = this.computed ??= new FieldsComputedHere(this.spectrum);
-    else this.computedForQueries ??= new FieldsComputedHere(this.querySpectrum);
-    if (!this.computedForQueries.isAt(t)) this.computedHere++;
-    return this.computedForQueries.at(t);
+    const here = this.workerComing ? this.provisionalCopy() : this.exactCopy();
+    if (!here.isAt(t)) this.computedHere++;
+    return here.at(t);
   }
 
   /** How many times the queries found no fields close enough to the time asked, and computed them here (once per time). */
   get fieldsComputedHere(): number {
     return this.computedHere;
+  }
+
+  /** Whether a worker will bring the queries' fields (the JS path's or the query worker, not given up). */
+  private get workerComing(): boolean {
+    const shared = this.backend instanceof CpuFieldTextures && this.querySpectrum === this.spectrum;
+    return shared ? (this.backend as CpuFieldTextures).inWorker : this.queryWorker?.givenUp === false;
+  }
+
+  /** The queries' copy computed here, for the time asked. */
+  private exactCopy(): FieldsComputedHere {
+    if (this.querySpectrum === this.spectrum) this.computedForQueries = this.computed ??= new FieldsComputedHere(this.spectrum);
+    else this.computedForQueries ??= new FieldsComputedHere(this.querySpectrum);
+    return this.computedForQueries;
+  }
+
+  /** A coarser copy computed here while a worker is on its way (PROVISIONAL_QUERY_RESOLUTION). */
+  private provisionalCopy(): FieldsComputedHere {
+    if (this.spectrum.resolution <= PROVISIONAL_QUERY_RESOLUTION) return this.exactCopy();
+    this.computedProvisionally ??= new FieldsComputedHere(reducedSpectrum(this.spectrum, PROVISIONAL_QUERY_RESOLUTION));
+    return this.computedProvisionally;
   }
 
   /** The query worker's newest fields (or null); the first query makes it and asks it for t. */
@@ -144,7 +173,7 @@ export class FftCascade implements WaveLayer {
   dispose(): void {
     this.backend.dispose();
     this.queryWorker?.dispose();
-    this.computed = this.computedForQueries = null;
+    this.computed = this.computedForQueries = this.computedProvisionally = null;
     this.newest = null;
   }
 }
