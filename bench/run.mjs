@@ -493,7 +493,8 @@ async function appBenchmarks(browser, server, port, results) {
   try {
     for (const quality of ['as opened', ...QUALITY_LEVELS]) {
       log(`the app at ${FRAME_SIZE.width}x${FRAME_SIZE.height}, quality ${quality}`);
-      await appPage.goto(`http://127.0.0.1:${port}/${quality === 'as opened' ? '' : `?quality=${quality}`}`);
+      // A fresh dev server compiles the app's modules at the first visit: more than the default 30 s on a busy machine.
+      await appPage.goto(`http://127.0.0.1:${port}/${quality === 'as opened' ? '' : `?quality=${quality}`}`, { timeout: 120_000 });
       await appPage.waitForFunction(() => window.oceanApp !== undefined, null, { timeout: 60_000 });
       await appPage.waitForTimeout(1000 * (quality === 'as opened' ? APP_SETTLE_SECONDS : APP_WARMUP_SECONDS));
       const samples = await withTimeout(appPage.evaluate(frameIntervals, APP_FRAMES), BROWSER_STEP_TIMEOUT_MS, `the app at quality ${quality}`);
