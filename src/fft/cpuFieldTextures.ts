@@ -3,8 +3,9 @@
  * samples the same thing whichever path runs. The fields are computed either right here
  * (`worker: false`: the result is in the textures as soon as update() returns) or in a Web Worker
  * (fieldWorker.ts: the page stays responsive; the textures show the latest finished fields,
- * asked for the time of the frame they arrive for). Owns its two DataTextures and the worker. The fields shown are also what the
- * queries read (forQueries): with the worker, once the queries ask, it computes the velocities too.
+ * asked for the time of the frame they arrive for). Owns its two DataTextures and the worker. The
+ * fields shown are also what the queries read (forQueries): with the worker, once the queries ask,
+ * it computes the velocities too.
  *
  * When the worker is given up (fieldWorker.ts says when), the computation moves onto the main
  * thread for good, and `workerFault` says why (OceanSimulation reports it as its path).
@@ -24,6 +25,7 @@ import type { InitialSpectrum } from '../spectrum/initialSpectrum';
 import type { LayerQueryFields } from '../layers/waveLayer';
 import { FIELD_TEXTURES } from './waveFieldLayout';
 import { FieldWorker, type FieldArrays } from './fieldWorker';
+import type { WorkerReply } from './waveFieldWorker';
 
 export class CpuFieldTextures {
   readonly displacement: DataTexture;
@@ -59,7 +61,7 @@ export class CpuFieldTextures {
     this.displacement = displacement;
     this.derivatives = derivatives;
     if (useWorker) {
-      this.worker = new FieldWorker(spectrum, 'JS worker', (reply) => this.receive(reply.t, reply), (fault) => this.runOnMainThread(fault));
+      this.worker = new FieldWorker(spectrum, 'JS worker', (reply) => this.receive(reply), (fault) => this.runOnMainThread(fault));
     }
   }
 
@@ -110,7 +112,7 @@ export class CpuFieldTextures {
   }
 
   /** Shows the worker's finished fields; returns the arrays they replace, for its next request. */
-  private receive(t: number, arrays: FieldArrays): FieldArrays {
+  private receive({ t, ...arrays }: WorkerReply): FieldArrays {
     const previous = { ...this.shownFields, velocities: this.shown?.hasVelocities ? this.shown.forQueries.velocities() : null };
     this.displacement.image.data = arrays.displacement;
     this.derivatives.image.data = arrays.derivatives;

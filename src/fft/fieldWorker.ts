@@ -69,11 +69,6 @@ export class FieldWorker {
     return this.stopped;
   }
 
-  /** True while no request is in flight (and the worker has not been given up). */
-  get idle(): boolean {
-    return !this.stopped && this.sentAt === null;
-  }
-
   /**
    * Asks for the fields for an update at time t (s) that came `step` s after the last one: at t, or
    * ahead of it by the latency (see the header); with their time derivative when `velocities`. Does

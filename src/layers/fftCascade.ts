@@ -3,8 +3,9 @@
  * (src/spectrum/cascadeBands.ts) by one FFT backend, the GPU's fragment passes
  * (src/fft/gpuWaveFields.ts) or JS (src/fft/cpuFieldTextures.ts, optionally in a worker).
  *
- * The queries (surfaceQuery.ts) read a CPU copy of the fields (at most QUERY_RESOLUTION² texels), which the main thread does not
- * compute while a worker can: on the JS path in a worker, the worker's fields the textures show
+ * The queries (surfaceQuery.ts) read a CPU copy of the fields (at most QUERY_RESOLUTION² texels),
+ * which the main thread does not compute while a worker can: on the JS path in a worker, the
+ * worker's fields the textures show
  * (with their velocities); on the GPU path, a second JS worker of its own (fieldWorker.ts), started
  * by the first query and then asked at each update that follows queries. Both ask for the time of
  * the frame the fields arrive for (fieldWorker.ts), and the queries carry them the rest of the way
@@ -58,15 +59,20 @@ export class FftCascade implements WaveLayer {
   private readonly backend: GpuWaveFields | CpuFieldTextures;
   /** The spectrum of the queries' CPU copy: the cascade's, or on a grid over QUERY_RESOLUTION a reduced one. */
   private readonly querySpectrum: InitialSpectrum;
+  /** The JS path's fields, where they are also the queries' copy (the same spectrum), else null. */
+  private readonly jsFieldsForQueries: CpuFieldTextures | null;
   /** The worker that computes the queries' CPU copy where the JS path's worker cannot (made by the first query). */
   private queryWorker: FieldWorker | null = null;
   /** The newest fields the query worker finished. */
   private newest: LayerQueryFields | null = null;
   /** Whether queries came since the last update (the query worker is then asked at the next). */
   private queried = false;
-  /** Fields computed here on demand: the cascade's (fieldsOnCpu), and the queries' copy when nothing is close enough. */
+  /**
+   * Fields computed here on demand: the cascade's (fieldsOnCpu, and the queries' copy when it has the
+   * same spectrum), the queries' reduced copy, and the provisional one.
+   */
   private computed: FieldsComputedHere | null = null;
-  private computedForQueries: FieldsComputedHere | null = null;
+  private computedReduced: FieldsComputedHere | null = null;
   private computedProvisionally: FieldsComputedHere | null = null;
   private computedHere = 0;
 
@@ -80,6 +86,7 @@ export class FftCascade implements WaveLayer {
     this.querySpectrum = spectrum.resolution > QUERY_RESOLUTION ? reducedSpectrum(spectrum, QUERY_RESOLUTION) : spectrum;
     this.backend =
       backend.kind === 'gpu' ? new GpuWaveFields(renderer, spectrum, backend.precision) : new CpuFieldTextures(renderer, spectrum, backend.worker);
+    this.jsFieldsForQueries = this.backend instanceof CpuFieldTextures && this.querySpectrum === spectrum ? this.backend : null;
     this.textures = { displacement: { value: this.backend.displacement }, derivatives: { value: this.backend.derivatives } };
     this.frame = { size: spectrum.patchSize, origin: [0, 0], periodic: true, resolution: spectrum.resolution };
   }
@@ -109,8 +116,8 @@ export class FftCascade implements WaveLayer {
 
   queryFields(t: number): LayerQueryFields {
     // The JS path's own fields where they are the queries' copy; else the query worker's.
-    const shared = this.backend instanceof CpuFieldTextures && this.querySpectrum === this.spectrum;
-    const near = shared ? (this.backend as CpuFieldTextures).forQueries() : this.queryWorkerWanted ? this.fromQueryWorker(t) : null;
+    const jsFields = this.jsFieldsForQueries;
+    const near = jsFields ? jsFields.forQueries() : this.queryWorkerWanted ? this.fromQueryWorker(t) : null;
     if (near !== null && Math.abs(t - near.time) <= LONGEST_CARRY) return near;
     const here = this.workerComing ? this.provisionalCopy() : this.exactCopy();
     if (!here.isAt(t)) this.computedHere++;
@@ -124,15 +131,14 @@ export class FftCascade implements WaveLayer {
 
   /** Whether a worker will bring the queries' fields (the JS path's or the query worker, not given up). */
   private get workerComing(): boolean {
-    const shared = this.backend instanceof CpuFieldTextures && this.querySpectrum === this.spectrum;
-    return shared ? (this.backend as CpuFieldTextures).inWorker : this.queryWorker?.givenUp === false;
+    const jsFields = this.jsFieldsForQueries;
+    return jsFields ? jsFields.inWorker : this.queryWorker?.givenUp === false;
   }
 
   /** The queries' copy computed here, for the time asked. */
   private exactCopy(): FieldsComputedHere {
-    if (this.querySpectrum === this.spectrum) this.computedForQueries = this.computed ??= new FieldsComputedHere(this.spectrum);
-    else this.computedForQueries ??= new FieldsComputedHere(this.querySpectrum);
-    return this.computedForQueries;
+    if (this.querySpectrum === this.spectrum) return (this.computed ??= new FieldsComputedHere(this.spectrum));
+    return (this.computedReduced ??= new FieldsComputedHere(this.querySpectrum));
   }
 
   /** A coarser copy computed here while a worker is on its way (PROVISIONAL_QUERY_RESOLUTION). */
@@ -173,7 +179,7 @@ export class FftCascade implements WaveLayer {
   dispose(): void {
     this.backend.dispose();
     this.queryWorker?.dispose();
-    this.computed = this.computedForQueries = this.computedProvisionally = null;
+    this.computed = this.computedReduced = this.computedProvisionally = null;
     this.newest = null;
   }
 }
