@@ -62,6 +62,13 @@ export class OceanSimulation {
   private preference: PathPreference;
   private readonly useWorker: boolean;
   private lastTime = NaN;
+  /**
+   * What the last rebuild replaced (cascades, foam), freed after the next update: by then their
+   * successors have drawn with the same shaders, which three.js then reuses instead of deleting
+   * and compiling them again (a program lives while a material uses it): a parameter change costs
+   * no shader compilation.
+   */
+  private retired: { dispose(): void }[] = [];
 
   constructor(
     private readonly renderer: WebGLRenderer,
@@ -165,9 +172,11 @@ export class OceanSimulation {
     this.localWavesTime = t;
     const { choppiness, windSpeed, foamAmount, foamPersistence } = this.currentParameters;
     this.currentFoam!.update(t, { choppiness, windSpeed, amount: foamAmount, persistence: foamPersistence });
+    this.disposeRetired();
   }
 
   dispose(): void {
+    this.disposeRetired();
     for (const layer of this.currentLayers) layer.dispose();
     this.currentLayers = [];
     this.currentFoam?.dispose();
@@ -183,7 +192,7 @@ export class OceanSimulation {
     const support = this.preference === 'js' ? { precision: null, reason: 'asked for' } : gpuSupport(this.renderer);
     let precision: GpuPrecision | null = support.precision;
     this.currentReason = support.reason;
-    // Build the new layers before freeing the old ones, so three.js can reuse compiled programs.
+    // The new layers are built before the old ones are freed (see `retired`).
     const previous = this.currentLayers;
     try {
       this.currentLayers = spectra.map((spectrum) => new FftCascade(this.renderer, spectrum, backendFor(precision, this.useWorker), this.useWorker));
@@ -199,12 +208,19 @@ export class OceanSimulation {
       warned.add(this.currentReason);
       console.warn(`three-fft-ocean: ${this.currentReason}; using the ${PATH_NAMES[this.currentPath]} path.`);
     }
-    for (const layer of previous) layer.dispose();
-    this.currentFoam?.dispose();
+    const replaced = this.currentFoam ? [...previous, this.currentFoam] : previous;
+    // Two rebuilds without an update between: the first one's layers never drew, the ones it retired did.
+    if (this.retired.length === 0) this.retired = replaced;
+    else for (const resource of replaced) resource.dispose();
     this.currentFoam = new WhitecapFoam(this.renderer, this.currentLayers, precision === null ? null : precision === 'float32' ? FloatType : HalfFloatType);
     this.lastTime = NaN;
     const localPath = this.localWaveOptions?.path ?? 'auto';
     this.rebuildLocalWaves(precision === 'float32' && (localPath === 'gpu' || (localPath === 'auto' && !isSoftwareRenderer(this.renderer))));
+  }
+
+  private disposeRetired(): void {
+    for (const resource of this.retired) resource.dispose();
+    this.retired = [];
   }
 
   /**

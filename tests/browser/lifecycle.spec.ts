@@ -82,6 +82,51 @@ test('50 Ocean create/dispose cycles on one renderer leave GPU memory and listen
   expect(errors).toEqual([]);
 });
 
+test('a parameter change reuses the compiled shaders, and what it replaced is freed after the next update', async ({ page }) => {
+  const errors = await openPage(page);
+  const result = await page.evaluate(() => {
+    const { Ocean, WebGLRenderer, Scene, PerspectiveCamera } = window.embed;
+    const renderer = new WebGLRenderer();
+    renderer.setSize(160, 90);
+    const scene = new Scene();
+    const camera = new PerspectiveCamera(50, 16 / 9, 0.5, 1e5);
+    camera.position.set(0, 8, 0);
+    camera.lookAt(50, 0, -50);
+    const ocean = new Ocean(renderer, { resolution: 64, seed: 3, path: 'gpu', localWaves: false });
+    scene.add(ocean);
+    let t = 4;
+    const frame = () => {
+      ocean.update((t += 0.1));
+      renderer.render(scene, camera);
+    };
+    // The programs three.js holds (each compiled once), and the live textures and geometries.
+    const state = () => ({ programs: renderer.info.programs!.map((program) => program.id).sort((a, b) => a - b), ...renderer.info.memory });
+    frame();
+    frame();
+    const before = state();
+    ocean.setParameters({ windSpeed: 14 }); // new spectra: new cascades and foam
+    const replacedStillHeld = renderer.info.memory.textures;
+    frame();
+    const afterOne = state();
+    // Two changes without an update between: the first one's cascades never drew.
+    ocean.setParameters({ windSpeed: 9 });
+    ocean.setParameters({ windSpeed: 11 });
+    frame();
+    const afterTwo = state();
+    ocean.dispose();
+    renderer.dispose();
+    return { before, replacedStillHeld, afterOne, afterTwo };
+  });
+  // The same programs: none deleted and compiled again (three.js keeps one while a material uses it).
+  expect(result.afterOne.programs).toEqual(result.before.programs);
+  expect(result.afterTwo.programs).toEqual(result.before.programs);
+  // Until the next update both seas' textures live; after it, as many as before.
+  expect(result.replacedStillHeld).toBeGreaterThan(result.before.textures);
+  expect(result.afterOne).toEqual(result.before);
+  expect(result.afterTwo).toEqual(result.before);
+  expect(errors).toEqual([]);
+});
+
 test('removing <fft-ocean> frees its renderer, context, canvas and listeners; putting it back starts again', async ({ page }) => {
   const errors = await openPage(page);
   const documentListeners = await listeners(page, 'document', 'visibilitychange');
