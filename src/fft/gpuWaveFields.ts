@@ -68,6 +68,9 @@ export function supportedGpuPrecision(renderer: WebGLRenderer): GpuPrecision | n
   return gpuSupport(renderer).precision;
 }
 
+/** MAX_DRAW_BUFFERS per context (gpuSupport). */
+const maxDrawBuffers = new WeakMap<WebGL2RenderingContext, number>();
+
 /** Colour attachments each FFT pass writes at once (LayeredSpectra: two array textures of four layers). */
 export const FFT_DRAW_BUFFERS = 8;
 
@@ -78,7 +81,9 @@ export const FFT_DRAW_BUFFERS = 8;
 export function gpuSupport(renderer: WebGLRenderer): { precision: GpuPrecision | null; reason: string } {
   const gl = renderer.getContext();
   if (!renderer.capabilities.isWebGL2 || !(gl instanceof WebGL2RenderingContext)) return { precision: null, reason: 'no WebGL 2' };
-  const drawBuffers = gl.getParameter(gl.MAX_DRAW_BUFFERS) as number;
+  // Asked once per context: getParameter waits for the GPU to finish its queue, and the limit stays.
+  const drawBuffers = maxDrawBuffers.get(gl) ?? (gl.getParameter(gl.MAX_DRAW_BUFFERS) as number);
+  maxDrawBuffers.set(gl, drawBuffers);
   if (drawBuffers < FFT_DRAW_BUFFERS) return { precision: null, reason: `MAX_DRAW_BUFFERS is ${drawBuffers} (the GPU FFT writes ${FFT_DRAW_BUFFERS} at once)` };
   if (renderer.extensions.has('EXT_color_buffer_float')) return { precision: 'float32', reason: '' };
   if (renderer.extensions.has('EXT_color_buffer_half_float')) return { precision: 'float16', reason: 'no EXT_color_buffer_float: half floats' };
@@ -288,20 +293,25 @@ class LayeredSpectra {
       }
     });
     gl.drawBuffers(attachments); // framebuffer state: set once
-    const status = gl.checkFramebufferStatus(gl.FRAMEBUFFER);
+    // Checked once per context and layout: the check waits for the GPU to finish its queue (a
+    // frame's work under SwiftShader), and the answer cannot change for the same formats and size.
+    const layout = `${this.arrays[0].texture.type}/${this.arrays[0].width}`;
+    const checked = completeLayouts.get(gl) ?? new Set<string>();
+    const status = checked.has(layout) ? gl.FRAMEBUFFER_COMPLETE : gl.checkFramebufferStatus(gl.FRAMEBUFFER);
     renderer.state.bindFramebuffer(gl.FRAMEBUFFER, null);
     if (status !== gl.FRAMEBUFFER_COMPLETE) {
       gl.deleteFramebuffer(framebuffer);
       throw new UnsupportedError('GPU FFT framebuffer', `GPU FFT: the layered framebuffer is incomplete (status 0x${status.toString(16)})`);
     }
+    completeLayouts.set(gl, checked.add(layout));
     this.framebuffer = framebuffer;
     this.attached = textures;
   }
 
   private deleteFramebuffer(renderer: WebGLRenderer): void {
-    const gl = renderer.getContext();
-    // After a lost and restored context the old framebuffer is already gone.
-    if (this.framebuffer !== null && gl.isFramebuffer(this.framebuffer)) gl.deleteFramebuffer(this.framebuffer);
+    // After a lost and restored context the old framebuffer is already gone: its textures are no
+    // longer the arrays' (asked of three.js, not of GL: gl.isFramebuffer would wait for the GPU).
+    if (this.framebufferIsCurrent(renderer)) renderer.getContext().deleteFramebuffer(this.framebuffer);
     this.framebuffer = null;
   }
 
@@ -310,6 +320,9 @@ class LayeredSpectra {
     for (const array of this.arrays) array.dispose();
   }
 }
+
+/** The layouts (texel type / size) of the layered framebuffer found complete, per GL context. */
+const completeLayouts = new WeakMap<WebGLRenderingContext | WebGL2RenderingContext, Set<string>>();
 
 function dataTexture(data: Float32Array, width: number, height: number, format: PixelFormat): DataTexture {
   const texture = new DataTexture(data, width, height, format, FloatType);

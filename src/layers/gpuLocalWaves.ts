@@ -32,10 +32,17 @@ import { MAX_IMPULSES_PER_STEP, SPONGE_WIDTH_FRACTION, spongeEdgeRate, type Loca
  */
 export function isSoftwareRenderer(renderer: WebGLRenderer): boolean {
   const gl = renderer.getContext();
-  const info = gl.getExtension('WEBGL_debug_renderer_info');
-  const name = String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER));
-  return /swiftshader|llvmpipe|softpipe|software/i.test(name);
+  // Asked once per context: getParameter may wait for the GPU to finish its queue.
+  let software = softwareContexts.get(gl);
+  if (software === undefined) {
+    const info = gl.getExtension('WEBGL_debug_renderer_info');
+    software = /swiftshader|llvmpipe|softpipe|software/i.test(String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER)));
+    softwareContexts.set(gl, software);
+  }
+  return software;
 }
+
+const softwareContexts = new WeakMap<WebGLRenderingContext | WebGL2RenderingContext, boolean>();
 
 /** Deep water in the shader: tanh(min(k·d, 20)) is 1 in float32. */
 const DEEP = 1e6;
