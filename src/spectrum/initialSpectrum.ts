@@ -25,7 +25,7 @@ import type { SimulationParameters } from '../parameters/parameters';
 import { cascadeBands, cascadeRepeatPeriod, keepsMode, type CascadeBand } from './cascadeBands';
 import { frequencyIndex } from './dispersion';
 import { SeededRandom } from './random';
-import { waveNumberSpectrum } from './seaState';
+import { fixedWaveNumberSpectrum } from './seaState';
 
 /** One cascade's initial spectrum. */
 export interface InitialSpectrum {
@@ -54,7 +54,7 @@ export type WaveNumberSpectrum = (kx: number, kz: number) => number;
 /** Ψ of the sea state the parameters describe (seaState.ts); Phillips' A refers to the largest patch. */
 export function seaStateSpectrum(params: SimulationParameters): WaveNumberSpectrum {
   const largestPatch = params.patchSizes[params.patchSizes.length - 1];
-  return (kx, kz) => waveNumberSpectrum(kx, kz, params, largestPatch);
+  return fixedWaveNumberSpectrum(params, largestPatch);
 }
 
 /** The signed frequency n' of texel index i (the FFT ordering described above). */
@@ -86,6 +86,13 @@ function createInitialSpectrum(
   const density = new Float32Array(n * n);
   const waveVectors = new Float32Array(4 * n * n);
 
+  // Ψ over the band first: h̃0(k) needs Ψ(−k), which is then the opposite texel's, evaluated once.
+  const psi = new Float64Array(n * n);
+  for (let j = 0; j < n; j++) {
+    for (let i = 0; i < n; i++) {
+      if (keepsMode(band, signedFrequency(i, n), signedFrequency(j, n))) psi[j * n + i] = spectrum(dk * signedFrequency(i, n), dk * signedFrequency(j, n));
+    }
+  }
   for (let j = 0; j < n; j++) {
     const kz = dk * signedFrequency(j, n);
     for (let i = 0; i < n; i++) {
@@ -93,12 +100,15 @@ function createInitialSpectrum(
       const texel = j * n + i;
       const k = Math.sqrt(kx * kx + kz * kz);
       const inBand = keepsMode(band, signedFrequency(i, n), signedFrequency(j, n));
-      const psi = inBand ? spectrum(kx, kz) : 0;
-      const scale = inBand ? Math.sqrt((spectrum(-kx, -kz) * dk * dk) / 4) : 0;
+      // The opposite texel is at exactly (−kx, −kz) off the rows and columns 0 and N/2 (there a 0
+      // would become −0, or −N/2 stay −N/2); where its Ψ is 0 it may be outside the band: ask.
+      const opposite = ((n - j) % n) * n + ((n - i) % n);
+      const mirrored = i % (n / 2) !== 0 && j % (n / 2) !== 0 && psi[opposite] !== 0;
+      const scale = inBand ? Math.sqrt(((mirrored ? psi[opposite] : spectrum(-kx, -kz)) * dk * dk) / 4) : 0;
       // Both deviates are drawn for every texel, so the sequence does not depend on Ψ.
       h0[2 * texel] = random.nextNormal() * scale;
       h0[2 * texel + 1] = random.nextNormal() * scale;
-      density[texel] = psi;
+      density[texel] = psi[texel];
 
       waveVectors[4 * texel] = i === n / 2 ? 0 : kx;
       waveVectors[4 * texel + 1] = j === n / 2 ? 0 : kz;

@@ -233,13 +233,27 @@ function angleFrom(kx: number, kz: number, [ux, uz]: [number, number]): number {
  * spreading |k̂·ŵ|² and ignores swell and `spreading`. Ψ(0) = 0; never NaN for valid parameters.
  */
 export function waveNumberSpectrum(kx: number, kz: number, p: SeaStateParameters, phillipsPatchSize: number): number {
+  return spectrumOf(kx, kz, p, p.spectrum === 'phillips' ? null : derived(p), phillipsPatchSize);
+}
+
+/**
+ * waveNumberSpectrum for fixed parameters (a copy of p as it is now): what the simulation samples
+ * N² times, without comparing the parameters with the last ones at every sample.
+ */
+export function fixedWaveNumberSpectrum(p: SeaStateParameters, phillipsPatchSize: number): (kx: number, kz: number) => number {
+  const fixed = { ...p };
+  const d = fixed.spectrum === 'phillips' ? null : deriveSeaState(fixed);
+  return (kx, kz) => spectrumOf(kx, kz, fixed, d, phillipsPatchSize);
+}
+
+/** waveNumberSpectrum with the derived sea state given (null for 'phillips'). */
+function spectrumOf(kx: number, kz: number, p: SeaStateParameters, d: DerivedSeaState | null, phillipsPatchSize: number): number {
   const k = magnitude(kx, kz);
   if (k === 0 || !(k < Infinity)) return 0;
-  if (p.spectrum === 'phillips') {
+  if (d === null) {
     const scale = phillipsPatchSize / (2 * Math.PI);
     return 2 * phillips(kx, kz, p) * (scale * scale);
   }
-  const d = derived(p);
   const omega = angularFrequency(k, p.depth);
   let variance = 0; // S·D of wind sea and swell, m²·s/rad per radian
   const wind = windSea(omega, p, d);
