@@ -29,6 +29,10 @@
 //                N = 256, 512, 1024, frames of 50 ms with steps of 1/60 s: every call's time after
 //                40 frames (the query workers started; goal: none over 1 ms), the first frame's
 //                calls (fields computed here), and how often fields were computed here afterwards.
+//   parameter-change  (with queries) a new wind set on the GPU path at N = 256 with the default
+//                cascades, as the app's panel sets it: the main thread's time in setParameters and
+//                in each of the two frames after it (update, 5 points' heightAt and normalAt, render
+//                at 1280x720), each from an idle GPU; `ms` is the median of their sum.
 //   targets      the issue's targets next to the figures (reported, never asserted): per update of
 //                three 256² cascades JS ≤ 9 ms and GPU ≤ 30 ms; a frame with three cascades
 //                ≤ 100 ms at 1280x720.
@@ -760,6 +764,24 @@ async function browserBenchmarks(results) {
         emit({ bench: 'query-frames', N: resolution, calls: run.callMs.length, ...row, largestCallMs, callsOver1Ms, computedHereAfterWarmUp: run.computedHere, firstFrameMs: run.firstFrameMs, target: 'no call over 1 ms' });
       }
     }
+    if (wanted('queries')) {
+      log('parameter change: setParameters (new wind) and the next two frames, GPU path, N = 256');
+      const run = await withTimeout(
+        page.evaluate((o) => window.frameBench.parameterChanges(o), { resolution: CASCADE_N, rounds: 9, width: 1280, height: 720 }),
+        BROWSER_STEP_TIMEOUT_MS,
+        'the parameter change',
+      );
+      const totals = run.setMs.map((ms, i) => ms + run.firstFrameMs[i] + run.secondFrameMs[i]);
+      results.parameterChange = stats(totals).ms;
+      emit({
+        bench: 'parameter-change',
+        N: CASCADE_N,
+        setParametersMs: stats(run.setMs).ms,
+        firstFrameMs: stats(run.firstFrameMs).ms,
+        secondFrameMs: stats(run.secondFrameMs).ms,
+        ...stats(totals),
+      });
+    }
     if (wanted('app')) await appBenchmarks(browser, server, port, results);
     if (!wanted('fields')) return;
     await page.goto(`http://127.0.0.1:${port}/bench/pages/bench.html`);
@@ -859,6 +881,7 @@ emit({
   compareDliWavesMs: results.compare?.ms ?? null,
   appAsOpenedVsDliWaves: ratio(results.app['as opened']?.ms, results.compare?.ms),
   queries1000Ms: results.queries,
+  parameterChangeMs: results.parameterChange ?? null,
   jsCascadesMs256: byCascades((count) => results.jsCascades[count]),
   jsBrowserCascadesMs256: byCascades((count) => results.jsBrowserCascades[count]),
   gpuCascadesMs256: byCascades(gpuCascades),

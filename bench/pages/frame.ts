@@ -175,10 +175,69 @@ async function queryFrames(options: { resolution: number; warmUp: number; frames
   }
 }
 
-declare global {
-  interface Window {
-    frameBench: { frames: typeof frames; queries: typeof queries; queryFrames: typeof queryFrames };
+/**
+ * A parameter change as the app's panel makes one, on the GPU path at N = `resolution` with the
+ * default cascades: setParameters (a new wind: new spectra), then the next two frames as an app
+ * draws them (update, heightAt and normalAt at 5 points, render at `width`×`height`). The main
+ * thread's time for each, per round; the GPU is let finish between them, so each part is timed
+ * from an idle GPU.
+ */
+async function parameterChanges(options: { resolution: number; rounds: number; width: number; height: number }): Promise<{ setMs: number[]; firstFrameMs: number[]; secondFrameMs: number[] }> {
+  const renderer = new WebGLRenderer({ antialias: false });
+  renderer.setPixelRatio(1);
+  renderer.setSize(options.width, options.height);
+  const gl = renderer.getContext();
+  const camera = new PerspectiveCamera(55, options.width / options.height, 0.5, 1e5);
+  camera.position.set(0, 12, 0);
+  camera.lookAt(60, 0, -80);
+  const scene = new Scene();
+  const ocean = new Ocean(renderer, { resolution: options.resolution, seed: 7, path: 'gpu', localWaves: false });
+  scene.add(ocean);
+  const normal = new Vector3();
+  const pixel = new Uint8Array(4);
+  let t = 10;
+  const frame = () => {
+    const start = performance.now();
+    ocean.update((t += 1 / 60));
+    for (let i = 0; i < 5; i++) {
+      ocean.heightAt(7 * i, 3);
+      ocean.normalAt(7 * i, 3, normal);
+    }
+    camera.far = 1.5 * ocean.horizonDistance;
+    camera.updateProjectionMatrix();
+    renderer.render(scene, camera);
+    return performance.now() - start;
+  };
+  const idle = async () => {
+    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+    await new Promise((resolve) => setTimeout(resolve, 300));
+  };
+  const result = { setMs: [] as number[], firstFrameMs: [] as number[], secondFrameMs: [] as number[] };
+  try {
+    for (let i = 0; i < 8; i++) {
+      frame();
+      await idle();
+    }
+    for (let round = 0; round < options.rounds; round++) {
+      const start = performance.now();
+      ocean.setParameters({ windSpeed: 8 + (round % 3) });
+      result.setMs.push(performance.now() - start);
+      result.firstFrameMs.push(frame());
+      await idle();
+      result.secondFrameMs.push(frame());
+      await idle();
+    }
+    return result;
+  } finally {
+    ocean.dispose();
+    renderer.dispose();
   }
 }
-window.frameBench = { frames, queries, queryFrames };
+
+declare global {
+  interface Window {
+    frameBench: { frames: typeof frames; queries: typeof queries; queryFrames: typeof queryFrames; parameterChanges: typeof parameterChanges };
+  }
+}
+window.frameBench = { frames, queries, queryFrames, parameterChanges };
 document.title = 'ready';
