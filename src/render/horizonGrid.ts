@@ -28,10 +28,21 @@ export const SKIRT_SCALE = 4;
 /** Width of the index-order stripes (see createHorizonGridGeometry). */
 const STRIPE_CELLS = 8;
 
-/** Cells on a side of each ring for a viewport this many pixels high: a power of two in [32, 128]. */
-export function cellsPerRingForViewport(heightPixels: number): number {
+/**
+ * The fewest cells on a side of a ring unless told otherwise (OceanSurface.fewestCellsPerRing): a
+ * small picture (an embed a couple of hundred pixels high) keeps a grid as fine as its waves need.
+ */
+export const FEWEST_CELLS_PER_RING = 32;
+/** The most: beyond, vertices cost more than the picture gains. */
+export const MOST_CELLS_PER_RING = 128;
+
+/**
+ * Cells on a side of each ring for a viewport this many pixels high: about one per 10 pixels of
+ * height, a power of two from `fewest` (a power of two) to MOST_CELLS_PER_RING.
+ */
+export function cellsPerRingForViewport(heightPixels: number, fewest = FEWEST_CELLS_PER_RING): number {
   const ideal = Math.log2(Math.max(1, heightPixels) / 10);
-  return 2 ** Math.min(7, Math.max(5, Math.round(ideal)));
+  return 2 ** Math.min(Math.log2(MOST_CELLS_PER_RING), Math.max(Math.log2(fewest), Math.round(ideal)));
 }
 
 /**

@@ -6,15 +6,20 @@
  */
 import { Mesh, Vector2, Vector3, type Camera, type Scene, type Texture, type WebGLRenderer } from 'three';
 import type { WaveLayer } from '../layers/waveLayer';
-import { cellsPerRingForViewport, createHorizonGridGeometry, farEdgeDistance, RingFrames } from './horizonGrid';
+import { ParameterError } from '../parameters/options';
+import { cellsPerRingForViewport, createHorizonGridGeometry, farEdgeDistance, FEWEST_CELLS_PER_RING, MOST_CELLS_PER_RING, RingFrames } from './horizonGrid';
 import { BACKGROUND_WATER } from './skyBackground';
 import { EYE_SIDE, OceanMaterial, type OceanMaterialInputs, type OceanShadingOptions } from './oceanMaterial';
 
 /** Metres from the surface within which the eye is taken to be at the waterline (about a camera's near distance). */
 const WATERLINE_BAND = 0.5;
 
+/** The fewest cells per ring that can be asked for (OceanSurface.fewestCellsPerRing). */
+const FEWEST_CELLS_ALLOWED = 16;
+
 export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeometry>, OceanMaterial> {
   private cellsPerRing = 0;
+  private fewestCells = FEWEST_CELLS_PER_RING;
   private readonly rings = new RingFrames();
   private readonly viewport = new Vector2();
   private readonly cameraPosition = new Vector3();
@@ -44,9 +49,27 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
     this.cellsPerRing = 32;
   }
 
+  /**
+   * The fewest cells on a side of each ring of the grid: the grid follows the drawing buffer's
+   * height (about a cell per 10 pixels) down to this many. A power of two from 16 to 128.
+   * The quality level 'lowest' sets 16 (timing/applyQuality.ts): its picture is a few hundred
+   * pixels high, and under a software renderer a quarter of the vertices saves a third of its frame.
+   * @defaultValue 32
+   */
+  get fewestCellsPerRing(): number {
+    return this.fewestCells;
+  }
+
+  set fewestCellsPerRing(cells: number) {
+    if (!(Number.isInteger(Math.log2(cells)) && cells >= FEWEST_CELLS_ALLOWED && cells <= MOST_CELLS_PER_RING)) {
+      throw new ParameterError('fewestCellsPerRing', cells, `a power of two from ${FEWEST_CELLS_ALLOWED} to ${MOST_CELLS_PER_RING}`);
+    }
+    this.fewestCells = cells;
+  }
+
   override onBeforeRender(renderer: WebGLRenderer, _scene: Scene, camera: Camera): void {
     renderer.getDrawingBufferSize(this.viewport);
-    const cells = cellsPerRingForViewport(this.viewport.y);
+    const cells = cellsPerRingForViewport(this.viewport.y, this.fewestCells);
     if (cells !== this.cellsPerRing) {
       this.geometry.dispose();
       this.geometry = createHorizonGridGeometry(cells);
@@ -71,7 +94,7 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
    */
   farEdgeDistanceFor(cameraHeight: number, renderer: WebGLRenderer): number {
     renderer.getDrawingBufferSize(this.viewport);
-    return farEdgeDistance(cameraHeight, this.waves().layers, cellsPerRingForViewport(this.viewport.y));
+    return farEdgeDistance(cameraHeight, this.waves().layers, cellsPerRingForViewport(this.viewport.y, this.fewestCells));
   }
 
   /** Centres the rings under `camera` (done before every render; public for the geometry test). */

@@ -19,6 +19,7 @@
  */
 
 import { MAX_CASCADES } from '../parameters/parameters';
+import { FEWEST_CELLS_PER_RING } from '../render/horizonGrid';
 
 /** The levels, best first. */
 export const QUALITY_LEVELS = ['high', 'medium', 'low', 'lowest'] as const;
@@ -36,13 +37,18 @@ export interface QualityStep {
   msaa: boolean;
   /** The most cascades simulated and drawn: the largest patch sizes asked for, up to this many. */
   maxCascades: number;
+  /**
+   * The fewest cells a side of each ring of the sea's grid (OceanSurface.fewestCellsPerRing): the
+   * grid follows the scaled-down picture's height down to this many.
+   */
+  fewestGridCells: number;
 }
 
 export const QUALITY_STEPS: Readonly<Record<QualityLevel, QualityStep>> = {
-  high: { renderScale: 1, maxResolution: 1024, msaa: true, maxCascades: MAX_CASCADES },
-  medium: { renderScale: 0.75, maxResolution: 128, msaa: false, maxCascades: MAX_CASCADES },
-  low: { renderScale: 0.5, maxResolution: 64, msaa: false, maxCascades: 2 },
-  lowest: { renderScale: 0.3, maxResolution: 32, msaa: false, maxCascades: 2 },
+  high: { renderScale: 1, maxResolution: 1024, msaa: true, maxCascades: MAX_CASCADES, fewestGridCells: FEWEST_CELLS_PER_RING },
+  medium: { renderScale: 0.75, maxResolution: 128, msaa: false, maxCascades: MAX_CASCADES, fewestGridCells: FEWEST_CELLS_PER_RING },
+  low: { renderScale: 0.5, maxResolution: 64, msaa: false, maxCascades: 2, fewestGridCells: FEWEST_CELLS_PER_RING },
+  lowest: { renderScale: 0.3, maxResolution: 32, msaa: false, maxCascades: 2, fewestGridCells: 16 },
 };
 
 /**

@@ -473,6 +473,8 @@ test.describe('the app', () => {
       cascades: window.oceanApp.ocean.simulation.layers.map((layer) => layer.spectrum.patchSize),
       askedPatchSizes: window.oceanApp.state.patchSizes,
       frameMs: window.oceanApp.quality.medianFrameMs,
+      fewestGridCells: window.oceanApp.ocean.surface.fewestCellsPerRing,
+      gridVertices: window.oceanApp.ocean.surface.geometry.getAttribute('position').count,
     }));
     console.log(`quality auto at 640x360 for 60 fps: lowest level, pixel ratio ${lowest.pixelRatio}, N ${lowest.resolution} (asked ${lowest.asked}), cascades ${lowest.cascades}, median frame ${lowest.frameMs?.toFixed(0)} ms`);
     expect(lowest.pixelRatio).toBeCloseTo(0.3, 6);
@@ -482,6 +484,7 @@ test.describe('the app', () => {
     expect(lowest.msaaTarget).toBe(false); // freed
     expect(lowest.cascades).toEqual([79.3, 457]); // the two largest patches: the longest waves stay
     expect(lowest.askedPatchSizes).toEqual([13.7, 79.3, 457]);
+    expect(lowest.fewestGridCells).toBe(16); // a 108-pixel-high picture: 16 cells a ring
     await expect(status).toContainText(/quality lowest \(auto, for 60 fps, frame \d+ ms\)/);
 
     // A fixed level is put in force at once and kept, whatever the frames.
@@ -493,8 +496,11 @@ test.describe('the app', () => {
       resolution: window.oceanApp.ocean.parameters.resolution,
       msaa: window.oceanApp.output.msaa,
       cascades: window.oceanApp.ocean.simulation.layers.length,
+      fewestGridCells: window.oceanApp.ocean.surface.fewestCellsPerRing,
+      gridVertices: window.oceanApp.ocean.surface.geometry.getAttribute('position').count,
     }));
-    expect(medium).toEqual({ level: 'medium', pixelRatio: 0.75, resolution: 128, msaa: false, cascades: 3 });
+    expect(medium).toMatchObject({ level: 'medium', pixelRatio: 0.75, resolution: 128, msaa: false, cascades: 3, fewestGridCells: 32 });
+    expect(medium.gridVertices).toBeGreaterThan(3 * lowest.gridVertices);
     // Patch sizes changed in the panel run within the level's cascades; the URL keeps all of them.
     await page.evaluate(() => window.oceanApp.set({ quality: 'low', patchSizes: [10, 50, 250, 1250] }));
     const low = await page.evaluate(() => ({

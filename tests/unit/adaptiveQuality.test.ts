@@ -87,6 +87,7 @@ describe('the quality levels', () => {
       expect(worse.renderScale, QUALITY_LEVELS[i]).toBeLessThan(better.renderScale);
       expect(worse.maxResolution).toBeLessThanOrEqual(better.maxResolution);
       expect(worse.maxCascades).toBeLessThanOrEqual(better.maxCascades);
+      expect(worse.fewestGridCells).toBeLessThanOrEqual(better.fewestGridCells);
       expect(!worse.msaa || better.msaa, `${QUALITY_LEVELS[i]}: MSAA only where the level above has it`).toBe(true);
     }
   });

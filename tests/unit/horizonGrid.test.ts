@@ -13,7 +13,9 @@ import { SeededRandom } from '../../src/spectrum/random';
 
 describe('horizon grid geometry', () => {
   it('has a vertex count that follows the viewport, not one fixed mesh', () => {
-    expect([225, 720, 1440].map(cellsPerRingForViewport)).toEqual([32, 64, 128]);
+    expect([225, 720, 1440].map((height) => cellsPerRingForViewport(height))).toEqual([32, 64, 128]);
+    // A lower floor (the quality level 'lowest') lets a small picture have a coarser grid, no larger one.
+    expect([100, 216, 225, 720, 5000].map((height) => cellsPerRingForViewport(height, 16))).toEqual([16, 16, 16, 64, 128]);
     const counts = [32, 64, 128].map((cells) => createHorizonGridGeometry(cells).getAttribute('position').count);
     expect(counts[1]).toBeGreaterThan(3 * counts[0]);
     expect(counts[2]).toBeGreaterThan(3 * counts[1]);
