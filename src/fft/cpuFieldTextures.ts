@@ -24,7 +24,8 @@ import { CpuWaveFields } from './cpuWaveFields';
 import type { InitialSpectrum } from '../spectrum/initialSpectrum';
 import type { LayerQueryFields } from '../layers/waveLayer';
 import { FIELD_TEXTURES } from './waveFieldLayout';
-import { FieldWorker, type FieldArrays } from './fieldWorker';
+import type { FieldArrays } from './fieldArrays';
+import { FieldWorker } from './fieldWorker';
 import type { WorkerReply } from './waveFieldWorker';
 
 export class CpuFieldTextures {

@@ -1,18 +1,16 @@
 /**
  * Web Worker that computes one cascade's JS fields off the main thread (driven by fieldWorker.ts):
  * the fields at the time asked, and with `velocities` their time derivative too (for the queries).
- * The result arrays are transferred both ways, so a frame allocates nothing.
+ * The result arrays are transferred both ways and reused, so a frame allocates nothing; arrays not
+ * given back yet (the first requests) are made here, not on the main thread.
  */
 import { CpuWaveFields, type SpectrumForFields } from './cpuWaveFields';
+import { buffersOf, type FieldArrays } from './fieldArrays';
 
-/** A set of field arrays in the layout of waveFieldLayout.ts; `velocities` as CpuWaveFields.updateVelocities, or null. */
-export interface FieldArrays {
-  displacement: Float32Array;
-  derivatives: Float32Array;
-  velocities: Float32Array | null;
-}
-
-export type WorkerRequest = { type: 'spectrum'; spectrum: SpectrumForFields } | ({ type: 'update'; t: number } & FieldArrays);
+export type WorkerRequest =
+  | { type: 'spectrum'; spectrum: SpectrumForFields }
+  /** `spare`: arrays to fill (transferred), or null; `velocities`: whether to compute them. */
+  | { type: 'update'; t: number; velocities: boolean; spare: FieldArrays | null };
 
 export interface WorkerReply extends FieldArrays {
   t: number;
@@ -27,11 +25,18 @@ self.onmessage = (event: MessageEvent<WorkerRequest>) => {
     return;
   }
   if (!fields) throw new Error('waveFieldWorker: update before spectrum');
-  fields.update(request.t);
-  request.displacement.set(fields.displacement);
-  request.derivatives.set(fields.derivatives);
-  request.velocities?.set(fields.updateVelocities(request.t));
-  const { t, displacement, derivatives, velocities } = request;
+  const { t, spare } = request;
+  const length = fields.displacement.length;
+  fields.update(t);
+  const displacement = spare?.displacement ?? new Float32Array(length);
+  const derivatives = spare?.derivatives ?? new Float32Array(length);
+  displacement.set(fields.displacement);
+  derivatives.set(fields.derivatives);
+  let velocities: Float32Array | null = null;
+  if (request.velocities) {
+    velocities = spare?.velocities ?? new Float32Array(length);
+    velocities.set(fields.updateVelocities(t));
+  }
   const reply: WorkerReply = { t, displacement, derivatives, velocities };
-  (self as unknown as Worker).postMessage(reply, [displacement.buffer, derivatives.buffer, ...(velocities ? [velocities.buffer] : [])]);
+  (self as unknown as Worker).postMessage(reply, buffersOf(reply));
 };

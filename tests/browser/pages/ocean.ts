@@ -579,7 +579,11 @@ const harness = {
     await runUntilShown(1, 20);
     const before = ocean.path.running;
     const { worker } = (layers[0] as unknown as { backend: { worker: { worker: Worker } } }).backend;
-    if (fault === 'throws') worker.worker.postMessage({ type: 'update', t: 2 }); // no arrays: it throws
+    if (fault === 'throws') {
+      // Arrays too short for the fields: filling them throws (a RangeError) in the worker.
+      const spare = { displacement: new Float32Array(1), derivatives: new Float32Array(1), velocities: null };
+      worker.worker.postMessage({ type: 'update', t: 2, velocities: false, spare });
+    }
     if (fault === 'terminated') worker.worker.terminate();
     // Long enough for a silent worker to be given up (4 s) and its replacement to answer.
     const largestError = await runUntilShown(3, 20);
