@@ -67,6 +67,9 @@ uniform bool captureRestPoint;
 void main() {
   // First, so that every path below writes the same depth (ocean.vert).
   #include <logdepthbuf_fragment>
+  // The rest point's change to the next pixel, for the foam (foam.glsl), taken before any branch:
+  // derivatives are defined only where every pixel of a 2×2 quad runs the same code.
+  vec2 restPerPixelX = dFdx(vRestFromEye), restPerPixelY = dFdy(vRestFromEye);
 #ifdef CAPTURE_POSITIONS
   // Geometry test: the displaced position, or the rest point with its mip level and ring (from the eye).
   gl_FragColor = captureRestPoint ? vec4(vRestFromEye, vLod, vRing) : vec4(vFromEye, 1.0);
@@ -134,7 +137,7 @@ void main() {
   vec3 colour = reflectance * sky + (1.0 - reflectance) * water + caustic * skySunVisibility * causticColor + glint;
   // Most of the sea has no foam: it pays for the pattern and the foam's light only where there is.
   if (vFoam > FOAM_VISIBLE) {
-    float opacity = foamOpacity(vFoam, vRestFromEye + foamPatternOrigin);
+    float opacity = foamOpacity(vFoam, vRestFromEye + foamPatternOrigin, restPerPixelX, restPerPixelY);
     if (opacity > 0.0) colour = mix(colour, foamRadiance(normal, sunDirection, sunLight, environmentRadiance(normal)), opacity);
   }
   #endif
