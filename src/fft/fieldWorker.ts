@@ -23,7 +23,6 @@ import type { InitialSpectrum } from '../spectrum/initialSpectrum';
 import { buffersOf, type FieldArrays } from './fieldArrays';
 import type { WorkerReply, WorkerRequest } from './waveFieldWorker';
 
-
 /** A worker that has not answered a request after this long (ms) counts as dead. */
 const WORKER_TIMEOUT_MS = 4000;
 /**
