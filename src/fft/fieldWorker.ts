@@ -19,7 +19,7 @@
  * fails before its first answer, or the WORKER_REPLACEMENTS-th failure, is given up: the owner is
  * told why (`giveUp`) and computes on the main thread from then on.
  */
-import type { InitialSpectrum } from '../spectrum/initialSpectrum';
+import type { SpectrumForFields } from './cpuWaveFields';
 import { buffersOf, type FieldArrays } from './fieldArrays';
 import type { WorkerReply, WorkerRequest } from './waveFieldWorker';
 
@@ -55,7 +55,7 @@ export class FieldWorker {
    * given up; `firstAnswerTimeout` (ms) is how long a new worker may take to answer its first request.
    */
   constructor(
-    private readonly spectrum: InitialSpectrum,
+    private readonly spectrum: SpectrumForFields,
     private readonly role: string,
     private readonly receive: (reply: WorkerReply) => FieldArrays | null,
     private readonly giveUp: (fault: string) => void,

@@ -219,6 +219,7 @@ export class OceanSimulation {
   }
 
   private disposeRetired(): void {
+    if (this.retired.length === 0) return; // every update asks: no new array per frame
     for (const resource of this.retired) resource.dispose();
     this.retired = [];
   }
