@@ -39,19 +39,21 @@ export class CpuWaveFields {
   private readonly textures: readonly Float32Array[];
   private readonly phaseTable = new Float32Array(4 * PHASE_TABLE_SIZE);
   /**
-   * Pairs (row, partner row) of FFT input rows, the partner holding the frequencies −kz of the
-   * row's kz; each pair once, as both its rows are written together. The rows kz = 0 and
-   * kz = Nyquist are their own partners.
-   */
-  private readonly rowPairs: Uint32Array;
-  /** For each column of an FFT input row, the column holding −kx. */
-  private readonly partnerColumns: Uint32Array;
-  /**
-   * The spectrum's texels of the first row of each pair, in the FFT's input order so that evolve()
-   * reads them in order, MODE_LENGTH numbers each. Float64: the sums of amplitudes are exact.
+   * The modes with a nonzero amplitude, each pair ±k once (both are written together), in the
+   * FFT's input order so that evolve() writes nearly in order: MODE_LENGTH numbers each. Float64:
+   * the sums of amplitudes are exact. A coarse cascade keeps only a few per cent of its grid.
    */
   private readonly modes: Float64Array;
+  /**
+   * For each of `modes`, where field 0 of k and of −k goes in the FFT input, as row·N + column
+   * (the row stride differs between the fields' FFT and the velocities').
+   */
+  private readonly modePlaces: Uint32Array;
+  /** Whether the FFT input holds other (zero) modes too, to be cleared before each evolve(). */
+  private readonly hasZeroModes: boolean;
   private readonly size: number;
+  /** The largest |x| or |z| frequency of a mode the spectrum keeps: the FFTs skip what lies beyond. */
+  private readonly inputBand: number;
 
   private readonly repeatPeriod: number;
   /** The velocity texels and the two-field FFT that makes them, once velocities are first asked for. */
@@ -60,37 +62,37 @@ export class CpuWaveFields {
   constructor(spectrum: SpectrumForFields) {
     this.repeatPeriod = spectrum.repeatPeriod;
     const n = (this.size = spectrum.resolution);
-    const fft = (this.fft = new BatchedInverseFft2D(n, PACKED_SPECTRA));
+    this.inputBand = largestFrequency(spectrum);
+    const fft = (this.fft = new BatchedInverseFft2D(n, PACKED_SPECTRA, this.inputBand));
     this.displacement = new Float32Array(4 * n * n);
     this.derivatives = new Float32Array(4 * n * n);
     this.textures = [this.displacement, this.derivatives];
-    // Where frequency texel (i, j) goes: field 0's input index is row·S + column.
-    const rowOf = (j: number) => Math.floor(fft.inputIndex(0, 0, j) / fft.rowStride);
-    const columnOf = (i: number) => fft.inputIndex(0, i, 0);
+    // Each pair of wave vectors ±k once, as the one of the two with the lower input index, in the
+    // order of the input indexes (so that evolve() writes through the buffers nearly in order).
+    const pairCount = (n * n) / 2 + 2; // k ≡ −k at (0, 0), (N/2, 0), (0, N/2) and (N/2, N/2)
+    const modes = new Float64Array(MODE_LENGTH * pairCount);
+    const indexes = new Uint32Array(2 * pairCount);
+    // The input row of frequency j, and column of frequency i: the bit reversal, its own inverse,
+    // so it also gives the frequency of an input row or column.
+    const placeOf = Uint32Array.from({ length: n }, (_, i) => fft.inputIndex(0, i, 0));
     const negated = (index: number) => (n - index) % n;
-    this.partnerColumns = new Uint32Array(n);
-    for (let i = 0; i < n; i++) this.partnerColumns[columnOf(i)] = columnOf(negated(i));
-    const pairs: number[] = [];
-    const rowFrequencies: number[] = [];
-    for (let j = 0; j < n; j++) {
-      const partner = rowOf(negated(j));
-      if (rowOf(j) <= partner) {
-        pairs.push(rowOf(j), partner);
-        rowFrequencies.push(j);
+    let kept = 0;
+    for (let row = 0; row < n; row++) {
+      for (let column = 0; column < n; column++) {
+        const [i, j] = [placeOf[column], placeOf[row]];
+        const at = row * n + column;
+        const partnerAt = placeOf[negated(j)] * n + placeOf[negated(i)];
+        const from = 4 * (j * n + i);
+        const [aRe, aIm, bRe, bIm] = spectrum.amplitudes.subarray(from, from + 4);
+        if (partnerAt < at || (aRe === 0 && aIm === 0 && bRe === 0 && bIm === 0)) continue;
+        modes.set([aRe + bRe, bIm - aIm, aIm + bIm, aRe - bRe], MODE_LENGTH * kept);
+        modes.set(spectrum.waveVectors.subarray(from, from + 4), MODE_LENGTH * kept + 4);
+        indexes.set([at, partnerAt], 2 * kept++);
       }
     }
-    this.rowPairs = Uint32Array.from(pairs);
-    this.modes = new Float64Array(MODE_LENGTH * n * rowFrequencies.length);
-    const amplitudes = spectrum.amplitudes;
-    rowFrequencies.forEach((j, pair) => {
-      for (let i = 0; i < n; i++) {
-        const from = 4 * (j * n + i);
-        const to = MODE_LENGTH * (pair * n + columnOf(i));
-        const [aRe, aIm, bRe, bIm] = amplitudes.subarray(from, from + 4);
-        this.modes.set([aRe + bRe, bIm - aIm, aIm + bIm, aRe - bRe], to);
-        this.modes.set(spectrum.waveVectors.subarray(from, from + 4), to + 4);
-      }
-    });
+    this.modes = modes.slice(0, MODE_LENGTH * kept);
+    this.modePlaces = indexes.slice(0, 2 * kept);
+    this.hasZeroModes = kept < pairCount;
   }
 
   /** Computes every field at time t (seconds). Allocates nothing. */
@@ -115,7 +117,7 @@ export class CpuWaveFields {
    */
   updateVelocities(t: number): Float32Array {
     const n = this.size;
-    this.velocityFields ??= { texels: new Float32Array(4 * n * n), fft: new BatchedInverseFft2D(n, 2) };
+    this.velocityFields ??= { texels: new Float32Array(4 * n * n), fft: new BatchedInverseFft2D(n, 2, this.inputBand) };
     const { texels, fft } = this.velocityFields;
     fillPhaseTable(this.phaseTable, t, this.repeatPeriod);
     this.evolve(fft, true);
@@ -128,76 +130,99 @@ export class CpuWaveFields {
    * displacement's two), written into the input of `fft` (whose layout is this.fft's).
    */
   private evolve(fft: BatchedInverseFft2D, velocities: boolean): void {
-    const n = this.size;
-    const { phaseTable: table, modes, rowPairs, partnerColumns } = this;
+    const { phaseTable: table, modes, modePlaces } = this;
     // ω = m·ω0 (dispersion.ts), for the velocities.
     const omega0 = (2 * Math.PI) / this.repeatPeriod;
     const re = fft.inputReal;
     const im = fft.inputImag;
-    const stride = fft.rowStride;
+    const n = this.size;
+    if (this.hasZeroModes) {
+      // The FFT ran in place: its buffers hold the last fields. The zero modes are written here.
+      re.fill(0);
+      im.fill(0);
+    }
     // A local copy: an imported binding read in the loop can cost a getter call per read (Vite SSR).
     const lowMask = PHASE_TABLE_SIZE - 1;
-    for (let pair = 0, t = 0; pair < rowPairs.length / 2; pair++) {
-      // Packed spectrum f of column c lives at row·S + f·N + c. In a row that is its own partner
-      // every texel is written twice, as k and as the partner of −k: the same value up to rounding.
-      const row = rowPairs[2 * pair] * stride;
-      const partnerRow = rowPairs[2 * pair + 1] * stride;
-      for (let column = 0; column < n; column++, t += MODE_LENGTH) {
-        const at = row + column;
-        const partnerAt = partnerRow + partnerColumns[column];
-        const kx = modes[t + 4];
-        const kz = modes[t + 5];
-        const kInverse = modes[t + 6];
-        const m = modes[t + 7];
-        // e^{iωt} = e^{i·(m mod 256)·φ} · e^{i·256·(m div 256)·φ}
-        const low = 4 * (m & lowMask);
-        const high = 4 * (m >> 8) + 2;
-        const er = table[low] * table[high] - table[low + 1] * table[high + 1];
-        const ei = table[low] * table[high + 1] + table[low + 1] * table[high];
-        // h̃(k) = a·e + b·conj(e) = hr + i·hi, with a = h̃0(k), b = h̃0*(−k) (see MODE_LENGTH);
-        // h̃(−k) = conj(h̃(k)). Its time derivative: iω·(a·e − b·conj(e)), also conjugate at −k.
-        let hr = modes[t] * er + modes[t + 1] * ei;
-        let hi = modes[t + 2] * er + modes[t + 3] * ei;
-        if (velocities) {
-          const omega = m * omega0;
-          const gr = modes[t + 3] * er - modes[t + 2] * ei;
-          const gi = modes[t] * ei - modes[t + 1] * er;
-          hr = -omega * gi;
-          hi = omega * gr;
-        }
-        // The packed spectra of waveFieldLayout.ts as multiples of h̃, at k and at −k, where kx, kz
-        // and so ax = kx/k, az = kz/k change sign (1/k does not) and h̃ becomes conj(h̃). λ = 1 here:
-        // the surface and the queries scale D and its derivatives by the choppiness.
-        const ax = kInverse * kx;
-        const az = kInverse * kz;
-        // Dx + i·h = i·(1 + ax)·h̃;   at −k: i·(1 − ax)·conj(h̃)
-        const dxh = 1 + ax;
-        const dxhPartner = 1 - ax;
-        re[at] = -dxh * hi;
-        im[at] = dxh * hr;
-        re[partnerAt] = dxhPartner * hi;
-        im[partnerAt] = dxhPartner * hr;
-        // Dz + i·∂Dx/∂z = i·(az − ax·kz)·h̃;   at −k: i·(−az − ax·kz)·conj(h̃)
-        const dzCross = az - ax * kz;
-        const dzCrossPartner = -az - ax * kz;
-        re[at + n] = -dzCross * hi;
-        im[at + n] = dzCross * hr;
-        re[partnerAt + n] = dzCrossPartner * hi;
-        im[partnerAt + n] = dzCrossPartner * hr;
-        if (velocities) continue; // the displacement's two packed spectra are all it needs
-        // ∂h/∂x + i·∂h/∂z = (−kz + i·kx)·h̃;   at −k: (kz − i·kx)·conj(h̃)
-        re[at + 2 * n] = -kz * hr - kx * hi;
-        im[at + 2 * n] = kx * hr - kz * hi;
-        re[partnerAt + 2 * n] = kz * hr - kx * hi;
-        im[partnerAt + 2 * n] = -kx * hr - kz * hi;
-        // ∂Dx/∂x + i·∂Dz/∂z = (xx + i·zz)·h̃ with xx = −λ·kx²/k, zz = −λ·kz²/k;   at −k: (xx + i·zz)·conj(h̃)
-        const xx = -ax * kx;
-        const zz = -az * kz;
-        re[at + 3 * n] = xx * hr - zz * hi;
-        im[at + 3 * n] = xx * hi + zz * hr;
-        re[partnerAt + 3 * n] = xx * hr + zz * hi;
-        im[partnerAt + 3 * n] = zz * hr - xx * hi;
+    const stride = fft.rowStride;
+    const sizeLog2 = Math.log2(n);
+    const columnMask = n - 1;
+    for (let mode = 0, t = 0; mode < modePlaces.length / 2; mode++, t += MODE_LENGTH) {
+      // Packed spectrum f at k lives at `at` + f·N. A mode that is its own partner (k ≡ −k on the
+      // grid: k = 0 and the Nyquist corners and edges' midpoints) is written twice, the same value
+      // up to rounding.
+      const place = modePlaces[2 * mode];
+      const partnerPlace = modePlaces[2 * mode + 1];
+      const at = (place >> sizeLog2) * stride + (place & columnMask);
+      const partnerAt = (partnerPlace >> sizeLog2) * stride + (partnerPlace & columnMask);
+      const kx = modes[t + 4];
+      const kz = modes[t + 5];
+      const kInverse = modes[t + 6];
+      const m = modes[t + 7];
+      // e^{iωt} = e^{i·(m mod 256)·φ} · e^{i·256·(m div 256)·φ}
+      const low = 4 * (m & lowMask);
+      const high = 4 * (m >> 8) + 2;
+      const er = table[low] * table[high] - table[low + 1] * table[high + 1];
+      const ei = table[low] * table[high + 1] + table[low + 1] * table[high];
+      // h̃(k) = a·e + b·conj(e) = hr + i·hi, with a = h̃0(k), b = h̃0*(−k) (see MODE_LENGTH);
+      // h̃(−k) = conj(h̃(k)). Its time derivative: iω·(a·e − b·conj(e)), also conjugate at −k.
+      let hr = modes[t] * er + modes[t + 1] * ei;
+      let hi = modes[t + 2] * er + modes[t + 3] * ei;
+      if (velocities) {
+        const omega = m * omega0;
+        const gr = modes[t + 3] * er - modes[t + 2] * ei;
+        const gi = modes[t] * ei - modes[t + 1] * er;
+        hr = -omega * gi;
+        hi = omega * gr;
       }
+      // The packed spectra of waveFieldLayout.ts as multiples of h̃, at k and at −k, where kx, kz
+      // and so ax = kx/k, az = kz/k change sign (1/k does not) and h̃ becomes conj(h̃). λ = 1 here:
+      // the surface and the queries scale D and its derivatives by the choppiness.
+      const ax = kInverse * kx;
+      const az = kInverse * kz;
+      // Dx + i·h = i·(1 + ax)·h̃;   at −k: i·(1 − ax)·conj(h̃)
+      const dxh = 1 + ax;
+      const dxhPartner = 1 - ax;
+      re[at] = -dxh * hi;
+      im[at] = dxh * hr;
+      re[partnerAt] = dxhPartner * hi;
+      im[partnerAt] = dxhPartner * hr;
+      // Dz + i·∂Dx/∂z = i·(az − ax·kz)·h̃;   at −k: i·(−az − ax·kz)·conj(h̃)
+      const dzCross = az - ax * kz;
+      const dzCrossPartner = -az - ax * kz;
+      re[at + n] = -dzCross * hi;
+      im[at + n] = dzCross * hr;
+      re[partnerAt + n] = dzCrossPartner * hi;
+      im[partnerAt + n] = dzCrossPartner * hr;
+      if (velocities) continue; // the displacement's two packed spectra are all it needs
+      // ∂h/∂x + i·∂h/∂z = (−kz + i·kx)·h̃;   at −k: (kz − i·kx)·conj(h̃)
+      re[at + 2 * n] = -kz * hr - kx * hi;
+      im[at + 2 * n] = kx * hr - kz * hi;
+      re[partnerAt + 2 * n] = kz * hr - kx * hi;
+      im[partnerAt + 2 * n] = -kx * hr - kz * hi;
+      // ∂Dx/∂x + i·∂Dz/∂z = (xx + i·zz)·h̃ with xx = −λ·kx²/k, zz = −λ·kz²/k;   at −k: (xx + i·zz)·conj(h̃)
+      const xx = -ax * kx;
+      const zz = -az * kz;
+      re[at + 3 * n] = xx * hr - zz * hi;
+      im[at + 3 * n] = xx * hi + zz * hr;
+      re[partnerAt + 3 * n] = xx * hr + zz * hi;
+      im[partnerAt + 3 * n] = zz * hr - xx * hi;
     }
   }
+}
+
+/**
+ * The largest |i| or |j| of the texels (column i, row j) whose amplitudes are not all zero, i and j
+ * signed (≤ N/2): a cascade keeps a disc or ring of modes (cascadeBands.ts), and the FFT skips
+ * what holds only the frequencies beyond it (BatchedInverseFft2D's inputBand).
+ */
+function largestFrequency({ resolution: n, amplitudes }: SpectrumForFields): number {
+  let largest = 0;
+  for (let texel = 0; texel < n * n; texel++) {
+    const at = 4 * texel;
+    if (amplitudes[at] === 0 && amplitudes[at + 1] === 0 && amplitudes[at + 2] === 0 && amplitudes[at + 3] === 0) continue;
+    const i = texel % n;
+    const j = (texel - i) / n;
+    largest = Math.max(largest, Math.min(i, n - i), Math.min(j, n - j));
+  }
+  return largest;
 }

@@ -60,10 +60,27 @@ export class BatchedInverseFft2D {
    */
   private readonly twiddles: Float64Array;
   private readonly rowsPerGroup: number;
+  /**
+   * Pass 1 transforms only the columns c with c mod P in {0, P − 1}, P = liveColumnPeriod (all of
+   * them when P < 4): the others hold zeros, whose transform is zero (see the constructor).
+   */
+  private readonly liveColumnPeriod: number;
 
+  /**
+   * `inputBand`, when given, promises that every input coefficient with a frequency i (x) or j (z)
+   * beyond it is zero (|i| or |j| > inputBand, signed frequencies, |i|, |j| ≤ N/2), and lets the
+   * transform skip what holds only zeros. They sit in a regular pattern: with P a power of two and
+   * inputBand·P < N, the frequencies up to inputBand have their top log2 P bits all 0 (i < N/P) or
+   * all 1 (i > N − N/P), so their bit-reversed columns (and rows) are ≡ 0 or ≡ P − 1 mod P. A coarse
+   * FFT cascade keeps modes up to about a fifth of its Nyquist frequency (cascadeBands.ts), so
+   * P = 8: pass 1 transforms a quarter of the columns. (Pass 2 cannot skip rows: pass 1 leaves
+   * every row of a live column filled.) The caller must write zeros at every other input index
+   * before each run (CpuWaveFields.evolve does).
+   */
   constructor(
     readonly size: number,
     readonly fieldCount: number,
+    inputBand = size / 2,
   ) {
     if (!Number.isInteger(size) || size < 2 || (size & (size - 1)) !== 0) {
       throw new ParameterError('FFT size', size, 'a power of two ≥ 2');
@@ -88,6 +105,10 @@ export class BatchedInverseFft2D {
     }
     this.twiddles = Float64Array.from(twiddles);
     this.rowsPerGroup = Math.max(1, Math.min(n, Math.floor(ROW_GROUP_SIZE / (n * fieldCount))));
+    // The largest P ≤ min(N, STRIP_WIDTH) with inputBand·P < N: P then divides every strip's width.
+    let period = 1;
+    while (2 * period <= Math.min(n, STRIP_WIDTH) && inputBand * 2 * period < n) period *= 2;
+    this.liveColumnPeriod = period;
   }
 
   /** Where field f's coefficient for frequency texel (column i, row j) goes in the input buffers. */
@@ -123,21 +144,29 @@ export class BatchedInverseFft2D {
     this.transformAlongX(texels);
   }
 
-  /** Pass 1: along the row index, strip by strip of columns; each butterfly combines four rows. */
+  /**
+   * Pass 1: along the row index, strip by strip of columns; each butterfly combines four rows. Only
+   * the live columns (liveColumnPeriod), every P-th from two offsets when P ≥ 4.
+   */
   private transformAlongZ(): void {
-    const { size: n, rowStride: stride, firstRadix, twiddles, outputReal: re, outputImag: im } = this;
+    const { size: n, rowStride: stride, firstRadix, twiddles, liveColumnPeriod: period, outputReal: re, outputImag: im } = this;
     const width = n * this.fieldCount;
-    for (let column = 0; column < width; column += STRIP_WIDTH) {
-      const columns = Math.min(STRIP_WIDTH, width - column);
-      // Transforms of length firstRadix over each run of firstRadix consecutive rows.
-      firstStep(firstRadix, re, im, column, stride, 1, columns, firstRadix * stride, n / firstRadix);
-      for (let h = firstRadix, t = 0; h < n; t += 6 * h, h *= 4) {
-        // In each block of 4h rows, butterfly q combines rows q, q + h, q + 2h and q + 3h.
-        const blockStride = 4 * h * stride;
-        const blocks = n / (4 * h);
-        radix4Untwiddled(re, im, column, h * stride, 1, columns, blockStride, blocks);
-        for (let q = 1; q < h; q++) {
-          radix4(re, im, twiddles, t + 6 * q, q * stride + column, h * stride, 1, columns, blockStride, blocks);
+    const offsets = period >= 4 ? [0, period - 1] : [0];
+    const step = period >= 4 ? period : 1;
+    for (let strip = 0; strip < width; strip += STRIP_WIDTH) {
+      const columns = Math.min(STRIP_WIDTH, width - strip) / step;
+      for (const offset of offsets) {
+        const column = strip + offset;
+        // Transforms of length firstRadix over each run of firstRadix consecutive rows.
+        firstStep(firstRadix, re, im, column, stride, step, columns, firstRadix * stride, n / firstRadix);
+        for (let h = firstRadix, t = 0; h < n; t += 6 * h, h *= 4) {
+          // In each block of 4h rows, butterfly q combines rows q, q + h, q + 2h and q + 3h.
+          const blockStride = 4 * h * stride;
+          const blocks = n / (4 * h);
+          radix4Untwiddled(re, im, column, h * stride, step, columns, blockStride, blocks);
+          for (let q = 1; q < h; q++) {
+            radix4(re, im, twiddles, t + 6 * q, q * stride + column, h * stride, step, columns, blockStride, blocks);
+          }
         }
       }
     }
@@ -180,6 +209,7 @@ export class BatchedInverseFft2D {
       }
     }
   }
+
 }
 
 /*

@@ -140,14 +140,20 @@ const maxAbsDifference = (a: ArrayLike<number>, b: ArrayLike<number>) => {
 };
 const sumSquares = ([re, im]: ComplexGrid) => re.reduce((s, x, p) => s + x * x + im[p] * im[p], 0);
 
-/** The simulation grid's spectrum with every amplitude replaced by unit normals, paired as documented. */
-function whiteSpectrum(base: InitialSpectrum, seed: number): InitialSpectrum {
+/**
+ * The simulation grid's spectrum with every amplitude replaced by unit normals, paired as
+ * documented; with `band`, only on the texels whose signed frequencies i and j are both within it
+ * (0 elsewhere), as a coarse cascade keeps only its disc of modes.
+ */
+function whiteSpectrum(base: InitialSpectrum, seed: number, band = base.resolution / 2): InitialSpectrum {
   const n = base.resolution;
   const random = new SeededRandom(seed);
   const h0 = Float64Array.from({ length: 2 * n * n }, () => random.nextNormal());
   const amplitudes = new Float32Array(4 * n * n);
+  const inBand = (index: number) => Math.min(index, n - index) <= band;
   for (let j = 0; j < n; j++) {
     for (let i = 0; i < n; i++) {
+      if (!inBand(i) || !inBand(j)) continue;
       const t = j * n + i;
       const o = ((n - j) % n) * n + ((n - i) % n);
       amplitudes.set([h0[2 * t], h0[2 * t + 1], h0[2 * o], -h0[2 * o + 1]], 4 * t);
@@ -212,12 +218,15 @@ const SMALL_CASES = [
 ].map(({ name, p }) => ({ name, p, spectrum: phillipsCascade(p) }));
 // Unit amplitudes on every texel, Nyquist and k = 0 included, so no mode hides behind a small P.
 const WHITE = { name: 'white N=16', p: SMALL_CASES[0].p, spectrum: whiteSpectrum(SMALL_CASES[0].spectrum, 77) };
-const ALL_SMALL = [...SMALL_CASES, WHITE];
+// Modes only up to frequency 3 of 16 (N = 32): the FFT's pass 1 then transforms every 8th column
+// and the one before it (BatchedInverseFft2D's inputBand), as for the default coarse cascades.
+const WHITE_BAND = { name: 'white N=32 within frequency 3', p: SMALL_CASES[1].p, spectrum: whiteSpectrum(SMALL_CASES[1].spectrum, 78, 3) };
+const ALL_SMALL = [...SMALL_CASES, WHITE, WHITE_BAND];
 // t = 1e7 s (four months) checks that long runs keep full precision (time is wrapped before float32).
 const TIMES = [0, 3.7, 1e7 + 0.37];
 
 describe('the field spectra (the reference built from spectrum.ts)', () => {
-  for (const { name, p, spectrum } of ALL_SMALL) {
+  for (const { name, p, spectrum } of [...SMALL_CASES, WHITE]) {
     it(`are Hermitian, so every field is real, incl. the Nyquist row and column (${name})`, () => {
       const n = p.resolution;
       // The Nyquist row and column must carry weight, or this test would prove nothing about them.

@@ -141,6 +141,43 @@ describe('BatchedInverseFft2D', () => {
     expect(() => new BatchedInverseFft2D(16, 4).runToTexels([new Float32Array(1024)])).toThrow(/N ≥ 16/);
   });
 
+  // A band of 3, 7 and 15 of N = 64 lets pass 1 transform every 16th, 8th and 4th column and the
+  // one before it; 31 none (BatchedInverseFft2D's inputBand).
+  for (const band of [3, 7, 15, 31]) {
+    it(`matches a row–column DFT at N = 64 when only frequencies up to ${band} are given (inputBand)`, () => {
+      const n = 64;
+      const fft = new BatchedInverseFft2D(n, 2, band);
+      const inputs = randomInputs(fft, 400 + band);
+      const outside = (index: number) => Math.min(index, n - index) > band;
+      for (let f = 0; f < fft.fieldCount; f++) {
+        for (let j = 0; j < n; j++) {
+          for (let i = 0; i < n; i++) {
+            if (!outside(i) && !outside(j)) continue;
+            inputs[f][0][j * n + i] = inputs[f][1][j * n + i] = 0;
+            fft.inputReal[fft.inputIndex(f, i, j)] = fft.inputImag[fft.inputIndex(f, i, j)] = 0;
+          }
+        }
+      }
+      fft.run();
+      for (let f = 0; f < fft.fieldCount; f++) {
+        expect(relativeError(fft, f, rowColumnInverseDft2D(inputs[f], n))).toBeLessThan(1e-12);
+      }
+    });
+  }
+
+  it('skips the columns beyond inputBand: a coefficient there is ignored, as promised zero', () => {
+    const n = 64;
+    const banded = new BatchedInverseFft2D(n, 1, 7);
+    const full = new BatchedInverseFft2D(n, 1);
+    // Frequency (9, 0), beyond the band of 7, is a wave along x, the same on every row. Its column
+    // is not transformed along z, so in the banded transform it reaches row 0 only.
+    for (const fft of [banded, full]) fft.inputReal[fft.inputIndex(0, 9, 0)] = 1;
+    banded.run();
+    full.run();
+    expect(full.outputReal[full.outputIndex(0, 0, 5)]).toBeCloseTo(1, 12);
+    expect(banded.outputReal[banded.outputIndex(0, 0, 5)]).toBe(0);
+  });
+
   it('rejects a size that is not a power of two', () => {
     expect(() => new BatchedInverseFft2D(12, 1)).toThrow(/power of two/);
     expect(() => new BatchedInverseFft2D(12, 1)).toThrow(ParameterError);
