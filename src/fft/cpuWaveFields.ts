@@ -16,7 +16,7 @@
  */
 import { fillPhaseTable, PHASE_TABLE_SIZE } from '../spectrum/dispersion';
 import { BatchedInverseFft2D } from './fft';
-import type { InitialSpectrum } from '../spectrum/initialSpectrum';
+import { largestFrequency, type InitialSpectrum } from '../spectrum/initialSpectrum';
 import type { LayerQueryFields } from '../layers/waveLayer';
 
 /** What of an initial spectrum the fields are computed from (all a worker is sent). */
@@ -210,19 +210,3 @@ export class CpuWaveFields {
   }
 }
 
-/**
- * The largest |i| or |j| of the texels (column i, row j) whose amplitudes are not all zero, i and j
- * signed (≤ N/2): a cascade keeps a disc or ring of modes (cascadeBands.ts), and the FFT skips
- * what holds only the frequencies beyond it (BatchedInverseFft2D's inputBand).
- */
-function largestFrequency({ resolution: n, amplitudes }: SpectrumForFields): number {
-  let largest = 0;
-  for (let texel = 0; texel < n * n; texel++) {
-    const at = 4 * texel;
-    if (amplitudes[at] === 0 && amplitudes[at + 1] === 0 && amplitudes[at + 2] === 0 && amplitudes[at + 3] === 0) continue;
-    const i = texel % n;
-    const j = (texel - i) / n;
-    largest = Math.max(largest, Math.min(i, n - i), Math.min(j, n - j));
-  }
-  return largest;
-}

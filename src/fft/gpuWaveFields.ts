@@ -9,6 +9,9 @@
  * `derivatives`) wrap with REPEAT and, where the format is filterable, filter linearly with
  * mipmaps generated after the pass.
  *
+ * A coarse cascade keeps only its band's modes, a few per cent of the grid: the passes along x
+ * skip the lines (texel rows) that hold only zeros (bandTexelRows).
+ *
  * Each FFT pass computes a whole radix-4 butterfly per fragment and writes its four outputs to
  * four layers of (N/2)×(N/2) array textures (shaders/fft/quarterLayout.glsl says where each element
  * lives after each pass). That reads every input once per pass instead of four times, and under
@@ -44,7 +47,7 @@ import {
 import { shaderSource } from '../shaderSource';
 import { UnsupportedError } from '../parameters/options';
 import { fillPhaseTable, PHASE_TABLE_SIZE } from '../spectrum/dispersion';
-import type { InitialSpectrum } from '../spectrum/initialSpectrum';
+import { largestFrequency, type InitialSpectrum } from '../spectrum/initialSpectrum';
 import { FullscreenPass, fullscreenMaterial, periodicFieldTarget, runPasses } from './fullscreenPass';
 import { checkThreeInternals, glTextureOf, useExternalFramebuffer } from './threeInternals';
 import { FIELD_TEXTURES } from './waveFieldLayout';
@@ -61,6 +64,14 @@ interface FftPass {
   target: LayeredSpectra;
   /** log2 of the sub-transform length p before the pass. */
   subtransformLog2: number;
+  /** The texel rows it draws (bandTexelRows), or null for all of them. */
+  rows: readonly TexelRows[] | null;
+}
+
+/** Rows first … first + count − 1 of texels. */
+interface TexelRows {
+  first: number;
+  count: number;
 }
 
 /** Which GPU precision this renderer can render to, best first; null when neither works. */
@@ -113,6 +124,8 @@ export class GpuWaveFields {
   private readonly unpackMaterial: ShaderMaterial;
   private readonly pass = new FullscreenPass();
   private readonly repeatPeriod: number;
+  /** The texel rows of the lines the spectrum has modes on (bandTexelRows), null for all. */
+  private readonly bandRows: readonly TexelRows[] | null;
 
   constructor(
     private readonly renderer: WebGLRenderer,
@@ -166,11 +179,19 @@ export class GpuWaveFields {
     // first pass of the x axis reads what the evolution pass wrote; the first of the z axis what
     // the last x pass wrote (the same quarters, with x as the line). The passes ping-pong
     // between the two sets of working textures.
+    //
+    // A coarse cascade has modes only on the lines (z frequencies) of its band: the evolution and
+    // x passes draw only those lines' texel rows (bandTexelRows); the other lines stay zero. They
+    // are read as zeros by the first z pass from the last x pass's target: when it is working[0]
+    // (an even number of x passes), the rows cleared after the evolution pass; else that pass
+    // draws every row.
+    const bandRows = (this.bandRows = bandTexelRows(n, largestFrequency(spectrum)));
     let [source, target] = this.working;
     for (const alongZ of [false, true]) {
       let layout: InputLayout = alongZ ? 'QUARTERS_TRANSPOSED' : 'QUARTERS';
       const pass = (radix: 2 | 4, p: number): void => {
-        this.fftPasses.push({ material: fftMaterial(radix, alongZ, layout), source, target, subtransformLog2: Math.log2(p) });
+        const rows = alongZ ? null : bandRows;
+        this.fftPasses.push({ material: fftMaterial(radix, alongZ, layout), source, target, subtransformLog2: Math.log2(p), rows });
         [source, target] = [target, source];
       };
       let p = 1;
@@ -179,6 +200,8 @@ export class GpuWaveFields {
         [layout, p] = ['AFTER_RADIX2', 2];
       }
       for (; p < n; p *= 4, layout = 'AFTER_RADIX4') pass(4, p);
+      const lastPass = this.fftPasses[this.fftPasses.length - 1];
+      if (!alongZ && lastPass.target !== this.working[0]) lastPass.rows = null;
     }
     const [result0, result1] = source.textures;
     this.unpackMaterial = material('fft/unpackFields.frag', { tSpectra0: { value: result0 }, tSpectra1: { value: result1 } });
@@ -199,19 +222,27 @@ export class GpuWaveFields {
     this.phases.needsUpdate = true;
     const renderer = this.renderer;
     runPasses(renderer, () => {
-      this.working[0].bind(renderer);
-      this.pass.draw(renderer, this.evolveMaterial);
-      for (const { material, source, target, subtransformLog2 } of this.fftPasses) {
+      this.drawRows(this.working[0], this.bandRows, this.evolveMaterial);
+      if (this.bandRows !== null) this.working[0].clear(renderer, rowsBetween(this.bandRows));
+      for (const { material, source, target, subtransformLog2, rows } of this.fftPasses) {
         const uniforms = material.uniforms;
         uniforms.tSpectra0.value = source.textures[0];
         uniforms.tSpectra1.value = source.textures[1];
         uniforms.subtransformLog2.value = subtransformLog2;
-        target.bind(renderer);
-        this.pass.draw(renderer, material);
+        this.drawRows(target, rows, material);
       }
       renderer.setRenderTarget(this.output);
       this.pass.draw(renderer, this.unpackMaterial);
     });
+  }
+
+  /** Draws `material` into `target`, only over `rows` if given. */
+  private drawRows(target: LayeredSpectra, rows: readonly TexelRows[] | null, material: ShaderMaterial): void {
+    for (const range of rows ?? [null]) {
+      if (range?.count === 0) continue;
+      target.bind(this.renderer, range);
+      this.pass.draw(this.renderer, material);
+    }
   }
 
   dispose(): void {
@@ -261,12 +292,26 @@ class LayeredSpectra {
     if (!this.framebufferIsCurrent(renderer)) this.createFramebuffer(renderer);
   }
 
-  /** Makes the eight layers the render target of the next draw. Allocates nothing once set up. */
-  bind(renderer: WebGLRenderer): void {
+  /**
+   * Makes the eight layers the render target of the next draw, which then covers only `rows` if
+   * given (a scissor box). Allocates nothing once set up.
+   */
+  bind(renderer: WebGLRenderer, rows: TexelRows | null = null): void {
     this.prepare(renderer);
+    // three.js applies a render target's scissor when it is set.
+    this.target.scissorTest = rows !== null;
+    if (rows !== null) this.target.scissor.set(0, rows.first, this.target.width, rows.count);
     // Every time: after a restored context three.js has a new property map that no longer knows it.
     useExternalFramebuffer(renderer, this.target, this.framebuffer!);
     renderer.setRenderTarget(this.target);
+  }
+
+  /** Sets `rows` of all eight layers to zero. */
+  clear(renderer: WebGLRenderer, rows: TexelRows): void {
+    this.bind(renderer, rows);
+    const gl = renderer.getContext() as WebGL2RenderingContext;
+    renderer.state.buffers.color.setMask(true); // a material's colorWrite: false would mask the clear
+    for (let drawBuffer = 0; drawBuffer < FFT_DRAW_BUFFERS; drawBuffer++) gl.clearBufferfv(gl.COLOR, drawBuffer, ZERO_TEXEL);
   }
 
   /** Whether `framebuffer` holds the arrays' GL textures, which change when the context is lost and restored. */
@@ -320,6 +365,29 @@ class LayeredSpectra {
     for (const array of this.arrays) array.dispose();
   }
 }
+
+/**
+ * The texel rows of the working textures that hold the lines (z frequencies j) within ±band, as
+ * the x passes store them (line l at row l div 2, quarterLayout.glsl): lines 0 … band and
+ * N − band … N − 1. Null when they cover every row.
+ */
+function bandTexelRows(n: number, band: number): TexelRows[] | null {
+  const lowCount = Math.floor(band / 2) + 1;
+  const highFirst = Math.floor((n - band) / 2);
+  if (lowCount >= highFirst) return null;
+  return [
+    { first: 0, count: lowCount },
+    { first: highFirst, count: n / 2 - highFirst }, // none when the band is 0
+  ];
+}
+
+/** The rows between the two ranges of bandTexelRows: the lines beyond the band. */
+function rowsBetween(band: readonly TexelRows[]): TexelRows {
+  const first = band[0].first + band[0].count;
+  return { first, count: band[1].first - first };
+}
+
+const ZERO_TEXEL = new Float32Array(4);
 
 /** The layouts (texel type / size) of the layered framebuffer found complete, per GL context. */
 const completeLayouts = new WeakMap<WebGLRenderingContext | WebGL2RenderingContext, Set<string>>();

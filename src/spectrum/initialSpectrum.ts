@@ -63,6 +63,24 @@ export function signedFrequency(index: number, resolution: number): number {
 }
 
 /**
+ * The largest |i| or |j| of the texels (column i, row j) whose amplitudes are not all zero, i and j
+ * signed (≤ N/2): a cascade keeps a disc or ring of modes (cascadeBands.ts), and both FFT paths
+ * skip what holds only the frequencies beyond it (BatchedInverseFft2D's inputBand, the GPU path's
+ * x passes).
+ */
+export function largestFrequency({ resolution: n, amplitudes }: Pick<InitialSpectrum, 'resolution' | 'amplitudes'>): number {
+  let largest = 0;
+  for (let texel = 0; texel < n * n; texel++) {
+    const at = 4 * texel;
+    if (amplitudes[at] === 0 && amplitudes[at + 1] === 0 && amplitudes[at + 2] === 0 && amplitudes[at + 3] === 0) continue;
+    const i = texel % n;
+    const j = (texel - i) / n;
+    largest = Math.max(largest, Math.min(i, n - i), Math.min(j, n - j));
+  }
+  return largest;
+}
+
+/**
  * The initial spectra of every cascade (params.patchSizes, finest first), drawn from one seeded
  * generator, largest patch first: a single cascade gets the same deviates as before cascades
  * existed, so a seed keeps its sea.
