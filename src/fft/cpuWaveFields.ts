@@ -76,18 +76,22 @@ export class CpuWaveFields {
     // so it also gives the frequency of an input row or column.
     const placeOf = Uint32Array.from({ length: n }, (_, i) => fft.inputIndex(0, i, 0));
     const negated = (index: number) => (n - index) % n;
+    const { amplitudes, waveVectors } = spectrum;
     let kept = 0;
     for (let row = 0; row < n; row++) {
       for (let column = 0; column < n; column++) {
-        const [i, j] = [placeOf[column], placeOf[row]];
+        const i = placeOf[column];
+        const j = placeOf[row];
         const at = row * n + column;
         const partnerAt = placeOf[negated(j)] * n + placeOf[negated(i)];
         const from = 4 * (j * n + i);
-        const [aRe, aIm, bRe, bIm] = spectrum.amplitudes.subarray(from, from + 4);
+        const [aRe, aIm, bRe, bIm] = [amplitudes[from], amplitudes[from + 1], amplitudes[from + 2], amplitudes[from + 3]];
         if (partnerAt < at || (aRe === 0 && aIm === 0 && bRe === 0 && bIm === 0)) continue;
-        modes.set([aRe + bRe, bIm - aIm, aIm + bIm, aRe - bRe], MODE_LENGTH * kept);
-        modes.set(spectrum.waveVectors.subarray(from, from + 4), MODE_LENGTH * kept + 4);
-        indexes.set([at, partnerAt], 2 * kept++);
+        const to = MODE_LENGTH * kept;
+        [modes[to], modes[to + 1], modes[to + 2], modes[to + 3]] = [aRe + bRe, bIm - aIm, aIm + bIm, aRe - bRe];
+        for (let c = 0; c < 4; c++) modes[to + 4 + c] = waveVectors[from + c];
+        [indexes[2 * kept], indexes[2 * kept + 1]] = [at, partnerAt];
+        kept++;
       }
     }
     this.modes = modes.slice(0, MODE_LENGTH * kept);

@@ -21,7 +21,7 @@
  */
 import type { SpectrumForFields } from './cpuWaveFields';
 import { buffersOf, type FieldArrays } from './fieldArrays';
-import type { WorkerReply, WorkerRequest } from './waveFieldWorker';
+import type { CascadeOrigin, WorkerReply, WorkerRequest } from './waveFieldWorker';
 
 /** A worker that has not answered a request after this long (ms) counts as dead. */
 const WORKER_TIMEOUT_MS = 4000;
@@ -50,12 +50,14 @@ export class FieldWorker {
   private latency = 1;
 
   /**
+   * `source` is the spectrum (sent as a copy: its fields can come at once) or the cascade's origin
+   * (the worker builds it: nothing large is copied here, and the first fields come later);
    * `role` names the worker in warnings; `receive` gets each finished set of fields and returns the
    * set it no longer needs (or null); `giveUp` is called once, with the reason, when the worker is
    * given up; `firstAnswerTimeout` (ms) is how long a new worker may take to answer its first request.
    */
   constructor(
-    private readonly spectrum: SpectrumForFields,
+    private readonly source: SpectrumForFields | CascadeOrigin,
     private readonly role: string,
     private readonly receive: (reply: WorkerReply) => FieldArrays | null,
     private readonly giveUp: (fault: string) => void,
@@ -97,7 +99,7 @@ export class FieldWorker {
     this.stopped = true;
   }
 
-  /** A new worker, given the spectrum. */
+  /** A new worker, given the spectrum or its origin. */
   private start(): void {
     this.sentAt = null;
     this.answered = false;
@@ -121,13 +123,18 @@ export class FieldWorker {
       this.failed(event.message || 'its script failed to load');
     };
     worker.onmessageerror = () => this.failed('a message could not be read');
+    this.worker = worker;
+    if ('params' in this.source) {
+      const request: WorkerRequest = { type: 'cascade', origin: this.source };
+      worker.postMessage(request);
+      return;
+    }
     // Copies, transferred: cloning the arrays in the message costs several times as much on the
     // main thread (25 ms against 8 for a 256² spectrum here).
-    const { resolution, repeatPeriod, amplitudes, waveVectors } = this.spectrum;
+    const { resolution, repeatPeriod, amplitudes, waveVectors } = this.source;
     const spectrum = { resolution, repeatPeriod, amplitudes: amplitudes.slice(), waveVectors: waveVectors.slice() };
     const request: WorkerRequest = { type: 'spectrum', spectrum };
     worker.postMessage(request, [spectrum.amplitudes.buffer, spectrum.waveVectors.buffer]);
-    this.worker = worker;
   }
 
   private failed(why: string): void {

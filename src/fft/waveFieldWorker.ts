@@ -1,14 +1,27 @@
 /**
- * Web Worker that computes one cascade's JS fields off the main thread (driven by fieldWorker.ts):
- * the fields at the time asked, and with `velocities` their time derivative too (for the queries).
+ * Web Worker that computes one cascade's JS fields off the main thread (driven by fieldWorker.ts),
+ * from the spectrum it is sent or that it builds from the parameters: the fields at the time asked, and with `velocities` their time derivative too (for the queries).
  * The result arrays are transferred both ways and reused, so a frame allocates nothing; arrays not
  * given back yet (the first requests) are made here, not on the main thread.
  */
 import { CpuWaveFields, type SpectrumForFields } from './cpuWaveFields';
 import { buffersOf, type FieldArrays } from './fieldArrays';
+import type { SimulationParameters } from '../parameters/parameters';
+import { createCascadeSpectrum, reducedSpectrum } from '../spectrum/initialSpectrum';
+
+/**
+ * A cascade named by what makes it, for a worker to build itself: createCascadeSpectrum(params,
+ * cascade), on a grid of `resolution` texels a side (reducedSpectrum when below the cascade's).
+ */
+export interface CascadeOrigin {
+  params: SimulationParameters;
+  cascade: number;
+  resolution: number;
+}
 
 export type WorkerRequest =
   | { type: 'spectrum'; spectrum: SpectrumForFields }
+  | { type: 'cascade'; origin: CascadeOrigin }
   /** `spare`: arrays to fill (transferred), or null; `velocities`: whether to compute them. */
   | { type: 'update'; t: number; velocities: boolean; spare: FieldArrays | null };
 
@@ -22,6 +35,12 @@ self.onmessage = (event: MessageEvent<WorkerRequest>) => {
   const request = event.data;
   if (request.type === 'spectrum') {
     fields = new CpuWaveFields(request.spectrum);
+    return;
+  }
+  if (request.type === 'cascade') {
+    const { params, cascade, resolution } = request.origin;
+    const spectrum = createCascadeSpectrum(params, cascade);
+    fields = new CpuWaveFields(resolution < spectrum.resolution ? reducedSpectrum(spectrum, resolution) : spectrum);
     return;
   }
   if (!fields) throw new Error('waveFieldWorker: update before spectrum');

@@ -7,12 +7,14 @@
  * which the main thread does not compute while a worker can: on the JS path in a worker, the
  * worker's fields the textures show
  * (with their velocities); on the GPU path, a second JS worker of its own (fieldWorker.ts), started
- * by the first query and then asked at each update that follows queries. Both ask for the time of
+ * after the first query (in a task of its own; it builds its copy from the parameters) and then
+ * asked at each update that follows queries. Both ask for the time of
  * the frame the fields arrive for (fieldWorker.ts), and the queries carry them the rest of the way
  * by their velocities (surfaceQuery.ts). Only when there are none within LONGEST_CARRY of the time
  * asked (the first query, a jump in time, a frame step far from the last, a worker given up or one
  * slower than the frames) are the fields computed here (`fieldsComputedHere` counts them): while a
- * worker is on its way, a coarse copy (PROVISIONAL_QUERY_RESOLUTION), else the whole.
+ * worker is on its way, a coarse copy (PROVISIONAL_QUERY_RESOLUTION, made with the cascade and
+ * carried like the workers' fields), else the whole.
  *
  * Owns its backend, its query worker and its CPU copy for queries, and frees them in dispose().
  */
@@ -23,10 +25,17 @@ import { CpuWaveFields } from '../fft/cpuWaveFields';
 import { FieldWorker } from '../fft/fieldWorker';
 import { GpuWaveFields, type GpuPrecision } from '../fft/gpuWaveFields';
 import { reducedSpectrum, type InitialSpectrum } from '../spectrum/initialSpectrum';
+import type { SimulationParameters } from '../parameters/parameters';
 import type { LayerFieldsOnCpu, LayerFrame, LayerQueryFields, WaveLayer } from './waveLayer';
 
 /** Which implementation computes a cascade's fields. */
 export type FftBackend = { kind: 'gpu'; precision: GpuPrecision } | { kind: 'js'; worker: boolean };
+
+/** What made a cascade's spectrum: createCascadeSpectrum(params, cascade) (initialSpectrum.ts). */
+export interface SpectrumOrigin {
+  params: SimulationParameters;
+  cascade: number;
+}
 
 /**
  * The longest time (s) the queries carry fields by their velocities. The error of that first-order
@@ -61,8 +70,11 @@ export class FftCascade implements WaveLayer {
   private readonly querySpectrum: InitialSpectrum;
   /** The JS path's fields, where they are also the queries' copy (the same spectrum), else null. */
   private readonly jsFieldsForQueries: CpuFieldTextures | null;
-  /** The worker that computes the queries' CPU copy where the JS path's worker cannot (made by the first query). */
+  /** The worker that computes the queries' CPU copy where the JS path's worker cannot (made after the first query). */
   private queryWorker: FieldWorker | null = null;
+  /** The timer that makes the query worker once the first query came, until it fires; else null. */
+  private queryWorkerTimer: ReturnType<typeof setTimeout> | null = null;
+  private lastQueryTime = 0;
   /** The newest fields the query worker finished. */
   private newest: LayerQueryFields | null = null;
   /** Whether queries came since the last update (the query worker is then asked at the next). */
@@ -79,6 +91,8 @@ export class FftCascade implements WaveLayer {
   constructor(
     renderer: WebGLRenderer,
     readonly spectrum: InitialSpectrum,
+    /** What made `spectrum`: the query worker builds its copy from it. */
+    private readonly origin: SpectrumOrigin,
     backend: FftBackend,
     /** Whether the queries' fields may be computed in a worker (else here, once per time asked). */
     private readonly queryWorkerWanted = true,
@@ -87,6 +101,10 @@ export class FftCascade implements WaveLayer {
     this.backend =
       backend.kind === 'gpu' ? new GpuWaveFields(renderer, spectrum, backend.precision) : new CpuFieldTextures(renderer, spectrum, backend.worker);
     this.jsFieldsForQueries = this.backend instanceof CpuFieldTextures && this.querySpectrum === spectrum ? this.backend : null;
+    // The provisional copy is made now where a worker will bring the queries' fields, and run once
+    // (velocities too) so that its memory is touched: making it took ~2 ms per cascade here, mostly
+    // the first writes to fresh memory, too long for the first query to wait for.
+    if (backend.kind === 'gpu' ? queryWorkerWanted : backend.worker) this.provisionalCopy().at(0).velocities();
     this.textures = { displacement: { value: this.backend.displacement }, derivatives: { value: this.backend.derivatives } };
     this.frame = { size: spectrum.patchSize, origin: [0, 0], periodic: true, resolution: spectrum.resolution };
   }
@@ -119,9 +137,17 @@ export class FftCascade implements WaveLayer {
     const jsFields = this.jsFieldsForQueries;
     const near = jsFields ? jsFields.forQueries() : this.queryWorkerWanted ? this.fromQueryWorker(t) : null;
     if (near !== null && Math.abs(t - near.time) <= LONGEST_CARRY) return near;
-    const here = this.workerComing ? this.provisionalCopy() : this.exactCopy();
-    if (!here.isAt(t)) this.computedHere++;
-    return here.at(t);
+    if (!this.workerComing) return this.computeHere(this.exactCopy(), t);
+    // While a worker is on its way: the coarse copy, carried as the workers' fields are, so that
+    // it is computed here at most once per LONGEST_CARRY rather than every frame.
+    const provisional = this.provisionalCopy();
+    return provisional.lastWithin(t, LONGEST_CARRY) ?? this.computeHere(provisional, t);
+  }
+
+  /** The fields of `copy` at time t, computed here unless they are already for t. */
+  private computeHere(copy: FieldsComputedHere, t: number): LayerQueryFields {
+    if (!copy.isAt(t)) this.computedHere++;
+    return copy.at(t);
   }
 
   /** How many times the queries found no fields close enough to the time asked, and computed them here (once per time). */
@@ -132,7 +158,7 @@ export class FftCascade implements WaveLayer {
   /** Whether a worker will bring the queries' fields (the JS path's or the query worker, not given up). */
   private get workerComing(): boolean {
     const jsFields = this.jsFieldsForQueries;
-    return jsFields ? jsFields.inWorker : this.queryWorker?.givenUp === false;
+    return jsFields ? jsFields.inWorker : this.queryWorkerTimer !== null || this.queryWorker?.givenUp === false;
   }
 
   /** The queries' copy computed here, for the time asked. */
@@ -148,26 +174,35 @@ export class FftCascade implements WaveLayer {
     return this.computedProvisionally;
   }
 
-  /** The query worker's newest fields (or null); the first query makes it and asks it for t. */
+  /** The query worker's newest fields (or null); the first query has it made (and asked for t). */
   private fromQueryWorker(t: number): LayerQueryFields | null {
     this.queried = true;
-    if (this.queryWorker === null) {
-      const { resolution } = this.querySpectrum;
-      this.queryWorker = new FieldWorker(
-        this.querySpectrum,
-        'query worker',
-        ({ t: time, displacement, derivatives, velocities }) => {
-          const previous = this.newest;
-          this.newest = { time, resolution, displacement, derivatives, velocities: () => velocities! };
-          return previous && { displacement: previous.displacement, derivatives: previous.derivatives, velocities: previous.velocities() };
-        },
-        (fault) => console.warn(`three-fft-ocean: ${fault}; the queries compute their fields on the main thread.`),
-        // A busy machine can hold up a new worker for long; the queries are answered here meanwhile.
-        Infinity,
-      );
-      this.queryWorker.request(t, 0, true);
+    this.lastQueryTime = t;
+    if (this.queryWorker === null && this.queryWorkerTimer === null) {
+      // In a task of its own rather than in the query: making a Worker takes milliseconds here.
+      this.queryWorkerTimer = setTimeout(() => this.startQueryWorker(), 0);
     }
     return this.newest;
+  }
+
+  /** Makes the query worker and asks it for the time of the last query. */
+  private startQueryWorker(): void {
+    this.queryWorkerTimer = null;
+    const { resolution } = this.querySpectrum;
+    this.queryWorker = new FieldWorker(
+      // The worker builds the copy itself: copying a 256² spectrum to it took ~12 ms here.
+      { ...this.origin, resolution },
+      'query worker',
+      ({ t: time, displacement, derivatives, velocities }) => {
+        const previous = this.newest;
+        this.newest = { time, resolution, displacement, derivatives, velocities: () => velocities! };
+        return previous && { displacement: previous.displacement, derivatives: previous.derivatives, velocities: previous.velocities() };
+      },
+      (fault) => console.warn(`three-fft-ocean: ${fault}; the queries compute their fields on the main thread.`),
+      // A busy machine can hold up a new worker for long; the queries are answered here meanwhile.
+      Infinity,
+    );
+    this.queryWorker.request(this.lastQueryTime, 0, true);
   }
 
   /** The fields the textures show now, on the JS path (no computation); the GPU path keeps none. */
@@ -178,6 +213,8 @@ export class FftCascade implements WaveLayer {
 
   dispose(): void {
     this.backend.dispose();
+    if (this.queryWorkerTimer !== null) clearTimeout(this.queryWorkerTimer);
+    this.queryWorkerTimer = null;
     this.queryWorker?.dispose();
     this.computed = this.computedReduced = this.computedProvisionally = null;
     this.newest = null;
@@ -195,6 +232,11 @@ class FieldsComputedHere {
 
   isAt(t: number): boolean {
     return this.last?.time === t;
+  }
+
+  /** The fields last computed, if they are for a time within `carry` seconds of t; else null. */
+  lastWithin(t: number, carry: number): LayerQueryFields | null {
+    return this.last !== null && Math.abs(t - this.last.time) <= carry ? this.last : null;
   }
 
   /** The fields at time t, as the queries read them. */

@@ -50,6 +50,8 @@ export interface SimulationOptions {
 
 export class OceanSimulation {
   private currentParameters: SimulationParameters;
+  /** The parameters the spectra were made from (a later change may have been shader-only). */
+  private spectraParameters: SimulationParameters;
   private currentLayers: FftCascade[] = [];
   private currentFoam: WhitecapFoam | null = null;
   private currentLocalWaves: LocalWaves | null = null;
@@ -75,7 +77,7 @@ export class OceanSimulation {
     parameters: Partial<SimulationParameters> = {},
     options: SimulationOptions = {},
   ) {
-    this.currentParameters = validateParameters(parameters);
+    this.currentParameters = this.spectraParameters = validateParameters(parameters);
     this.preference = checkPreference(options.path ?? 'auto');
     this.useWorker = options.worker ?? typeof Worker !== 'undefined';
     this.localWaveOptions = checkLocalWaves(options.localWaves ?? true);
@@ -189,19 +191,20 @@ export class OceanSimulation {
   private rebuild(newSpectra: boolean): void {
     const params = this.currentParameters;
     const spectra = newSpectra ? createCascadeSpectra(params) : this.spectra;
+    if (newSpectra) this.spectraParameters = params;
     const support = this.preference === 'js' ? { precision: null, reason: 'asked for' } : gpuSupport(this.renderer);
     let precision: GpuPrecision | null = support.precision;
     this.currentReason = support.reason;
     // The new layers are built before the old ones are freed (see `retired`).
     const previous = this.currentLayers;
     try {
-      this.currentLayers = spectra.map((spectrum) => new FftCascade(this.renderer, spectrum, backendFor(precision, this.useWorker), this.useWorker));
+      this.currentLayers = spectra.map((spectrum, cascade) => new FftCascade(this.renderer, spectrum, { params: this.spectraParameters, cascade }, backendFor(precision, this.useWorker), this.useWorker));
     } catch (error) {
       if (precision === null) throw error;
       // The GPU path failed to build here (an adapter check, a framebuffer): the JS path instead.
       precision = null;
       this.currentReason = `the GPU path failed: ${error instanceof Error ? error.message : String(error)}`;
-      this.currentLayers = spectra.map((spectrum) => new FftCascade(this.renderer, spectrum, backendFor(null, this.useWorker), this.useWorker));
+      this.currentLayers = spectra.map((spectrum, cascade) => new FftCascade(this.renderer, spectrum, { params: this.spectraParameters, cascade }, backendFor(null, this.useWorker), this.useWorker));
     }
     this.currentPath = precision ? (precision === 'float32' ? 'gpu-rgba32f' : 'gpu-rgba16f') : this.useWorker ? 'js-worker' : 'js';
     if (this.currentReason !== '' && this.preference !== 'js' && !warned.has(this.currentReason)) {

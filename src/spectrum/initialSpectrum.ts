@@ -91,6 +91,22 @@ export function createCascadeSpectra(params: SimulationParameters, spectrum = se
   return largestFirst.map((band) => createInitialSpectrum(band, params, spectrum, random)).reverse();
 }
 
+/**
+ * Cascade `cascade` (an index into params.patchSizes, 0 the finest) of createCascadeSpectra(params),
+ * bit for bit, without computing the others: the deviates of the larger ones are drawn and dropped
+ * (every texel draws two, whatever its Ψ). A query worker builds its copy with it (fieldWorker.ts),
+ * so the main thread sends parameters rather than megabytes of spectrum.
+ */
+export function createCascadeSpectrum(params: SimulationParameters, cascade: number): InitialSpectrum {
+  const random = new SeededRandom(params.seed);
+  const bands = cascadeBands(params.patchSizes, params.resolution);
+  const draws = 2 * params.resolution ** 2;
+  for (let larger = bands.length - 1; larger > cascade; larger--) {
+    for (let draw = 0; draw < draws; draw++) random.nextNormal();
+  }
+  return createInitialSpectrum(bands[cascade], params, seaStateSpectrum(params), random);
+}
+
 function createInitialSpectrum(
   band: CascadeBand,
   params: SimulationParameters,
@@ -168,8 +184,12 @@ export function reducedSpectrum(spectrum: InitialSpectrum, resolution: number): 
       if (i === resolution / 2 || j === resolution / 2) continue;
       const texel = j * resolution + i;
       const from = ((signedFrequency(j, resolution) + n) % n) * n + ((signedFrequency(i, resolution) + n) % n);
-      amplitudes.set(spectrum.amplitudes.subarray(4 * from, 4 * from + 4), 4 * texel);
-      waveVectors.set(spectrum.waveVectors.subarray(4 * from, 4 * from + 4), 4 * texel);
+      // Element by element: a subarray per texel would cost more than the copy (the first query
+      // builds one of these on the main thread, fftCascade.ts).
+      for (let c = 0; c < 4; c++) {
+        amplitudes[4 * texel + c] = spectrum.amplitudes[4 * from + c];
+        waveVectors[4 * texel + c] = spectrum.waveVectors[4 * from + c];
+      }
       density[texel] = spectrum.density[from];
     }
   }

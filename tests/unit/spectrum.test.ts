@@ -12,7 +12,7 @@ import { angularFrequency, frequencyIndex } from '../../src/spectrum/dispersion'
 import { DEFAULT_PARAMETERS, type SimulationParameters } from '../../src/parameters/parameters';
 import { cascadeBands } from '../../src/spectrum/cascadeBands';
 import { SeededRandom } from '../../src/spectrum/random';
-import { createCascadeSpectra, signedFrequency, type InitialSpectrum, type WaveNumberSpectrum } from '../../src/spectrum/initialSpectrum';
+import { createCascadeSpectra, createCascadeSpectrum, signedFrequency, type InitialSpectrum, type WaveNumberSpectrum } from '../../src/spectrum/initialSpectrum';
 import { phillips, windUnitVector } from '../../src/spectrum/phillips';
 
 const G = 9.81;
@@ -398,6 +398,25 @@ describe('createCascadeSpectra with one Phillips cascade (the report’s h̃0)',
       }
     }
   }, 30_000);
+});
+
+describe('createCascadeSpectrum (what a query worker builds its copy from)', () => {
+  // The default sea state and a swell on a shallow bay: each cascade must be bit for bit the one
+  // createCascadeSpectra makes, or the queries would answer for another sea than the one drawn.
+  for (const changes of [{ resolution: 64 }, { resolution: 32, spectrum: 'tma', depth: 6, swellHeight: 1.5, seed: 9 }] as Partial<SimulationParameters>[]) {
+    it(`equals createCascadeSpectra(params)[c] for every cascade c (${JSON.stringify(changes)})`, () => {
+      const p = { ...DEFAULT_PARAMETERS, ...changes };
+      const all = createCascadeSpectra(p);
+      expect(all).toHaveLength(3);
+      all.forEach((expected, c) => {
+        const alone = createCascadeSpectrum(p, c);
+        expect(alone.repeatPeriod).toBe(expected.repeatPeriod);
+        expect(alone.band).toEqual(expected.band);
+        expect(alone.amplitudes).toEqual(expected.amplitudes);
+        expect(alone.waveVectors).toEqual(expected.waveVectors);
+      });
+    });
+  }
 });
 
 describe('wind direction edge case found in review', () => {

@@ -412,7 +412,10 @@ const harness = {
    * it returns how many times the cascades computed fields here, and the worst difference between
    * heightAt and the height from fields computed for the time asked.
    */
-  async queriesFromWorkers(path: 'gpu' | 'js', jitter: number): Promise<{ warmUpFrames: number; computedHere: number; worstError: number; rms: number; path: string }> {
+  async queriesFromWorkers(
+    path: 'gpu' | 'js',
+    jitter: number,
+  ): Promise<{ warmUpFrames: number; computedInWarmUp: number; cascades: number; computedHere: number; worstError: number; rms: number; path: string }> {
     const ocean = new Ocean(renderer, { path, worker: true, localWaves: false, seed: 3 });
     const cascades = ocean.simulation.layers;
     const { choppiness } = ocean.parameters;
@@ -453,6 +456,7 @@ const harness = {
         quiet = computedHere() === before ? quiet + 1 : 0;
       }
       const warmUpFrames = frame;
+      const computedInWarmUp = computedHere();
       const before = computedHere();
       let [worstError, squares] = [0, 0];
       for (let i = 0; i < 20; i++) {
@@ -460,7 +464,15 @@ const harness = {
         worstError = Math.max(worstError, worst);
         squares += s;
       }
-      return { warmUpFrames, computedHere: computedHere() - before, worstError, rms: Math.sqrt(squares / (20 * points.length)), path: ocean.path.running };
+      return {
+        warmUpFrames,
+        computedInWarmUp,
+        cascades: cascades.length,
+        computedHere: computedHere() - before,
+        worstError,
+        rms: Math.sqrt(squares / (20 * points.length)),
+        path: ocean.path.running,
+      };
     } finally {
       ocean.dispose();
     }
