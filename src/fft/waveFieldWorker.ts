@@ -7,11 +7,12 @@
 import { CpuWaveFields, type SpectrumForFields } from './cpuWaveFields';
 import { buffersOf, type FieldArrays } from './fieldArrays';
 import type { SimulationParameters } from '../parameters/parameters';
-import { createCascadeSpectrum, reducedSpectrum } from '../spectrum/initialSpectrum';
+import { createCascadeSpectrum } from '../spectrum/initialSpectrum';
 
 /**
  * A cascade named by what makes it, for a worker to build itself: createCascadeSpectrum(params,
- * cascade), on a grid of `resolution` texels a side (reducedSpectrum when below the cascade's).
+ * cascade, resolution), on a grid of `resolution` texels a side (its reducedSpectrum when below
+ * the cascade's).
  */
 export interface CascadeOrigin {
   params: SimulationParameters;
@@ -39,8 +40,7 @@ self.onmessage = (event: MessageEvent<WorkerRequest>) => {
   }
   if (request.type === 'cascade') {
     const { params, cascade, resolution } = request.origin;
-    const spectrum = createCascadeSpectrum(params, cascade);
-    fields = new CpuWaveFields(resolution < spectrum.resolution ? reducedSpectrum(spectrum, resolution) : spectrum);
+    fields = new CpuWaveFields(createCascadeSpectrum(params, cascade, resolution));
     return;
   }
   if (!fields) throw new Error('waveFieldWorker: update before spectrum');

@@ -94,52 +94,72 @@ export function createCascadeSpectra(params: SimulationParameters, spectrum = se
 /**
  * Cascade `cascade` (an index into params.patchSizes, 0 the finest) of createCascadeSpectra(params),
  * bit for bit, without computing the others: the deviates of the larger ones are drawn and dropped
- * (every texel draws two, whatever its Ψ). A query worker builds its copy with it (fieldWorker.ts),
- * so the main thread sends parameters rather than megabytes of spectrum.
+ * (every texel draws two, whatever its Ψ). With `resolution` below params.resolution it is
+ * reducedSpectrum(that cascade, resolution), bit for bit, computing only the modes kept. A query
+ * worker builds its copy with it (fieldWorker.ts), so the main thread sends parameters rather than
+ * megabytes of spectrum.
  */
-export function createCascadeSpectrum(params: SimulationParameters, cascade: number): InitialSpectrum {
+export function createCascadeSpectrum(params: SimulationParameters, cascade: number, resolution = params.resolution): InitialSpectrum {
   const random = new SeededRandom(params.seed);
   const bands = cascadeBands(params.patchSizes, params.resolution);
   const draws = 2 * params.resolution ** 2;
   for (let larger = bands.length - 1; larger > cascade; larger--) {
     for (let draw = 0; draw < draws; draw++) random.nextNormal();
   }
-  return createInitialSpectrum(bands[cascade], params, seaStateSpectrum(params), random);
+  return createInitialSpectrum(bands[cascade], params, seaStateSpectrum(params), random, resolution);
 }
 
+/**
+ * One cascade's h̃0, drawing 2·N² deviates from `random` in texel order. With `size` below N, only
+ * the texels of reducedSpectrum(·, size) are computed and kept, on that grid.
+ */
 function createInitialSpectrum(
   band: CascadeBand,
   params: SimulationParameters,
   spectrum: WaveNumberSpectrum,
   random: SeededRandom,
+  size = params.resolution,
 ): InitialSpectrum {
   const n = params.resolution;
   const dk = (2 * Math.PI) / band.patchSize;
   const repeatPeriod = cascadeRepeatPeriod(band, params);
-  const h0 = new Float64Array(2 * n * n); // h̃0 per texel, kept in double until packed
-  const density = new Float32Array(n * n);
-  const waveVectors = new Float32Array(4 * n * n);
+  // Where grid index i (a row or column) goes on the kept grid, or −1 if dropped.
+  const place = Int32Array.from({ length: n }, (_, i) => {
+    const f = signedFrequency(i, n);
+    return size === n ? i : Math.abs(f) < size / 2 ? (f + size) % size : -1;
+  });
+  const kept = (i: number, j: number) => place[i] >= 0 && place[j] >= 0;
+  const h0 = new Float64Array(2 * size * size); // h̃0 per texel, kept in double until packed
+  const density = new Float32Array(size * size);
+  const waveVectors = new Float32Array(4 * size * size);
 
   // Ψ over the band first: h̃0(k) needs Ψ(−k), which is then the opposite texel's, evaluated once.
-  const psi = new Float64Array(n * n);
+  const psi = new Float64Array(size * size);
   for (let j = 0; j < n; j++) {
     for (let i = 0; i < n; i++) {
-      if (keepsMode(band, signedFrequency(i, n), signedFrequency(j, n))) psi[j * n + i] = spectrum(dk * signedFrequency(i, n), dk * signedFrequency(j, n));
+      if (kept(i, j) && keepsMode(band, signedFrequency(i, n), signedFrequency(j, n))) {
+        psi[place[j] * size + place[i]] = spectrum(dk * signedFrequency(i, n), dk * signedFrequency(j, n));
+      }
     }
   }
   for (let j = 0; j < n; j++) {
     const kz = dk * signedFrequency(j, n);
     for (let i = 0; i < n; i++) {
+      if (!kept(i, j)) {
+        // Both deviates are drawn for every texel, so the sequence does not depend on Ψ or size.
+        random.nextNormal();
+        random.nextNormal();
+        continue;
+      }
       const kx = dk * signedFrequency(i, n);
-      const texel = j * n + i;
+      const texel = place[j] * size + place[i];
       const k = Math.sqrt(kx * kx + kz * kz);
       const inBand = keepsMode(band, signedFrequency(i, n), signedFrequency(j, n));
       // The opposite texel is at exactly (−kx, −kz) off the rows and columns 0 and N/2 (there a 0
       // would become −0, or −N/2 stay −N/2); where its Ψ is 0 it may be outside the band: ask.
-      const opposite = ((n - j) % n) * n + ((n - i) % n);
+      const opposite = ((size - place[j]) % size) * size + ((size - place[i]) % size);
       const mirrored = i % (n / 2) !== 0 && j % (n / 2) !== 0 && psi[opposite] !== 0;
       const scale = inBand ? Math.sqrt(((mirrored ? psi[opposite] : spectrum(-kx, -kz)) * dk * dk) / 4) : 0;
-      // Both deviates are drawn for every texel, so the sequence does not depend on Ψ.
       h0[2 * texel] = random.nextNormal() * scale;
       h0[2 * texel + 1] = random.nextNormal() * scale;
       density[texel] = psi[texel];
@@ -151,18 +171,19 @@ function createInitialSpectrum(
     }
   }
 
-  const amplitudes = new Float32Array(4 * n * n);
-  for (let j = 0; j < n; j++) {
-    for (let i = 0; i < n; i++) {
-      const texel = j * n + i;
-      const opposite = ((n - j) % n) * n + ((n - i) % n);
+  const amplitudes = new Float32Array(4 * size * size);
+  for (let j = 0; j < size; j++) {
+    for (let i = 0; i < size; i++) {
+      if (size < n && (i === size / 2 || j === size / 2)) continue; // dropped: stays 0 (not −0)
+      const texel = j * size + i;
+      const opposite = ((size - j) % size) * size + ((size - i) % size);
       amplitudes[4 * texel] = h0[2 * texel];
       amplitudes[4 * texel + 1] = h0[2 * texel + 1];
       amplitudes[4 * texel + 2] = h0[2 * opposite];
       amplitudes[4 * texel + 3] = -h0[2 * opposite + 1];
     }
   }
-  return { resolution: n, patchSize: band.patchSize, repeatPeriod, band, amplitudes, waveVectors, density };
+  return { resolution: size, patchSize: band.patchSize, repeatPeriod, band, amplitudes, waveVectors, density };
 }
 
 /**

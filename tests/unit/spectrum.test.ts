@@ -12,7 +12,7 @@ import { angularFrequency, frequencyIndex } from '../../src/spectrum/dispersion'
 import { DEFAULT_PARAMETERS, type SimulationParameters } from '../../src/parameters/parameters';
 import { cascadeBands } from '../../src/spectrum/cascadeBands';
 import { SeededRandom } from '../../src/spectrum/random';
-import { createCascadeSpectra, createCascadeSpectrum, signedFrequency, type InitialSpectrum, type WaveNumberSpectrum } from '../../src/spectrum/initialSpectrum';
+import { createCascadeSpectra, createCascadeSpectrum, reducedSpectrum, signedFrequency, type InitialSpectrum, type WaveNumberSpectrum } from '../../src/spectrum/initialSpectrum';
 import { phillips, windUnitVector } from '../../src/spectrum/phillips';
 
 const G = 9.81;
@@ -414,6 +414,16 @@ describe('createCascadeSpectrum (what a query worker builds its copy from)', () 
         expect(alone.band).toEqual(expected.band);
         expect(alone.amplitudes).toEqual(expected.amplitudes);
         expect(alone.waveVectors).toEqual(expected.waveVectors);
+        expect(alone.density).toEqual(expected.density);
+        // On a coarser grid: the reduced spectrum (the query copies of N > 256), computing only its modes.
+        const size = p.resolution / 4;
+        const reduced = reducedSpectrum(expected, size);
+        const coarse = createCascadeSpectrum(p, c, size);
+        expect(coarse.resolution).toBe(size);
+        expect(coarse.repeatPeriod).toBe(reduced.repeatPeriod);
+        expect(coarse.amplitudes).toEqual(reduced.amplitudes);
+        expect(coarse.waveVectors).toEqual(reduced.waveVectors);
+        expect(coarse.density).toEqual(reduced.density);
       });
     });
   }
