@@ -9,8 +9,8 @@
  * `derivatives`) wrap with REPEAT and, where the format is filterable, filter linearly with
  * mipmaps generated after the pass.
  *
- * A coarse cascade keeps only its band's modes, a few per cent of the grid: the passes along x
- * skip the lines (texel rows) that hold only zeros (bandTexelRows).
+ * A coarse cascade keeps only its band's modes, a few per cent of the grid: the evolution pass and
+ * the passes along x skip the lines (texel rows) that hold only zeros (bandTexelRows).
  *
  * Each FFT pass computes a whole radix-4 butterfly per fragment and writes its four outputs to
  * four layers of (N/2)×(N/2) array textures (shaders/fft/quarterLayout.glsl says where each element

@@ -7,8 +7,8 @@
  * which the main thread does not compute while a worker can: on the JS path in a worker, the
  * worker's fields the textures show
  * (with their velocities); on the GPU path, a second JS worker of its own (fieldWorker.ts), started
- * after the first query (in a task of its own; it builds its copy from the parameters) and then
- * asked at each update that follows queries. Both ask for the time of
+ * QUERY_WORKER_DELAY_MS after the first query (in a task of its own; it builds its copy from the
+ * parameters) and then asked at each update that follows queries. Both ask for the time of
  * the frame the fields arrive for (fieldWorker.ts), and the queries carry them the rest of the way
  * by their velocities (surfaceQuery.ts). Only when there are none within LONGEST_CARRY of the time
  * asked (the first query, a jump in time, a frame step far from the last, a worker given up or one
@@ -60,6 +60,14 @@ export const QUERY_RESOLUTION = 256;
  * sixteenth of a 256² copy, so no query waits long for it. Exact answers follow from the worker.
  */
 export const PROVISIONAL_QUERY_RESOLUTION = 64;
+
+/**
+ * How long (ms) after the first query the query worker is made. Building its copy of the spectrum
+ * costs the worker ~0.1–0.2 s of CPU at N = 256, which a cascade replaced sooner (a slider being
+ * dragged rebuilds the cascades at every step) would waste, on a machine whose cores the main
+ * thread and the GPU's driver may be using. Meanwhile the provisional copy answers.
+ */
+export const QUERY_WORKER_DELAY_MS = 250;
 
 export class FftCascade implements WaveLayer {
   readonly textures;
@@ -179,8 +187,9 @@ export class FftCascade implements WaveLayer {
     this.queried = true;
     this.lastQueryTime = t;
     if (this.queryWorker === null && this.queryWorkerTimer === null) {
-      // In a task of its own rather than in the query: making a Worker takes milliseconds here.
-      this.queryWorkerTimer = setTimeout(() => this.startQueryWorker(), 0);
+      // Later, in a task of its own rather than in the query (making a Worker takes milliseconds
+      // here), and only for a cascade that is kept a while (QUERY_WORKER_DELAY_MS).
+      this.queryWorkerTimer = setTimeout(() => this.startQueryWorker(), QUERY_WORKER_DELAY_MS);
     }
     return this.newest;
   }

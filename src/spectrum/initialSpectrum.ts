@@ -205,8 +205,8 @@ export function reducedSpectrum(spectrum: InitialSpectrum, resolution: number): 
       if (i === resolution / 2 || j === resolution / 2) continue;
       const texel = j * resolution + i;
       const from = ((signedFrequency(j, resolution) + n) % n) * n + ((signedFrequency(i, resolution) + n) % n);
-      // Element by element: a subarray per texel would cost more than the copy (the first query
-      // builds one of these on the main thread, fftCascade.ts).
+      // Element by element: a subarray per texel would cost more than the copy (each cascade
+      // builds one of these on the main thread for the queries, fftCascade.ts).
       for (let c = 0; c < 4; c++) {
         amplitudes[4 * texel + c] = spectrum.amplitudes[4 * from + c];
         waveVectors[4 * texel + c] = spectrum.waveVectors[4 * from + c];

@@ -450,7 +450,7 @@ const harness = {
       return { worst, squares };
     };
     try {
-      for (let quiet = 0; quiet < 3 && frame < 40; ) {
+      for (let quiet = 0; quiet < 3 && frame < 60; ) {
         const before = computedHere();
         await step(false);
         quiet = computedHere() === before ? quiet + 1 : 0;
