@@ -61,10 +61,11 @@ export class BatchedInverseFft2D {
   private readonly twiddles: Float64Array;
   private readonly rowsPerGroup: number;
   /**
-   * Pass 1 transforms only the columns c with c mod P in {0, P − 1}, P = liveColumnPeriod (all of
-   * them when P < 4): the others hold zeros, whose transform is zero (see the constructor).
+   * The columns pass 1 transforms: every `step`-th from each offset within a strip. With P as in
+   * the constructor, c mod P in {0, P − 1} (all of them when P < 4): the others hold zeros, whose
+   * transform is zero.
    */
-  private readonly liveColumnPeriod: number;
+  private readonly liveColumns: { offsets: readonly number[]; step: number };
 
   /**
    * `inputBand`, when given, promises that every input coefficient with a frequency i (x) or j (z)
@@ -108,7 +109,7 @@ export class BatchedInverseFft2D {
     // The largest P ≤ min(N, STRIP_WIDTH) with inputBand·P < N: P then divides every strip's width.
     let period = 1;
     while (2 * period <= Math.min(n, STRIP_WIDTH) && inputBand * 2 * period < n) period *= 2;
-    this.liveColumnPeriod = period;
+    this.liveColumns = period >= 4 ? { offsets: [0, period - 1], step: period } : { offsets: [0], step: 1 };
   }
 
   /** Where field f's coefficient for frequency texel (column i, row j) goes in the input buffers. */
@@ -146,13 +147,12 @@ export class BatchedInverseFft2D {
 
   /**
    * Pass 1: along the row index, strip by strip of columns; each butterfly combines four rows. Only
-   * the live columns (liveColumnPeriod), every P-th from two offsets when P ≥ 4.
+   * the live columns (liveColumns).
    */
   private transformAlongZ(): void {
-    const { size: n, rowStride: stride, firstRadix, twiddles, liveColumnPeriod: period, outputReal: re, outputImag: im } = this;
+    const { size: n, rowStride: stride, firstRadix, twiddles, outputReal: re, outputImag: im } = this;
+    const { offsets, step } = this.liveColumns;
     const width = n * this.fieldCount;
-    const offsets = period >= 4 ? [0, period - 1] : [0];
-    const step = period >= 4 ? period : 1;
     for (let strip = 0; strip < width; strip += STRIP_WIDTH) {
       const columns = Math.min(STRIP_WIDTH, width - strip) / step;
       for (const offset of offsets) {

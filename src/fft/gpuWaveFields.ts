@@ -64,8 +64,18 @@ interface FftPass {
   target: LayeredSpectra;
   /** log2 of the sub-transform length p before the pass. */
   subtransformLog2: number;
-  /** The texel rows it draws (bandTexelRows), or null for all of them. */
-  rows: readonly TexelRows[] | null;
+  /** The texel rows it draws (BandRows.drawn), or EVERY_ROW. */
+  rows: RowRanges;
+}
+
+/** Scissor boxes a pass draws in turn, null standing for the whole target. */
+type RowRanges = readonly (TexelRows | null)[];
+const EVERY_ROW: RowRanges = [null];
+
+/** The rows of a coarse cascade's band lines, and the rows between them, which hold zeros. */
+interface BandRows {
+  drawn: RowRanges;
+  cleared: TexelRows;
 }
 
 /** Rows first … first + count − 1 of texels. */
@@ -125,7 +135,7 @@ export class GpuWaveFields {
   private readonly pass = new FullscreenPass();
   private readonly repeatPeriod: number;
   /** The texel rows of the lines the spectrum has modes on (bandTexelRows), null for all. */
-  private readonly bandRows: readonly TexelRows[] | null;
+  private readonly bandRows: BandRows | null;
 
   constructor(
     private readonly renderer: WebGLRenderer,
@@ -190,7 +200,7 @@ export class GpuWaveFields {
     for (const alongZ of [false, true]) {
       let layout: InputLayout = alongZ ? 'QUARTERS_TRANSPOSED' : 'QUARTERS';
       const pass = (radix: 2 | 4, p: number): void => {
-        const rows = alongZ ? null : bandRows;
+        const rows = alongZ || bandRows === null ? EVERY_ROW : bandRows.drawn;
         this.fftPasses.push({ material: fftMaterial(radix, alongZ, layout), source, target, subtransformLog2: Math.log2(p), rows });
         [source, target] = [target, source];
       };
@@ -201,7 +211,7 @@ export class GpuWaveFields {
       }
       for (; p < n; p *= 4, layout = 'AFTER_RADIX4') pass(4, p);
       const lastPass = this.fftPasses[this.fftPasses.length - 1];
-      if (!alongZ && lastPass.target !== this.working[0]) lastPass.rows = null;
+      if (!alongZ && lastPass.target !== this.working[0]) lastPass.rows = EVERY_ROW;
     }
     const [result0, result1] = source.textures;
     this.unpackMaterial = material('fft/unpackFields.frag', { tSpectra0: { value: result0 }, tSpectra1: { value: result1 } });
@@ -222,8 +232,8 @@ export class GpuWaveFields {
     this.phases.needsUpdate = true;
     const renderer = this.renderer;
     runPasses(renderer, () => {
-      this.drawRows(this.working[0], this.bandRows, this.evolveMaterial);
-      if (this.bandRows !== null) this.working[0].clear(renderer, rowsBetween(this.bandRows));
+      this.drawRows(this.working[0], this.bandRows?.drawn ?? EVERY_ROW, this.evolveMaterial);
+      if (this.bandRows !== null) this.working[0].clear(renderer, this.bandRows.cleared);
       for (const { material, source, target, subtransformLog2, rows } of this.fftPasses) {
         const uniforms = material.uniforms;
         uniforms.tSpectra0.value = source.textures[0];
@@ -236,10 +246,9 @@ export class GpuWaveFields {
     });
   }
 
-  /** Draws `material` into `target`, only over `rows` if given. */
-  private drawRows(target: LayeredSpectra, rows: readonly TexelRows[] | null, material: ShaderMaterial): void {
-    for (const range of rows ?? [null]) {
-      if (range?.count === 0) continue;
+  /** Draws `material` into `target`, once per range of rows. */
+  private drawRows(target: LayeredSpectra, rows: RowRanges, material: ShaderMaterial): void {
+    for (const range of rows) {
       target.bind(this.renderer, range);
       this.pass.draw(this.renderer, material);
     }
@@ -369,22 +378,15 @@ class LayeredSpectra {
 /**
  * The texel rows of the working textures that hold the lines (z frequencies j) within ±band, as
  * the x passes store them (line l at row l div 2, quarterLayout.glsl): lines 0 … band and
- * N − band … N − 1. Null when they cover every row.
+ * N − band … N − 1, and the rows between. Null when they cover every row.
  */
-function bandTexelRows(n: number, band: number): TexelRows[] | null {
+function bandTexelRows(n: number, band: number): BandRows | null {
   const lowCount = Math.floor(band / 2) + 1;
   const highFirst = Math.floor((n - band) / 2);
   if (lowCount >= highFirst) return null;
-  return [
-    { first: 0, count: lowCount },
-    { first: highFirst, count: n / 2 - highFirst }, // none when the band is 0
-  ];
-}
-
-/** The rows between the two ranges of bandTexelRows: the lines beyond the band. */
-function rowsBetween(band: readonly TexelRows[]): TexelRows {
-  const first = band[0].first + band[0].count;
-  return { first, count: band[1].first - first };
+  const drawn = [{ first: 0, count: lowCount }];
+  if (highFirst < n / 2) drawn.push({ first: highFirst, count: n / 2 - highFirst }); // none when the band is 0
+  return { drawn, cleared: { first: lowCount, count: highFirst - lowCount } };
 }
 
 const ZERO_TEXEL = new Float32Array(4);

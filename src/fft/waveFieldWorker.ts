@@ -1,22 +1,20 @@
 /**
  * Web Worker that computes one cascade's JS fields off the main thread (driven by fieldWorker.ts),
- * from the spectrum it is sent or that it builds from the parameters: the fields at the time asked, and with `velocities` their time derivative too (for the queries).
+ * from the spectrum it is sent or that it builds from the parameters: the fields at the time
+ * asked, and with `velocities` their time derivative too (for the queries).
  * The result arrays are transferred both ways and reused, so a frame allocates nothing; arrays not
  * given back yet (the first requests) are made here, not on the main thread.
  */
 import { CpuWaveFields, type SpectrumForFields } from './cpuWaveFields';
 import { buffersOf, type FieldArrays } from './fieldArrays';
-import type { SimulationParameters } from '../parameters/parameters';
-import { createCascadeSpectrum } from '../spectrum/initialSpectrum';
+import { createCascadeSpectrum, type SpectrumOrigin } from '../spectrum/initialSpectrum';
 
 /**
  * A cascade named by what makes it, for a worker to build itself: createCascadeSpectrum(params,
  * cascade, resolution), on a grid of `resolution` texels a side (its reducedSpectrum when below
  * the cascade's).
  */
-export interface CascadeOrigin {
-  params: SimulationParameters;
-  cascade: number;
+export interface CascadeOrigin extends SpectrumOrigin {
   resolution: number;
 }
 

@@ -24,18 +24,12 @@ import { UnsupportedError } from '../parameters/options';
 import { CpuWaveFields } from '../fft/cpuWaveFields';
 import { FieldWorker } from '../fft/fieldWorker';
 import { GpuWaveFields, type GpuPrecision } from '../fft/gpuWaveFields';
-import { reducedSpectrum, type InitialSpectrum } from '../spectrum/initialSpectrum';
-import type { SimulationParameters } from '../parameters/parameters';
+import { reducedSpectrum, type InitialSpectrum, type SpectrumOrigin } from '../spectrum/initialSpectrum';
 import type { LayerFieldsOnCpu, LayerFrame, LayerQueryFields, WaveLayer } from './waveLayer';
 
 /** Which implementation computes a cascade's fields. */
 export type FftBackend = { kind: 'gpu'; precision: GpuPrecision } | { kind: 'js'; worker: boolean };
 
-/** What made a cascade's spectrum: createCascadeSpectrum(params, cascade) (initialSpectrum.ts). */
-export interface SpectrumOrigin {
-  params: SimulationParameters;
-  cascade: number;
-}
 
 /**
  * The longest time (s) the queries carry fields by their velocities. The error of that first-order

@@ -195,16 +195,18 @@ export class OceanSimulation {
     const support = this.preference === 'js' ? { precision: null, reason: 'asked for' } : gpuSupport(this.renderer);
     let precision: GpuPrecision | null = support.precision;
     this.currentReason = support.reason;
+    const cascadesOn = (gpu: GpuPrecision | null) =>
+      spectra.map((spectrum, cascade) => new FftCascade(this.renderer, spectrum, { params: this.spectraParameters, cascade }, backendFor(gpu, this.useWorker), this.useWorker));
     // The new layers are built before the old ones are freed (see `retired`).
     const previous = this.currentLayers;
     try {
-      this.currentLayers = spectra.map((spectrum, cascade) => new FftCascade(this.renderer, spectrum, { params: this.spectraParameters, cascade }, backendFor(precision, this.useWorker), this.useWorker));
+      this.currentLayers = cascadesOn(precision);
     } catch (error) {
       if (precision === null) throw error;
       // The GPU path failed to build here (an adapter check, a framebuffer): the JS path instead.
       precision = null;
       this.currentReason = `the GPU path failed: ${error instanceof Error ? error.message : String(error)}`;
-      this.currentLayers = spectra.map((spectrum, cascade) => new FftCascade(this.renderer, spectrum, { params: this.spectraParameters, cascade }, backendFor(null, this.useWorker), this.useWorker));
+      this.currentLayers = cascadesOn(null);
     }
     this.currentPath = precision ? (precision === 'float32' ? 'gpu-rgba32f' : 'gpu-rgba16f') : this.useWorker ? 'js-worker' : 'js';
     if (this.currentReason !== '' && this.preference !== 'js' && !warned.has(this.currentReason)) {

@@ -91,6 +91,12 @@ export function createCascadeSpectra(params: SimulationParameters, spectrum = se
   return largestFirst.map((band) => createInitialSpectrum(band, params, spectrum, random)).reverse();
 }
 
+/** What makes a cascade's spectrum: createCascadeSpectrum(params, cascade). */
+export interface SpectrumOrigin {
+  params: SimulationParameters;
+  cascade: number;
+}
+
 /**
  * Cascade `cascade` (an index into params.patchSizes, 0 the finest) of createCascadeSpectra(params),
  * bit for bit, without computing the others: the deviates of the larger ones are drawn and dropped
