@@ -138,37 +138,50 @@ async function queries(options: { resolution: number; points: number; rounds: nu
 }
 
 /**
- * The queries as an app asks them, on the GPU path at N = `resolution`: each frame update(t),
- * then heightAt and normalAt at 5 points (a boat and four buoys), then a pause of `frameMs` (a
- * frame of a slow renderer), with steps of 1/60 s. Every call's time on the main thread after
- * `warmUp` frames (the query workers started), the first frame's calls together (the fields
- * computed here: the workers have nothing yet), and how often the fields were computed here
- * after the warm-up.
+ * The queries as an app asks them, on the GPU path at N = `resolution`, from the frame after the
+ * ocean is built: each frame update(t), then heightAt and normalAt at 5 points (a boat and four
+ * buoys), then a pause of `frameMs` (a frame of a slow renderer), with steps of 1/60 s. Every
+ * call's time on the main thread (`callMs`, the first `warmUpCalls` of them in the first `warmUp`
+ * frames, while the query workers start), the first frame's calls together, and how often the
+ * fields were computed here after the warm-up.
+ *
+ * `controlMs`: after each call, the time of a fixed few microseconds of arithmetic. On this
+ * machine (two cores shared with SwiftShader's threads, the workers and other tenants) the main
+ * thread is now and then held up for milliseconds whatever it runs; a control call over 1 ms says
+ * how often, beside the queries' count.
  */
-async function queryFrames(options: { resolution: number; warmUp: number; frames: number; frameMs: number }): Promise<{ firstFrameMs: number; callMs: number[]; computedHere: number }> {
+async function queryFrames(options: { resolution: number; warmUp: number; frames: number; frameMs: number }): Promise<{ firstFrameMs: number; callMs: number[]; warmUpCalls: number; controlMs: number[]; computedHere: number }> {
   const renderer = new WebGLRenderer();
   const ocean = new Ocean(renderer, { resolution: options.resolution, seed: 7, path: 'gpu', localWaves: false });
   const points = [[0, 0], [12, -8], [-15, 4], [30, 22], [-6, -25]];
   const normal = new Vector3();
   const computedHere = () => ocean.simulation.layers.reduce((sum, layer) => sum + layer.fieldsComputedHere, 0);
-  const callMs: number[] = [];
-  let [firstFrameMs, computedAtWarmUp] = [0, 0];
+  const [callMs, controlMs]: number[][] = [[], []];
+  const timed = (call: () => unknown, into: number[]) => {
+    const start = performance.now();
+    call();
+    into.push(performance.now() - start);
+  };
+  let [firstFrameMs, computedAtWarmUp, warmUpCalls, sink] = [0, 0, 0, 0];
+  const control = () => {
+    for (let i = 1; i <= 2000; i++) sink += Math.sqrt(i);
+  };
   try {
     for (let frame = 0; frame < options.warmUp + options.frames; frame++) {
       ocean.update(30 + frame / 60);
       const frameStart = performance.now();
       for (const [x, z] of points) {
-        for (const query of [() => ocean.heightAt(x, z), () => ocean.normalAt(x, z, normal)]) {
-          const start = performance.now();
-          query();
-          if (frame >= options.warmUp) callMs.push(performance.now() - start);
-        }
+        timed(() => ocean.heightAt(x, z), callMs);
+        timed(control, controlMs);
+        timed(() => ocean.normalAt(x, z, normal), callMs);
+        timed(control, controlMs);
       }
       if (frame === 0) firstFrameMs = performance.now() - frameStart;
-      if (frame === options.warmUp - 1) computedAtWarmUp = computedHere();
+      if (frame === options.warmUp - 1) [computedAtWarmUp, warmUpCalls] = [computedHere(), callMs.length];
       await new Promise((resolve) => setTimeout(resolve, options.frameMs));
     }
-    return { firstFrameMs, callMs, computedHere: computedHere() - computedAtWarmUp };
+    if (!Number.isFinite(sink)) throw new Error('the control sum is not finite');
+    return { firstFrameMs, callMs, warmUpCalls, controlMs, computedHere: computedHere() - computedAtWarmUp };
   } finally {
     ocean.dispose();
     renderer.dispose();

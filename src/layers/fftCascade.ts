@@ -13,8 +13,9 @@
  * by their velocities (surfaceQuery.ts). Only when there are none within LONGEST_CARRY of the time
  * asked (the first query, a jump in time, a frame step far from the last, a worker given up or one
  * slower than the frames) are the fields computed here (`fieldsComputedHere` counts them): while a
- * worker is on its way, a coarse copy (PROVISIONAL_QUERY_RESOLUTION, made with the cascade and
- * carried like the workers' fields), else the whole.
+ * worker is on its way, a coarse copy (PROVISIONAL_QUERY_RESOLUTION, made with the cascade,
+ * computed with the update of a frame that follows queries and carried like the workers' fields),
+ * else the whole.
  *
  * Owns its backend, its query worker and its CPU copy for queries, and frees them in dispose().
  */
@@ -77,6 +78,8 @@ export class FftCascade implements WaveLayer {
   /** The timer that makes the query worker once the first query came, until it fires; else null. */
   private queryWorkerTimer: ReturnType<typeof setTimeout> | null = null;
   private lastQueryTime = 0;
+  /** Whether update() ran once. */
+  private updated = false;
   /** The newest fields the query worker finished. */
   private newest: LayerQueryFields | null = null;
   /** Whether queries came since the last update (the query worker is then asked at the next). */
@@ -103,10 +106,10 @@ export class FftCascade implements WaveLayer {
     this.backend =
       backend.kind === 'gpu' ? new GpuWaveFields(renderer, spectrum, backend.precision) : new CpuFieldTextures(renderer, spectrum, backend.worker);
     this.jsFieldsForQueries = this.backend instanceof CpuFieldTextures && this.querySpectrum === spectrum ? this.backend : null;
-    // The provisional copy is made now where a worker will bring the queries' fields, and run once
-    // (velocities too) so that its memory is touched: making it took ~2 ms per cascade here, mostly
-    // the first writes to fresh memory, too long for the first query to wait for.
-    if (backend.kind === 'gpu' ? queryWorkerWanted : backend.worker) this.provisionalCopy().at(0).velocities();
+    // The provisional copy is made now where a worker will bring the queries' fields (and computed
+    // at the first update): making it took ~2 ms per cascade here, mostly the first writes to fresh
+    // memory, too long for the first query to wait for.
+    if (this.workerComing) this.provisionalCopy();
     this.textures = { displacement: { value: this.backend.displacement }, derivatives: { value: this.backend.derivatives } };
     this.frame = { size: spectrum.patchSize, origin: [0, 0], periodic: true, resolution: spectrum.resolution };
   }
@@ -125,7 +128,15 @@ export class FftCascade implements WaveLayer {
   update(t: number, step: number): void {
     this.backend.update(t, step);
     if (this.queried) this.queryWorker?.request(t, step, true);
+    // While a worker is on its way, the provisional fields for this frame's queries are computed
+    // with the frame's update, not in its first query: at the first update (a new cascade is
+    // usually queried as the one it replaces was) and after frames with queries.
+    if ((this.queried || !this.updated) && this.workerComing && this.fromWorker(t) === null) {
+      const provisional = this.provisionalCopy();
+      if (provisional.lastWithin(t, LONGEST_CARRY) === null) this.computeHere(provisional, t).velocities();
+    }
     this.queried = false;
+    this.updated = true;
   }
 
   /** The fields at time t, computed here on the main thread (for the foam's warm-up and the tests). */
@@ -135,10 +146,10 @@ export class FftCascade implements WaveLayer {
   }
 
   queryFields(t: number): LayerQueryFields {
-    // The JS path's own fields where they are the queries' copy; else the query worker's.
-    const jsFields = this.jsFieldsForQueries;
-    const near = jsFields ? jsFields.forQueries() : this.queryWorkerWanted ? this.fromQueryWorker(t) : null;
-    if (near !== null && Math.abs(t - near.time) <= LONGEST_CARRY) return near;
+    this.queried = true;
+    if (this.queryWorkerWanted && this.queryWorker === null) this.startQueryWorkerSoon(t);
+    const near = this.fromWorker(t);
+    if (near !== null) return near;
     if (!this.workerComing) return this.computeHere(this.exactCopy(), t);
     // While a worker is on its way: the coarse copy, carried as the workers' fields are, so that
     // it is computed here at most once per LONGEST_CARRY rather than every frame.
@@ -157,10 +168,23 @@ export class FftCascade implements WaveLayer {
     return this.computedHere;
   }
 
-  /** Whether a worker will bring the queries' fields (the JS path's or the query worker, not given up). */
+  /**
+   * Whether a worker brings, or will bring once queried, the queries' fields (the JS path's, or the
+   * query worker, not given up).
+   */
   private get workerComing(): boolean {
     const jsFields = this.jsFieldsForQueries;
-    return jsFields ? jsFields.inWorker : this.queryWorkerTimer !== null || this.queryWorker?.givenUp === false;
+    return jsFields ? jsFields.inWorker : this.queryWorkerWanted && this.queryWorker?.givenUp !== true;
+  }
+
+  /**
+   * A worker's newest fields if they are within LONGEST_CARRY of t, else null: the JS path's own
+   * where they are the queries' copy, else the query worker's.
+   */
+  private fromWorker(t: number): LayerQueryFields | null {
+    const jsFields = this.jsFieldsForQueries;
+    const newest = jsFields ? jsFields.forQueries() : this.newest;
+    return newest !== null && Math.abs(t - newest.time) <= LONGEST_CARRY ? newest : null;
   }
 
   /** The queries' copy computed here, for the time asked. */
@@ -176,16 +200,14 @@ export class FftCascade implements WaveLayer {
     return this.computedProvisionally;
   }
 
-  /** The query worker's newest fields (or null); the first query has it made (and asked for t). */
-  private fromQueryWorker(t: number): LayerQueryFields | null {
-    this.queried = true;
+  /**
+   * Has the query worker made QUERY_WORKER_DELAY_MS from now (unless that is under way), then
+   * asked for the time of the last query before: in a task of its own rather than in the query
+   * (making a Worker takes milliseconds here), and only for a cascade that is kept a while.
+   */
+  private startQueryWorkerSoon(t: number): void {
     this.lastQueryTime = t;
-    if (this.queryWorker === null && this.queryWorkerTimer === null) {
-      // Later, in a task of its own rather than in the query (making a Worker takes milliseconds
-      // here), and only for a cascade that is kept a while (QUERY_WORKER_DELAY_MS).
-      this.queryWorkerTimer = setTimeout(() => this.startQueryWorker(), QUERY_WORKER_DELAY_MS);
-    }
-    return this.newest;
+    this.queryWorkerTimer ??= setTimeout(() => this.startQueryWorker(), QUERY_WORKER_DELAY_MS);
   }
 
   /** Makes the query worker and asks it for the time of the last query. */
