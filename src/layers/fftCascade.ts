@@ -129,9 +129,12 @@ export class FftCascade implements WaveLayer {
     this.backend.update(t, step);
     if (this.queried) this.queryWorker?.request(t, step, true);
     // While a worker is on its way, the provisional fields for this frame's queries are computed
-    // with the frame's update, not in its first query: at the first update (a new cascade is
-    // usually queried as the one it replaces was) and after frames with queries.
-    if ((this.queried || !this.updated) && this.workerComing && this.fromWorker(t) === null) {
+    // with the frame's update, not in its first query: at the first update (no worker has answered
+    // yet, and a new cascade is usually queried as the one it replaces was) and after frames with
+    // queries. (Not fromWorker at the first update: asking the JS path's fields for queries has its
+    // worker compute velocities from then on.)
+    const provisionalWanted = this.updated ? this.queried && this.fromWorker(t) === null : true;
+    if (provisionalWanted && this.workerComing) {
       const provisional = this.provisionalCopy();
       if (provisional.lastWithin(t, LONGEST_CARRY) === null) this.computeHere(provisional, t).velocities();
     }
