@@ -285,7 +285,16 @@ renderer.setAnimationLoop((now: number) => {
   if (rendered - lastStatus > 250) {
     const time = { t: state.t, paused: state.paused, timeScale: state.timeScale, ratio: clock.timeRatio };
     const { pathReason, pathPreference } = ocean.simulation;
-    const qualityStatus = { level: quality.level, auto: quality.setting === 'auto', targetFps: quality.targetFps, frameMs: quality.medianFrameMs };
+    const qualityStatus = {
+      level: quality.level,
+      auto: quality.setting === 'auto',
+      targetFps: quality.targetFps,
+      frameMs: quality.medianFrameMs,
+      renderScale: quality.step.renderScale,
+      msaa: output.msaa,
+      resolution: ocean.parameters.resolution,
+      cascades: ocean.parameters.patchSizes.length,
+    };
     overlay.show(describeSeaState(ocean), ocean.simulation.path, averager.latest, time, controls.speed, pathPreference === 'js' ? '' : pathReason, qualityStatus);
     lastStatus = rendered;
   }

@@ -83,6 +83,11 @@ export interface QualityStatus {
   targetFps: number;
   /** The median frame time of the last window, ms, or null before the first. */
   frameMs: number | null;
+  /** What the level draws: its render scale (of the device's pixel ratio), MSAA, and the ocean's grid and cascades. */
+  renderScale: number;
+  msaa: boolean;
+  resolution: number;
+  cascades: number;
 }
 
 export class StatusOverlay {
@@ -112,7 +117,7 @@ export class StatusOverlay {
 
   /**
    * The status: FFT path, frame rate, the quality level with the median frame time it was chosen
-   * by, and CPU timings on one line; time and camera speed on the next. `reason`: why the path is
+   * by and what it draws, and CPU timings on one line; time and camera speed on the next. `reason`: why the path is
    * not the best asked for (SimulationPath's pathReason), shown after it.
    */
   show(seaState: string, path: SimulationPath, timings: FrameTimings | null, time: TimeStatus, speed: number, reason = '', quality?: QualityStatus): void {
@@ -120,7 +125,8 @@ export class StatusOverlay {
     if (timings) parts.push(`${timings.fps.toFixed(0)} fps`);
     if (quality) {
       const frame = quality.frameMs === null ? '' : `, frame ${quality.frameMs.toFixed(0)} ms`;
-      parts.push(`quality ${quality.level}${quality.auto ? ` (auto, for ${quality.targetFps} fps${frame})` : frame}`);
+      const drawn = `render scale ${quality.renderScale}, ${quality.msaa ? '4× MSAA' : 'no MSAA'}, ${quality.cascades} cascade${quality.cascades === 1 ? '' : 's'} of ${quality.resolution}²`;
+      parts.push(`quality ${quality.level}${quality.auto ? ` (auto, for ${quality.targetFps} fps${frame})` : frame}: ${drawn}`);
     }
     if (timings) parts.push(`CPU time: sim ${timings.simulationMs.toFixed(1)} ms, render ${timings.renderMs.toFixed(1)} ms`);
     this.status.textContent = parts.join(' · ');

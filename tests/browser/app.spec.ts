@@ -114,7 +114,7 @@ test.describe('the app', () => {
     const errors = await openApp(page, 'resolution=64');
     const status = page.locator('#status .status-line');
     await expect(status).toHaveText(
-      new RegExp(`^${SEA_STATE_TEXT} · FFT: (GPU RGBA32F|GPU RGBA16F|JS in a worker|JS) · \\d+ fps · quality high(, frame \\d+ ms)? · CPU time: sim \\d+\\.\\d ms, render \\d+\\.\\d ms$`),
+      new RegExp(`^${SEA_STATE_TEXT} · FFT: (GPU RGBA32F|GPU RGBA16F|JS in a worker|JS) · \\d+ fps · quality high(, frame \\d+ ms)?: render scale 1, 4× MSAA, 3 cascades of 64² · CPU time: sim \\d+\\.\\d ms, render \\d+\\.\\d ms$`),
     );
     await expect(page.locator('#status .status-time')).toHaveText(/^t = \d+\.\d\d s · camera speed 20 m\/s$/);
     const path = await page.evaluate(() => window.oceanApp.ocean.simulation.path);
@@ -485,7 +485,7 @@ test.describe('the app', () => {
     expect(lowest.cascades).toEqual([79.3, 457]); // the two largest patches: the longest waves stay
     expect(lowest.askedPatchSizes).toEqual([13.7, 79.3, 457]);
     expect(lowest.fewestGridCells).toBe(16); // a 108-pixel-high picture: 16 cells a ring
-    await expect(status).toContainText(/quality lowest \(auto, for 60 fps, frame \d+ ms\)/);
+    await expect(status).toContainText(/quality lowest \(auto, for 60 fps, frame \d+ ms\): render scale 0\.3, no MSAA, 2 cascades of 32² · /);
 
     // A fixed level is put in force at once and kept, whatever the frames.
     await page.evaluate(() => window.oceanApp.set({ quality: 'medium' }));
