@@ -20,7 +20,7 @@ import { OceanSimulation, type PathPreference, type SimulationOptions, type Simu
 import type { LocalWaves } from './layers/localWaves';
 import { checkThreeRelease } from './fft/threeInternals';
 import { heightAt, normalAt, velocityAt } from './layers/surfaceQuery';
-import { DisposedError, isOptionsObject, optionAliases, unknownOption } from './parameters/options';
+import { checkOptionNames, DisposedError, isOptionsObject, optionAliases } from './parameters/options';
 import { ParameterError, SIMULATION_OPTIONS, type SimulationParameters } from './parameters/parameters';
 import { DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ShadingChanges, type ShadingOptions } from './parameters/sceneOptions';
 import type { InitialSpectrum } from './spectrum/initialSpectrum';
@@ -116,10 +116,7 @@ export class Ocean extends Object3D<OceanEventMap> {
     super();
     checkThreeRelease();
     this.name = 'Ocean';
-    if (!isOptionsObject(options)) throw new ParameterError('options', options, 'an object of options, such as { windSpeed: 12 }');
-    for (const [key, value] of Object.entries(options)) {
-      if (!OCEAN_OPTION_KEYS.includes(key) && !Object.hasOwn(SHADING_ALIASES, key)) throw unknownOption(key, value, OCEAN_OPTION_KEYS, SHADING_ALIASES);
-    }
+    checkOptionNames(options, OCEAN_OPTION_KEYS, 'options', { aliases: SHADING_ALIASES, allowed: 'an object of options, such as { windSpeed: 12 }' });
     const simulationParameters = pick(options, SIMULATION_KEYS);
     const shading = pick(options, SHADING_NAMES);
     const sun = sunAngles(
@@ -296,12 +293,7 @@ export class Ocean extends Object3D<OceanEventMap> {
     this.checkAlive('setSun');
     const current = { elevation: this.sky.sunElevation, azimuth: this.sky.sunAzimuth };
     const sun = typeof sunOrElevation === 'number' ? { elevation: sunOrElevation, azimuth } : sunOrElevation;
-    if (!isOptionsObject(sun)) {
-      throw new ParameterError('setSun', sun, '{ elevation, azimuth } (degrees), { direction } or (elevation, azimuth)');
-    }
-    for (const [key, value] of Object.entries(sun)) {
-      if (!SUN_POSITION_KEYS.includes(key)) throw unknownOption(key, value, SUN_POSITION_KEYS);
-    }
+    checkOptionNames(sun, SUN_POSITION_KEYS, 'setSun', { allowed: '{ elevation, azimuth } (degrees), { direction } or (elevation, azimuth)' });
     const { elevation, azimuth: angle } = sunAngles(sun, current, 'direction');
     this.sky.setSun(elevation, angle);
   }

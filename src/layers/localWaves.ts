@@ -19,7 +19,7 @@
  * sea without sources costs nothing).
  */
 import { ClampToEdgeWrapping, DataTexture, FloatType, LinearFilter, NearestFilter, RGBAFormat, type WebGLRenderer } from 'three';
-import { ParameterError } from '../parameters/options';
+import { checkOptionNames, ParameterError } from '../parameters/options';
 import { GpuLocalWaves } from './gpuLocalWaves';
 import { CpuLocalWaves, MAX_IMPULSES_PER_STEP, type HeightImpulse, type LocalWaveGrid } from './localWaveModel';
 import { heightAt } from './surfaceQuery';
@@ -47,6 +47,12 @@ export interface LocalWavesOptions {
    */
   path?: 'auto' | 'gpu' | 'js';
 }
+
+/** The names of LocalWavesOptions, DropOptions, HullShape and HullPose: any other is a misspelling. */
+export const LOCAL_WAVES_OPTION_KEYS: readonly (keyof LocalWavesOptions)[] = ['resolution', 'cellSize', 'path'];
+const DROP_OPTION_KEYS: readonly (keyof DropOptions)[] = ['radius', 'depth'];
+const HULL_SHAPE_KEYS: readonly (keyof HullShape)[] = ['length', 'beam', 'draft'];
+const HULL_POSE_KEYS: readonly (keyof HullPose)[] = ['x', 'z', 'heading'];
 
 /** A stone's dip. */
 export interface DropOptions {
@@ -144,6 +150,7 @@ export class LocalWaves implements WaveLayer {
     useGpu: boolean,
     options: LocalWavesOptions = {},
   ) {
+    checkOptionNames(options, LOCAL_WAVES_OPTION_KEYS, 'localWaves', { prefix: 'localWaves.' });
     const resolution = options.resolution ?? 128;
     const cellSize = options.cellSize ?? 1;
     if (!Number.isInteger(resolution) || resolution < 16 || resolution > 1024 || (resolution & (resolution - 1)) !== 0) {
@@ -236,6 +243,7 @@ export class LocalWaves implements WaveLayer {
    */
   drop(x: number, z: number, options: DropOptions = {}): boolean {
     if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError('drop(x, z)', [x, z], 'finite coordinates in metres');
+    checkOptionNames(options, DROP_OPTION_KEYS, 'drop options', { prefix: 'drop ' });
     const radius = options.radius ?? 1;
     const depth = options.depth ?? 0.5;
     if (!(radius >= 0.1 && radius <= 20)) throw new ParameterError('drop radius', radius, 'metres from 0.1 to 20');
@@ -256,6 +264,8 @@ export class LocalWaves implements WaveLayer {
    * what came before.
    */
   addPressure(shape: HullShape, pose: HullPose, path?: (t: number) => HullPose): PressureSource {
+    checkOptionNames(shape, HULL_SHAPE_KEYS, 'hull shape', { prefix: 'hull ' });
+    checkOptionNames(pose, HULL_POSE_KEYS, 'hull pose', { prefix: 'hull pose ' });
     for (const key of ['length', 'beam'] as const) {
       if (!(shape[key] >= 0.2 && shape[key] <= 400)) throw new ParameterError(`hull ${key}`, shape[key], 'metres from 0.2 to 400');
     }

@@ -49,7 +49,7 @@ import {
 } from 'three';
 import { skyDaylight, sunAboveHorizon } from './daylight';
 import { shaderSource } from '../shaderSource';
-import { checkOption, DisposedError, ParameterError } from '../parameters/options';
+import { checkOption, checkOptionNames, DisposedError, ParameterError } from '../parameters/options';
 import { DEFAULT_SUN, SUN_OPTIONS } from '../parameters/sceneOptions';
 
 /** URLs of the six faces, in three.js's naming (p/n = positive/negative axis). */
@@ -70,6 +70,9 @@ export interface SkyEnvironmentOptions {
   /** Cube face size in texels. Default 256. */
   resolution?: number;
 }
+
+/** The names SkyEnvironmentOptions has: any other is a misspelling. */
+const SKY_ENVIRONMENT_OPTION_KEYS: readonly (keyof SkyEnvironmentOptions)[] = ['sunElevation', 'sunAzimuth', 'resolution'];
 
 /**
  * The face set shipped in public/skybox/ and where its sun is: pass these to setSun() so
@@ -169,6 +172,7 @@ export class SkyEnvironment {
     private readonly renderer: WebGLRenderer,
     options: SkyEnvironmentOptions = {},
   ) {
+    checkOptionNames(options, SKY_ENVIRONMENT_OPTION_KEYS, 'SkyEnvironment options', { prefix: 'SkyEnvironment ' });
     const { sunElevation = DEFAULT_SUN.sunElevation, sunAzimuth = DEFAULT_SUN.sunAzimuth, resolution = 256 } = options;
     validateSun(sunElevation, sunAzimuth);
     if (!Number.isInteger(resolution) || resolution < 1 || resolution > renderer.capabilities.maxCubemapSize) {
