@@ -8,8 +8,8 @@
  *
  * The sea is the plane y = 0 of world space; give the camera a far plane of at least
  * ocean.horizonDistanceFor(camera's height) (several thousand heights) so the surface reaches the
- * horizon. Owns everything it creates and frees it in dispose(); after that every method throws a
- * DisposedError.
+ * horizon. Owns everything it creates and frees it in dispose(); after that every method and getter
+ * throws a DisposedError.
  */
 import { Object3D, Vector3, type Object3DEventMap, type WebGLRenderer } from 'three';
 import { OceanSurface } from './render/oceanSurface';
@@ -166,6 +166,7 @@ export class Ocean extends Object3D<OceanEventMap> {
   }
 
   get time(): number {
+    this.checkAlive('time');
     return this.currentTime;
   }
 
@@ -176,6 +177,7 @@ export class Ocean extends Object3D<OceanEventMap> {
    * variances add. At one instant it differs by up to ~25%.
    */
   get heightRms(): number {
+    this.checkAlive('heightRms');
     const layers = this.simulation.layers;
     if (this.rms?.spectra.length !== layers.length || this.rms.spectra.some((spectrum, i) => spectrum !== layers[i].spectrum)) {
       let sum = 0;
@@ -191,6 +193,7 @@ export class Ocean extends Object3D<OceanEventMap> {
    * part of the spectrum its cascades cover: 4·heightRms is its Hs.
    */
   get seaState(): SeaStateSummary {
+    this.checkAlive('seaState');
     const parameters = this.simulation.parameters;
     if (this.summary?.parameters !== parameters) {
       const { m0, peakFrequency } = spectralMoments(parameters, parameters.patchSizes[parameters.patchSizes.length - 1]);
@@ -216,6 +219,7 @@ export class Ocean extends Object3D<OceanEventMap> {
   }
 
   get parameters(): Readonly<SimulationParameters> {
+    this.checkAlive('parameters');
     return this.simulation.parameters;
   }
 
@@ -267,6 +271,7 @@ export class Ocean extends Object3D<OceanEventMap> {
 
   /** The shading options in use (colours as linear [r, g, b]). */
   get shading(): ShadingOptions {
+    this.checkAlive('shading');
     return this.surface.material.shading;
   }
 
@@ -357,7 +362,7 @@ export class Ocean extends Object3D<OceanEventMap> {
 
   /**
    * Frees every GPU resource the Ocean made and takes its sea and sky out of it (left in a scene it
-   * draws nothing). Every method throws a DisposedError from then on; disposing again does nothing.
+   * draws nothing). Every method and getter throws a DisposedError from then on; disposing again does nothing.
    */
   dispose(): void {
     if (this.disposed) return;

@@ -19,7 +19,7 @@
  * sea without sources costs nothing).
  */
 import { ClampToEdgeWrapping, DataTexture, FloatType, LinearFilter, NearestFilter, RGBAFormat, type WebGLRenderer } from 'three';
-import { checkOptionNames, ParameterError } from '../parameters/options';
+import { checkOptionNames, DisposedError, ParameterError } from '../parameters/options';
 import { GpuLocalWaves } from './gpuLocalWaves';
 import { CpuLocalWaves, MAX_IMPULSES_PER_STEP, type HeightImpulse, type LocalWaveGrid } from './localWaveModel';
 import { heightAt } from './surfaceQuery';
@@ -210,6 +210,7 @@ export class LocalWaves implements WaveLayer {
    * during the run-up after a jump in time too (for a still of a hull whose waves move with it).
    */
   follow(x: number | null | ((t: number) => { x: number; z: number }), z?: number): void {
+    this.checkAlive('follow');
     this.followPath = null;
     if (x === null) {
       this.followingCamera = true;
@@ -222,6 +223,14 @@ export class LocalWaves implements WaveLayer {
     }
     if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError('follow(x, z)', [x, z], 'finite coordinates in metres, null for the camera, or a path (t) => ({ x, z })');
     this.target = [x, z as number];
+  }
+
+  /**
+   * Throws a DisposedError once this is disposed (with its Ocean, or replaced by a rebuild for
+   * another depth or solver): a stone or a hull given then would make no waves, silently.
+   */
+  private checkAlive(method: string): void {
+    if (this.disposed) throw new DisposedError(`LocalWaves.${method}`, 'LocalWaves');
   }
 
   /** Aims the grid at where its path is at time t (for a grid that follows one). */
@@ -242,6 +251,7 @@ export class LocalWaves implements WaveLayer {
    * grid is ignored (returns false).
    */
   drop(x: number, z: number, options: DropOptions = {}): boolean {
+    this.checkAlive('drop');
     if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError('drop(x, z)', [x, z], 'finite coordinates in metres');
     checkOptionNames(options, DROP_OPTION_KEYS, 'drop options', { prefix: 'drop ' });
     const radius = options.radius ?? 1;
@@ -264,6 +274,7 @@ export class LocalWaves implements WaveLayer {
    * what came before.
    */
   addPressure(shape: HullShape, pose: HullPose, path?: (t: number) => HullPose): PressureSource {
+    this.checkAlive('addPressure');
     checkOptionNames(shape, HULL_SHAPE_KEYS, 'hull shape', { prefix: 'hull ' });
     checkOptionNames(pose, HULL_POSE_KEYS, 'hull pose', { prefix: 'hull pose ' });
     for (const key of ['length', 'beam'] as const) {

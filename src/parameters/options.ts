@@ -62,8 +62,8 @@ export class ParameterError extends Error {
 }
 
 /**
- * Thrown by every method of an object after its dispose() (an Ocean, a SkyEnvironment);
- * `parameter` names the method.
+ * Thrown by every method of an object after its dispose() (an Ocean and its getters, a
+ * SkyEnvironment, LocalWaves' drop, addPressure and follow); `parameter` names the method.
  */
 export class DisposedError extends ParameterError {
   constructor(method: string, owner = 'Ocean') {

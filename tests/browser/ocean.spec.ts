@@ -416,12 +416,13 @@ test.describe('the Ocean API', () => {
     expect([result.kept.elevation, result.kept.azimuth]).toEqual([25, 60]);
   });
 
-  test('after dispose() every method throws a DisposedError (a ParameterError); disposing twice is harmless', async ({ page }) => {
+  test('after dispose() every method and getter throws a DisposedError (a ParameterError), and so do its local waves; disposing twice is harmless', async ({ page }) => {
     await openOcean(page);
     const result = await page.evaluate(() => {
       const { Ocean, ParameterError, DisposedError, renderer } = window.ocean;
       const ocean = new Ocean(renderer, { resolution: 16, worker: false });
       ocean.update(1);
+      const waves = ocean.localWaves!; // held by the caller: disposed with the ocean
       ocean.dispose();
       ocean.dispose();
       const calls: [string, () => unknown][] = [
@@ -429,9 +430,21 @@ test.describe('the Ocean API', () => {
         ['setParameters', () => ocean.setParameters({ windSpeed: 5 })],
         ['setShading', () => ocean.setShading({ ior: 1.4 })],
         ['setSun', () => ocean.setSun(10, 20)],
+        ['setPath', () => ocean.setPath('js')],
         ['heightAt', () => ocean.heightAt(0, 0)],
+        ['normalAt', () => ocean.normalAt(0, 0)],
+        ['heightsAt', () => ocean.heightsAt([0, 0], [0])],
         ['horizonDistanceFor', () => ocean.horizonDistanceFor(10)],
         ['horizonDistance', () => ocean.horizonDistance],
+        // The getters too: they would read freed layers or report a sea that no longer exists.
+        ['time', () => ocean.time],
+        ['parameters', () => ocean.parameters],
+        ['shading', () => ocean.shading],
+        ['heightRms', () => ocean.heightRms],
+        ['seaState', () => ocean.seaState],
+        ['repeatPeriod', () => ocean.repeatPeriod],
+        ['path', () => ocean.path],
+        ['localWaves', () => ocean.localWaves],
       ];
       const errors = calls.map(([name, call]) => {
         try {
@@ -442,15 +455,27 @@ test.describe('the Ocean API', () => {
           return `${name}: ${e instanceof DisposedError && e instanceof ParameterError} ${e.name} ${e.parameter}: ${e.message}`;
         }
       });
-      return { errors, children: ocean.children.length };
+      const localWaveErrors = [() => waves.drop(0, 0), () => waves.addPressure({ length: 8, beam: 2.6, draft: 0.6 }, { x: 0, z: 0, heading: 0 }), () => waves.follow(1, 2)].map((call) => {
+        try {
+          call();
+          return 'no error';
+        } catch (error) {
+          const e = error as InstanceType<typeof DisposedError>;
+          return `${e instanceof DisposedError} ${e.parameter}`;
+        }
+      });
+      return { calls: calls.map(([name]) => name), errors, localWaveErrors, children: ocean.children.length };
     });
     const method = (call: string) => (call === 'horizonDistance' ? 'horizonDistanceFor' : call);
+    expect(result.calls).toHaveLength(18);
     expect(result.errors).toEqual(
-      ['update', 'setParameters', 'setShading', 'setSun', 'heightAt', 'horizonDistanceFor', 'horizonDistance'].map(
+      result.calls.map(
         (call) =>
           `${call}: true DisposedError Ocean.${method(call)}: Ocean.${method(call)}: this Ocean has been disposed (its GPU resources are freed); create a new Ocean`,
       ),
     );
+    // The local waves an ocean made are freed with it: a stone dropped on them later would make no waves.
+    expect(result.localWaveErrors).toEqual(['true LocalWaves.drop', 'true LocalWaves.addPressure', 'true LocalWaves.follow']);
     expect(result.children).toBe(0); // left in a scene, it draws nothing
   });
 });
