@@ -35,17 +35,21 @@ export interface OceanOptions extends Partial<SimulationParameters>, OceanShadin
   /**
    * Direction towards the sun instead of sunElevation and sunAzimuth: a Vector3 or [x, y, z] in
    * world space (y up), any length; see Ocean.setSun.
+   * @defaultValue undefined (the sun is at sunElevation and sunAzimuth)
    */
   sunDirection?: SunDirection;
 }
 
 /** Where the sun is, for Ocean.setSun: degrees (a missing one stays as it is), or a direction instead. */
 export interface SunPosition {
-  /** Degrees above the horizon, [-90, 90]. */
+  /** Degrees above the horizon, [-90, 90]. @defaultValue the elevation in force */
   elevation?: number;
-  /** Degrees from +x towards +z. */
+  /** Degrees from +x towards +z. @defaultValue the azimuth in force */
   azimuth?: number;
-  /** Towards the sun in world space (y up), any length but 0: a Vector3 or [x, y, z]. Not with elevation or azimuth. */
+  /**
+   * Towards the sun in world space (y up), any length but 0: a Vector3 or [x, y, z]. Not with
+   * elevation or azimuth. @defaultValue undefined (the sun is at elevation and azimuth)
+   */
   direction?: SunDirection;
 }
 

@@ -48,6 +48,12 @@ export interface SimulationOptions {
   localWaves?: boolean | LocalWavesOptions;
 }
 
+/**
+ * The defaults of SimulationOptions; `worker` is true only where Worker exists (not in Node, say),
+ * false elsewhere.
+ */
+export const DEFAULT_SIMULATION_OPTIONS: Readonly<Required<SimulationOptions>> = Object.freeze({ path: 'auto', worker: true, localWaves: true });
+
 export class OceanSimulation {
   private currentParameters: SimulationParameters;
   /** The parameters the spectra were made from (a later change may have been shader-only). */
@@ -79,9 +85,10 @@ export class OceanSimulation {
   ) {
     this.currentParameters = this.spectraParameters = validateParameters(parameters);
     checkOptionNames(options, SIMULATION_OPTION_KEYS, 'OceanSimulation options');
-    this.preference = checkPreference(options.path ?? 'auto');
-    this.useWorker = options.worker ?? typeof Worker !== 'undefined';
-    this.localWaveOptions = checkLocalWaves(options.localWaves ?? true);
+    const defaults = DEFAULT_SIMULATION_OPTIONS;
+    this.preference = checkPreference(options.path ?? defaults.path);
+    this.useWorker = options.worker ?? (defaults.worker && typeof Worker !== 'undefined');
+    this.localWaveOptions = checkLocalWaves(options.localWaves ?? defaults.localWaves);
     const localPath = this.localWaveOptions?.path ?? 'auto';
     if (localPath !== 'auto' && localPath !== 'gpu' && localPath !== 'js') throw new ParameterError('localWaves.path', localPath, "'auto', 'gpu' or 'js'");
     this.rebuild(true);

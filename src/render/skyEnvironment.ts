@@ -63,13 +63,16 @@ export interface CubeFaceUrls {
 }
 
 export interface SkyEnvironmentOptions {
-  /** Degrees above the horizon, in [-90, 90]. Default 30. */
+  /** Degrees above the horizon, in [-90, 90]. @defaultValue 30 */
   sunElevation?: number;
-  /** Degrees from +x towards +z. Default 40. */
+  /** Degrees from +x towards +z. @defaultValue 40 */
   sunAzimuth?: number;
-  /** Cube face size in texels. Default 256. */
+  /** Cube face size in texels, up to the renderer's largest cube map. @defaultValue 256 */
   resolution?: number;
 }
+
+/** The defaults of SkyEnvironmentOptions (the sun's are DEFAULT_SUN's). */
+export const DEFAULT_SKY_ENVIRONMENT: Readonly<Required<SkyEnvironmentOptions>> = Object.freeze({ ...DEFAULT_SUN, resolution: 256 });
 
 /** The names SkyEnvironmentOptions has: any other is a misspelling. */
 const SKY_ENVIRONMENT_OPTION_KEYS: readonly (keyof SkyEnvironmentOptions)[] = ['sunElevation', 'sunAzimuth', 'resolution'];
@@ -173,7 +176,8 @@ export class SkyEnvironment {
     options: SkyEnvironmentOptions = {},
   ) {
     checkOptionNames(options, SKY_ENVIRONMENT_OPTION_KEYS, 'SkyEnvironment options', { prefix: 'SkyEnvironment ' });
-    const { sunElevation = DEFAULT_SUN.sunElevation, sunAzimuth = DEFAULT_SUN.sunAzimuth, resolution = 256 } = options;
+    const defaults = DEFAULT_SKY_ENVIRONMENT;
+    const { sunElevation = defaults.sunElevation, sunAzimuth = defaults.sunAzimuth, resolution = defaults.resolution } = options;
     validateSun(sunElevation, sunAzimuth);
     if (!Number.isInteger(resolution) || resolution < 1 || resolution > renderer.capabilities.maxCubemapSize) {
       throw new ParameterError('SkyEnvironment resolution', resolution, `an integer in [1, ${renderer.capabilities.maxCubemapSize}]`);
