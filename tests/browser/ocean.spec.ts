@@ -252,8 +252,11 @@ test('the sea honours scene.fog (Fog and FogExp2) as three\'s materials do: far 
 test('with a plain, a logarithmic or a reversed depth buffer the sea hides the submerged half of a floating box', ALSO_ON_OLDEST_THREE, async ({ page }) => {
   await openOcean(page);
   const modes = await page.evaluate(() => window.ocean.depthBufferCheck());
-  for (const { mode, inForce, above, below } of modes) {
-    console.log(`depth buffer ${mode}${inForce ? '' : ' (not available here: plain depth in force)'}: box above the water ${above.join(',')}, below ${below.join(',')}`);
+  for (const { mode, supported, inForce, above, below } of modes) {
+    console.log(`depth buffer ${mode}${inForce ? ' (in force)' : ' (not available here: plain depth in force)'}: box above the water ${above.join(',')}, below ${below.join(',')}`);
+    // Where this context and three.js can give it, it must be what was drawn with: else the test
+    // would pass on a plain depth buffer and check nothing.
+    if (supported) expect(inForce, `${mode} depth buffer in force`).toBe(true);
     expect(above, `${mode}: the box above the water is red`).toEqual([255, 0, 0]);
     // Below the water line the sea is drawn, not the box (whose red would show through).
     expect(below[0] - Math.max(below[1], below[2]), `${mode}: the box under the water is hidden`).toBeLessThan(60);
@@ -414,6 +417,47 @@ test.describe('the Ocean API', () => {
     ]);
     expect(result.constructorError).toMatch(/^true: sunDirection must be a finite, non-zero direction/);
     expect([result.kept.elevation, result.kept.azimuth]).toEqual([25, 60]);
+  });
+
+  test('setPath and the path option: ocean.path reports the preference, the path that runs and why, and the change is an event', async ({ page }) => {
+    await openOcean(page);
+    const result = await page.evaluate(() => {
+      const { Ocean, ParameterError, renderer } = window.ocean;
+      const ocean = new Ocean(renderer, { resolution: 16, worker: false, localWaves: false, path: 'gpu' });
+      const events: string[] = [];
+      ocean.addEventListener('pathchange', ({ path }) => events.push(`${path.preference} ${path.running} "${path.reason}"`));
+      ocean.update(1);
+      const paths = [ocean.path];
+      ocean.setPath('js');
+      paths.push(ocean.path);
+      ocean.update(2);
+      ocean.setPath('auto');
+      ocean.update(3);
+      paths.push(ocean.path);
+      let error = '';
+      try {
+        ocean.setPath('cuda' as never);
+      } catch (e) {
+        error = `${e instanceof ParameterError}: ${(e as Error).message}`;
+      }
+      paths.push(ocean.path);
+      ocean.dispose();
+      // The option at construction, with the JS path's worker.
+      const inWorker = new Ocean(renderer, { resolution: 16, localWaves: false, path: 'js' });
+      paths.push(inWorker.path);
+      inWorker.dispose();
+      return { paths, events, error };
+    });
+    expect(result.paths).toEqual([
+      { preference: 'gpu', running: 'gpu-rgba32f', reason: '' },
+      { preference: 'js', running: 'js', reason: 'asked for' }, // at once, before the next update
+      { preference: 'auto', running: 'gpu-rgba32f', reason: '' },
+      { preference: 'auto', running: 'gpu-rgba32f', reason: '' }, // a bad preference changes nothing
+      { preference: 'js', running: 'js-worker', reason: 'asked for' },
+    ]);
+    // The event comes at the update after each change of the running path, not for the first.
+    expect(result.events).toEqual(['js js "asked for"', 'auto gpu-rgba32f ""']);
+    expect(result.error).toBe('true: path must be \'auto\', \'gpu\' or \'js\'; got "cuda"');
   });
 
   test('after dispose() every method and getter throws a DisposedError (a ParameterError), and so do its local waves; disposing twice is harmless', async ({ page }) => {

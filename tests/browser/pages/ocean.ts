@@ -317,10 +317,12 @@ const harness = {
   /**
    * A red box 2 m on a side, half under a calm sea, seen from 7 m away and 2 m up, with a renderer
    * of each depth buffer: plain, logarithmic and reversed (where EXT_clip_control allows it). For
-   * each: whether it was in force, and the colour (0–255) at the middle of the box's front face
-   * 0.6 m above and 0.6 m below the water line.
+   * each: whether this context and three.js release can give it (reversed: EXT_clip_control, and
+   * a three.js with the option), whether it was in force (reversed: three's capability, and its
+   * depth state reversed during the render), and the colour (0–255) at the middle of the box's
+   * front face 0.6 m above and 0.6 m below the water line.
    */
-  depthBufferCheck(): { mode: string; inForce: boolean; above: number[]; below: number[] }[] {
+  depthBufferCheck(): { mode: string; supported: boolean; inForce: boolean; above: number[]; below: number[] }[] {
     const modes = [
       { mode: 'plain', options: {} },
       { mode: 'logarithmic', options: { logarithmicDepthBuffer: true } },
@@ -346,8 +348,13 @@ const harness = {
         gl.readPixels(Math.round(((at.x + 1) / 2) * 160), Math.round(((at.y + 1) / 2) * 120), 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
         return [...pixel.slice(0, 3)];
       };
-      const inForce = mode === 'plain' || (mode === 'logarithmic' ? own.capabilities.logarithmicDepthBuffer : own.capabilities.reversedDepthBuffer);
-      const result = { mode, inForce, above: colourAt(0.6), below: colourAt(-0.6) };
+      const capabilities = own.capabilities as { logarithmicDepthBuffer: boolean; reversedDepthBuffer?: boolean };
+      const depthState = own.state.buffers.depth as { getReversed?: () => boolean };
+      const supported = mode !== 'reversed' || (own.extensions.has('EXT_clip_control') && capabilities.reversedDepthBuffer !== undefined);
+      const inForce =
+        mode === 'plain' ||
+        (mode === 'logarithmic' ? capabilities.logarithmicDepthBuffer : capabilities.reversedDepthBuffer === true && depthState.getReversed?.() === true);
+      const result = { mode, supported, inForce, above: colourAt(0.6), below: colourAt(-0.6) };
       ocean.dispose();
       box.geometry.dispose();
       box.material.dispose();
