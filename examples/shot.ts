@@ -11,8 +11,9 @@
  *                  and SHADING_OPTIONS (src/parameters/) in kebab-case (--wind-speed, --patch-sizes,
  *                  --shading-mode …), read with parseOptionText; --wind is --wind-speed, and each
  *                  alias of the tables in kebab-case is its option (--scatter-colour); and the
- *                  app's --path, --skybox, --wireframe, --inspector, --cam (read as the app's URL
- *                  reads path, skybox, wireframe, inspector and cam, urlState.parseValue)
+ *                  app's --path, --skybox, --wireframe, --inspector, --boat, --buoys, --quality,
+ *                  --cam (read as the app's URL reads them, urlState.parseValue); the app's
+ *                  --target-fps, --time-scale, --paused and --t are refused, saying why (NOT_IN_A_SHOT)
  *   time           the time drawn on load, s (default 0)
  *   camera         x,y,z,tx,ty,tz: position and look-at point (default: the app's cam)
  *   fov            vertical field of view in degrees (default the app's, 55)
@@ -31,6 +32,7 @@ import { Scene } from 'three';
 import { createAppCamera, createAppOcean, createAppRenderer, loadAppSkybox, prepareAppFrame, startingQuality } from '../src/app/appView';
 import { SceneOutput } from '../src/render/sceneOutput';
 import { Boat, centreAhead } from '../src/objects/boat';
+import { Buoys } from '../src/objects/buoys';
 import { FlyControls } from '../src/app/flyControls';
 import { Inspector } from '../src/app/inspector';
 import { SunLight } from '../src/objects/sunLight';
@@ -48,6 +50,7 @@ import {
 import { formatOptionText, nearestName, parseDecimal, ParameterError, parseOptionText, type OptionRule } from '../src/parameters/options';
 import { SIMULATION_OPTIONS, validateParameters } from '../src/parameters/parameters';
 import { SHADING_OPTIONS, SUN_OPTIONS } from '../src/parameters/sceneOptions';
+import { QUALITY_SETTINGS } from '../src/timing/adaptiveQuality';
 
 declare global {
   interface Window {
@@ -101,7 +104,29 @@ OPTIONS.set('skybox', {
 OPTIONS.set('wireframe', { stateKey: 'wireframe', placeholder: '[1|0]', help: 'draw the surface as wireframe', flag: true });
 OPTIONS.set('inspector', { stateKey: 'inspector', placeholder: '[1|0]', help: "the inspector's tiles along the bottom", flag: true });
 OPTIONS.set('boat', { stateKey: 'boat', placeholder: '[1|0]', help: "the app's boat on its course ahead of the camera, with its wake run up to the time", flag: true });
+OPTIONS.set('buoys', {
+  stateKey: 'buoys',
+  placeholder: '[1|0]',
+  help: "the app's buoys, set down at rest ahead of the camera at the first frame's time (as the app does on load), then moved frame by frame",
+  flag: true,
+});
+OPTIONS.set('quality', {
+  stateKey: 'quality',
+  placeholder: QUALITY_SETTINGS.join('|'),
+  help: "the app's quality level: its grid, cascades and MSAA, at pixel ratio 1 (its render scale does not apply: the PNG has --size); auto is the level the app starts at, high",
+});
 OPTIONS.set('cam', { stateKey: 'cam', placeholder: 'x,y,z,yaw,pitch', help: "the app's camera: metres and degrees (instead of --camera)" });
+
+/**
+ * The app's settings that a shot has no use for, each with why: the CLI refuses them rather than
+ * ignore them. (From a --query link they are read as the app reads them: see the README.)
+ */
+const NOT_IN_A_SHOT: Readonly<Record<string, string>> = {
+  'target-fps': "the frame rate quality 'auto' adapts to; a shot draws each frame however long it takes, at the level 'auto' starts at (high)",
+  'time-scale': 'a shot draws the times asked for: --time, and with --frames one frame every 1/--fps seconds of simulated time',
+  paused: 'a still shows one time (--time); frames move by 1/--fps each',
+  t: 'the time of a shot is --time <seconds>',
+};
 
 function optionNamed(name: string): ShotOption | undefined {
   return OPTIONS.get(Object.hasOwn(ALIASES, name) ? ALIASES[name] : name);
@@ -128,10 +153,11 @@ function readOption(name: string, option: ShotOption, text: string): unknown {
 function stateFromOptions(query: URLSearchParams): AppState {
   const state = defaultState();
   const given = new Map<keyof AppState, string>();
-  const known = [...OPTIONS.keys(), ...Object.keys(ALIASES), ...(query.get('cli') ?? '').split(',').filter(Boolean)];
+  const known = [...OPTIONS.keys(), ...Object.keys(ALIASES), ...Object.keys(NOT_IN_A_SHOT), ...(query.get('cli') ?? '').split(',').filter(Boolean)];
   for (const [parameter, text] of query) {
     if (!parameter.startsWith('--')) continue;
     const name = parameter.slice(2);
+    if (Object.hasOwn(NOT_IN_A_SHOT, name)) throw new UsageError(`--${name} is an app setting a shot has no use for: ${NOT_IN_A_SHOT[name]}`);
     const option = optionNamed(name);
     if (!option) {
       const nearest = nearestName(name, known);
@@ -217,6 +243,8 @@ function helpText(): string {
   section("Sea (src/parameters/parameters.ts; the app's URL names in kebab-case)", from(SIMULATION_OPTIONS));
   section('Sun and shading (src/parameters/sceneOptions.ts)', [...from(SUN_OPTIONS), ...from(SHADING_OPTIONS)]);
   section("The app's other settings (src/app/urlState.ts)", names.filter((name) => !OPTIONS.get(name)!.table));
+  lines.push('', "The app's settings a shot has no use for (refused here; in a --query link read and left unused)");
+  for (const [name, why] of Object.entries(NOT_IN_A_SHOT)) entry(`  --${name}`, why);
   return lines.join('\n').slice(1);
 }
 
@@ -264,6 +292,8 @@ async function start(): Promise<void> {
   const output = new SceneOutput(renderer, startingQuality(state).msaa);
   // worker: false, so the JS path's fields are ready when update returns.
   const ocean = createAppOcean(renderer, state, { worker: false });
+  // The level's grid floor too (as applyQualityStep sets it in the app; its pixel ratio is 1 here).
+  ocean.surface.fewestCellsPerRing = startingQuality(state).fewestGridCells;
   const scene = new Scene();
   scene.add(ocean);
   const camera = createAppCamera(width / height);
@@ -283,10 +313,23 @@ async function start(): Promise<void> {
   } catch (error) {
     throw new UsageError(`skybox: ${error instanceof Error ? error.message : String(error)}`);
   }
+  // As the app keeps its time: a frame sequence from t = 10^16 s moves (the sea at t mod its period).
+  state.t = wrapLongTime(state.t, ocean.repeatPeriod);
+  // The buoys and then the boat, as the app adds them on load (the order of their pressure on the
+  // local waves, and the time the boat starts from, are the app's). The buoys are set down at rest
+  // on the water of the first frame's time, as the app sets them down on the time it loads at.
+  const buoys = state.buoys ? new Buoys(ocean) : null;
+  if (buoys) {
+    ocean.update(state.t);
+    buoys.dropAhead(camera);
+    scene.add(buoys);
+  }
   // The boat as the app shows it (its wake is run up to each frame's time: localWaves.ts warmUp).
   const boat = state.boat ? new Boat(ocean, centreAhead(camera)) : null;
+  if (boat) scene.add(boat);
+  // The app's light for what floats (the sea's shader uses no three.js light).
   const sunLight = new SunLight(ocean);
-  if (boat) scene.add(boat, sunLight);
+  if (boat || buoys) scene.add(sunLight);
   // The inspector's tiles are part of the app's canvas when it is shown.
   const inspector = state.inspector ? new Inspector(ocean, document.body) : null;
 
@@ -295,6 +338,7 @@ async function start(): Promise<void> {
     if (typeof t !== 'number' || !Number.isFinite(t)) throw new Error(`renderFrame: t must be a finite number, got ${t}`);
     // As the app's frame loop.
     prepareAppFrame(ocean, camera, t);
+    buoys?.update(t);
     boat?.update();
     sunLight.update();
     output.render(scene, camera);
@@ -302,8 +346,6 @@ async function start(): Promise<void> {
     // A one-pixel readback waits for the GPU to finish the frame (gl.finish does not, in Chromium).
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
   };
-  // As the app keeps its time: a frame sequence from t = 10^16 s moves (the sea at t mod its period).
-  state.t = wrapLongTime(state.t, ocean.repeatPeriod);
   window.shotStart = { t: state.t, timeScale: link !== null ? state.timeScale : 1 };
   await window.renderFrame(state.t);
   document.title = 'ready';

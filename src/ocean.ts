@@ -8,8 +8,8 @@
  *
  * The sea is the plane y = 0 of world space; give the camera a far plane of at least
  * ocean.horizonDistanceFor(camera's height) (several thousand heights) so the surface reaches the
- * horizon. Owns everything it creates and frees it in dispose(); after that every method throws a
- * DisposedError.
+ * horizon. Owns everything it creates and frees it in dispose(); after that every method and getter
+ * throws a DisposedError.
  */
 import { Object3D, Vector3, type Object3DEventMap, type WebGLRenderer } from 'three';
 import { OceanSurface } from './render/oceanSurface';
@@ -20,7 +20,7 @@ import { OceanSimulation, type PathPreference, type SimulationOptions, type Simu
 import type { LocalWaves } from './layers/localWaves';
 import { checkThreeRelease } from './fft/threeInternals';
 import { heightAt, normalAt, velocityAt } from './layers/surfaceQuery';
-import { DisposedError, isOptionsObject, optionAliases, unknownOption } from './parameters/options';
+import { checkOptionNames, DisposedError, isOptionsObject, optionAliases } from './parameters/options';
 import { ParameterError, SIMULATION_OPTIONS, type SimulationParameters } from './parameters/parameters';
 import { DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ShadingChanges, type ShadingOptions } from './parameters/sceneOptions';
 import type { InitialSpectrum } from './spectrum/initialSpectrum';
@@ -35,17 +35,21 @@ export interface OceanOptions extends Partial<SimulationParameters>, OceanShadin
   /**
    * Direction towards the sun instead of sunElevation and sunAzimuth: a Vector3 or [x, y, z] in
    * world space (y up), any length; see Ocean.setSun.
+   * @defaultValue undefined (the sun is at sunElevation and sunAzimuth)
    */
   sunDirection?: SunDirection;
 }
 
 /** Where the sun is, for Ocean.setSun: degrees (a missing one stays as it is), or a direction instead. */
 export interface SunPosition {
-  /** Degrees above the horizon, [-90, 90]. */
+  /** Degrees above the horizon, [-90, 90]. @defaultValue the elevation in force */
   elevation?: number;
-  /** Degrees from +x towards +z. */
+  /** Degrees from +x towards +z. @defaultValue the azimuth in force */
   azimuth?: number;
-  /** Towards the sun in world space (y up), any length but 0: a Vector3 or [x, y, z]. Not with elevation or azimuth. */
+  /**
+   * Towards the sun in world space (y up), any length but 0: a Vector3 or [x, y, z]. Not with
+   * elevation or azimuth. @defaultValue undefined (the sun is at elevation and azimuth)
+   */
   direction?: SunDirection;
 }
 
@@ -116,10 +120,7 @@ export class Ocean extends Object3D<OceanEventMap> {
     super();
     checkThreeRelease();
     this.name = 'Ocean';
-    if (!isOptionsObject(options)) throw new ParameterError('options', options, 'an object of options, such as { windSpeed: 12 }');
-    for (const [key, value] of Object.entries(options)) {
-      if (!OCEAN_OPTION_KEYS.includes(key) && !Object.hasOwn(SHADING_ALIASES, key)) throw unknownOption(key, value, OCEAN_OPTION_KEYS, SHADING_ALIASES);
-    }
+    checkOptionNames(options, OCEAN_OPTION_KEYS, 'options', { aliases: SHADING_ALIASES, allowed: 'an object of options, such as { windSpeed: 12 }' });
     const simulationParameters = pick(options, SIMULATION_KEYS);
     const shading = pick(options, SHADING_NAMES);
     const sun = sunAngles(
@@ -169,6 +170,7 @@ export class Ocean extends Object3D<OceanEventMap> {
   }
 
   get time(): number {
+    this.checkAlive('time');
     return this.currentTime;
   }
 
@@ -179,6 +181,7 @@ export class Ocean extends Object3D<OceanEventMap> {
    * variances add. At one instant it differs by up to ~25%.
    */
   get heightRms(): number {
+    this.checkAlive('heightRms');
     const layers = this.simulation.layers;
     if (this.rms?.spectra.length !== layers.length || this.rms.spectra.some((spectrum, i) => spectrum !== layers[i].spectrum)) {
       let sum = 0;
@@ -194,6 +197,7 @@ export class Ocean extends Object3D<OceanEventMap> {
    * part of the spectrum its cascades cover: 4·heightRms is its Hs.
    */
   get seaState(): SeaStateSummary {
+    this.checkAlive('seaState');
     const parameters = this.simulation.parameters;
     if (this.summary?.parameters !== parameters) {
       const { m0, peakFrequency } = spectralMoments(parameters, parameters.patchSizes[parameters.patchSizes.length - 1]);
@@ -219,6 +223,7 @@ export class Ocean extends Object3D<OceanEventMap> {
   }
 
   get parameters(): Readonly<SimulationParameters> {
+    this.checkAlive('parameters');
     return this.simulation.parameters;
   }
 
@@ -270,6 +275,7 @@ export class Ocean extends Object3D<OceanEventMap> {
 
   /** The shading options in use (colours as linear [r, g, b]). */
   get shading(): ShadingOptions {
+    this.checkAlive('shading');
     return this.surface.material.shading;
   }
 
@@ -296,12 +302,7 @@ export class Ocean extends Object3D<OceanEventMap> {
     this.checkAlive('setSun');
     const current = { elevation: this.sky.sunElevation, azimuth: this.sky.sunAzimuth };
     const sun = typeof sunOrElevation === 'number' ? { elevation: sunOrElevation, azimuth } : sunOrElevation;
-    if (!isOptionsObject(sun)) {
-      throw new ParameterError('setSun', sun, '{ elevation, azimuth } (degrees), { direction } or (elevation, azimuth)');
-    }
-    for (const [key, value] of Object.entries(sun)) {
-      if (!SUN_POSITION_KEYS.includes(key)) throw unknownOption(key, value, SUN_POSITION_KEYS);
-    }
+    checkOptionNames(sun, SUN_POSITION_KEYS, 'setSun', { allowed: '{ elevation, azimuth } (degrees), { direction } or (elevation, azimuth)' });
     const { elevation, azimuth: angle } = sunAngles(sun, current, 'direction');
     this.sky.setSun(elevation, angle);
   }
@@ -365,7 +366,7 @@ export class Ocean extends Object3D<OceanEventMap> {
 
   /**
    * Frees every GPU resource the Ocean made and takes its sea and sky out of it (left in a scene it
-   * draws nothing). Every method throws a DisposedError from then on; disposing again does nothing.
+   * draws nothing). Every method and getter throws a DisposedError from then on; disposing again does nothing.
    */
   dispose(): void {
     if (this.disposed) return;

@@ -23,7 +23,7 @@
  * the crate's heave grew from 0.2 to over 1 m in three seconds that way.
  */
 import { Quaternion, Vector3 } from 'three';
-import { ParameterError } from '../parameters/options';
+import { checkOptionNames, ParameterError } from '../parameters/options';
 import { GRAVITY } from '../spectrum/dispersion';
 import type { HullPose, HullShape, PressureSource } from './localWaves';
 
@@ -43,6 +43,9 @@ export interface FloatingBodyOptions {
   /** kg/m³. @defaultValue SEA_WATER_DENSITY */
   density?: number;
 }
+
+/** The names FloatingBodyOptions has: any other is a misspelling. */
+const FLOATING_BODY_OPTION_KEYS: readonly (keyof FloatingBodyOptions)[] = ['mass', 'size', 'samples', 'damping', 'density'];
 
 /** What the body floats on: any surface with a height at each world point. */
 export interface WaterSurface {
@@ -85,6 +88,7 @@ export class FloatingBody {
   private pressing: { source: PressureSource; water: PressableWater } | null = null;
 
   constructor(options: FloatingBodyOptions) {
+    checkOptionNames(options, FLOATING_BODY_OPTION_KEYS, 'FloatingBody options', { prefix: 'FloatingBody ' });
     const { mass, size, samples = 4, damping = 0.2, density = SEA_WATER_DENSITY } = options;
     if (!(mass > 0 && mass < Infinity)) throw new ParameterError('FloatingBody mass', mass, 'a finite number of kilograms > 0');
     if (!Array.isArray(size) || size.length !== 3 || !size.every((s) => s > 0 && s < Infinity)) {

@@ -19,7 +19,7 @@
  * sea without sources costs nothing).
  */
 import { ClampToEdgeWrapping, DataTexture, FloatType, LinearFilter, NearestFilter, RGBAFormat, type WebGLRenderer } from 'three';
-import { ParameterError } from '../parameters/options';
+import { checkOptionNames, DisposedError, ParameterError } from '../parameters/options';
 import { GpuLocalWaves } from './gpuLocalWaves';
 import { CpuLocalWaves, MAX_IMPULSES_PER_STEP, type HeightImpulse, type LocalWaveGrid } from './localWaveModel';
 import { heightAt } from './surfaceQuery';
@@ -47,6 +47,12 @@ export interface LocalWavesOptions {
    */
   path?: 'auto' | 'gpu' | 'js';
 }
+
+/** The names of LocalWavesOptions, DropOptions, HullShape and HullPose: any other is a misspelling. */
+export const LOCAL_WAVES_OPTION_KEYS: readonly (keyof LocalWavesOptions)[] = ['resolution', 'cellSize', 'path'];
+const DROP_OPTION_KEYS: readonly (keyof DropOptions)[] = ['radius', 'depth'];
+const HULL_SHAPE_KEYS: readonly (keyof HullShape)[] = ['length', 'beam', 'draft'];
+const HULL_POSE_KEYS: readonly (keyof HullPose)[] = ['x', 'z', 'heading'];
 
 /** A stone's dip. */
 export interface DropOptions {
@@ -144,6 +150,7 @@ export class LocalWaves implements WaveLayer {
     useGpu: boolean,
     options: LocalWavesOptions = {},
   ) {
+    checkOptionNames(options, LOCAL_WAVES_OPTION_KEYS, 'localWaves', { prefix: 'localWaves.' });
     const resolution = options.resolution ?? 128;
     const cellSize = options.cellSize ?? 1;
     if (!Number.isInteger(resolution) || resolution < 16 || resolution > 1024 || (resolution & (resolution - 1)) !== 0) {
@@ -203,6 +210,7 @@ export class LocalWaves implements WaveLayer {
    * during the run-up after a jump in time too (for a still of a hull whose waves move with it).
    */
   follow(x: number | null | ((t: number) => { x: number; z: number }), z?: number): void {
+    this.checkAlive('follow');
     this.followPath = null;
     if (x === null) {
       this.followingCamera = true;
@@ -215,6 +223,14 @@ export class LocalWaves implements WaveLayer {
     }
     if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError('follow(x, z)', [x, z], 'finite coordinates in metres, null for the camera, or a path (t) => ({ x, z })');
     this.target = [x, z as number];
+  }
+
+  /**
+   * Throws a DisposedError once this is disposed (with its Ocean, or replaced by a rebuild for
+   * another depth or solver): a stone or a hull given then would make no waves, silently.
+   */
+  private checkAlive(method: string): void {
+    if (this.disposed) throw new DisposedError(`LocalWaves.${method}`, 'LocalWaves');
   }
 
   /** Aims the grid at where its path is at time t (for a grid that follows one). */
@@ -235,7 +251,9 @@ export class LocalWaves implements WaveLayer {
    * grid is ignored (returns false).
    */
   drop(x: number, z: number, options: DropOptions = {}): boolean {
+    this.checkAlive('drop');
     if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError('drop(x, z)', [x, z], 'finite coordinates in metres');
+    checkOptionNames(options, DROP_OPTION_KEYS, 'drop options', { prefix: 'drop ' });
     const radius = options.radius ?? 1;
     const depth = options.depth ?? 0.5;
     if (!(radius >= 0.1 && radius <= 20)) throw new ParameterError('drop radius', radius, 'metres from 0.1 to 20');
@@ -256,6 +274,9 @@ export class LocalWaves implements WaveLayer {
    * what came before.
    */
   addPressure(shape: HullShape, pose: HullPose, path?: (t: number) => HullPose): PressureSource {
+    this.checkAlive('addPressure');
+    checkOptionNames(shape, HULL_SHAPE_KEYS, 'hull shape', { prefix: 'hull ' });
+    checkOptionNames(pose, HULL_POSE_KEYS, 'hull pose', { prefix: 'hull pose ' });
     for (const key of ['length', 'beam'] as const) {
       if (!(shape[key] >= 0.2 && shape[key] <= 400)) throw new ParameterError(`hull ${key}`, shape[key], 'metres from 0.2 to 400');
     }

@@ -21,11 +21,11 @@ import {
   validateParameters,
   type SimulationParameters,
 } from '../parameters/parameters';
-import { unknownOption } from '../parameters/options';
+import { checkOptionNames } from '../parameters/options';
 import { createCascadeSpectra, type InitialSpectrum } from '../spectrum/initialSpectrum';
 import { FftCascade, type FftBackend } from './fftCascade';
 import { isSoftwareRenderer } from './gpuLocalWaves';
-import { LocalWaves, type LocalWavesOptions } from './localWaves';
+import { LOCAL_WAVES_OPTION_KEYS, LocalWaves, type LocalWavesOptions } from './localWaves';
 import type { WaveLayer } from './waveLayer';
 import { WhitecapFoam } from './whitecapFoam';
 
@@ -47,6 +47,12 @@ export interface SimulationOptions {
    */
   localWaves?: boolean | LocalWavesOptions;
 }
+
+/**
+ * The defaults of SimulationOptions; `worker` is true only where Worker exists (not in Node, say),
+ * false elsewhere.
+ */
+export const DEFAULT_SIMULATION_OPTIONS: Readonly<Required<SimulationOptions>> = Object.freeze({ path: 'auto', worker: true, localWaves: true });
 
 export class OceanSimulation {
   private currentParameters: SimulationParameters;
@@ -78,9 +84,11 @@ export class OceanSimulation {
     options: SimulationOptions = {},
   ) {
     this.currentParameters = this.spectraParameters = validateParameters(parameters);
-    this.preference = checkPreference(options.path ?? 'auto');
-    this.useWorker = options.worker ?? typeof Worker !== 'undefined';
-    this.localWaveOptions = checkLocalWaves(options.localWaves ?? true);
+    checkOptionNames(options, SIMULATION_OPTION_KEYS, 'OceanSimulation options');
+    const defaults = DEFAULT_SIMULATION_OPTIONS;
+    this.preference = checkPreference(options.path ?? defaults.path);
+    this.useWorker = options.worker ?? (defaults.worker && typeof Worker !== 'undefined');
+    this.localWaveOptions = checkLocalWaves(options.localWaves ?? defaults.localWaves);
     const localPath = this.localWaveOptions?.path ?? 'auto';
     if (localPath !== 'auto' && localPath !== 'gpu' && localPath !== 'js') throw new ParameterError('localWaves.path', localPath, "'auto', 'gpu' or 'js'");
     this.rebuild(true);
@@ -254,17 +262,16 @@ function backendFor(precision: GpuPrecision | null, worker: boolean): FftBackend
   return precision ? { kind: 'gpu', precision } : { kind: 'js', worker };
 }
 
-const LOCAL_WAVES_KEYS: readonly string[] = ['resolution', 'cellSize', 'path'];
+/** The names SimulationOptions has: any other is a misspelling. */
+const SIMULATION_OPTION_KEYS: readonly (keyof SimulationOptions)[] = ['path', 'worker', 'localWaves'];
 
 /** The local waves' options (null for none), or a ParameterError naming what is wrong in them; their values are checked by LocalWaves. */
 function checkLocalWaves(localWaves: boolean | LocalWavesOptions): LocalWavesOptions | null {
   if (typeof localWaves === 'boolean') return localWaves ? {} : null;
-  if (localWaves === null || typeof localWaves !== 'object' || Array.isArray(localWaves)) {
-    throw new ParameterError('localWaves', localWaves, 'true, false or an object { resolution, cellSize, path }');
-  }
-  for (const [key, value] of Object.entries(localWaves)) {
-    if (!LOCAL_WAVES_KEYS.includes(key)) throw unknownOption(`localWaves.${key}`, value, LOCAL_WAVES_KEYS);
-  }
+  checkOptionNames(localWaves, LOCAL_WAVES_OPTION_KEYS, 'localWaves', {
+    prefix: 'localWaves.',
+    allowed: `true, false or an object { ${LOCAL_WAVES_OPTION_KEYS.join(', ')} }`,
+  });
   return localWaves;
 }
 

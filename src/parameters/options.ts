@@ -62,8 +62,8 @@ export class ParameterError extends Error {
 }
 
 /**
- * Thrown by every method of an object after its dispose() (an Ocean, a SkyEnvironment);
- * `parameter` names the method.
+ * Thrown by every method of an object after its dispose() (an Ocean and its getters, a
+ * SkyEnvironment, LocalWaves' drop, addPressure and follow); `parameter` names the method.
  */
 export class DisposedError extends ParameterError {
   constructor(method: string, owner = 'Ocean') {
@@ -132,10 +132,34 @@ export function unknownOption(
   value: unknown,
   known: readonly string[],
   aliases: Readonly<Record<string, string>> = {},
+  prefix = '',
 ): ParameterError {
   const nearest = nearestName(name, [...known, ...Object.keys(aliases)]);
   const suggestion = Object.hasOwn(aliases, nearest) ? aliases[nearest] : nearest;
-  return new ParameterError(name, value, `one of ${known.join(', ')} (did you mean ${suggestion}?)`);
+  return new ParameterError(`${prefix}${name}`, value, `one of ${known.join(', ')} (did you mean ${suggestion}?)`);
+}
+
+/**
+ * Checks that `given` is an object whose every key is one of `known` (or of `aliases`): a misspelt
+ * option would otherwise be silently ignored. Throws a ParameterError naming `argument` when
+ * `given` is not an object of options, or naming the first unknown key (after `prefix`, such as
+ * "shape." for an argument of several), with the nearest known name as a suggestion. `allowed`
+ * says what the argument must be, for the first error.
+ */
+export function checkOptionNames(
+  given: unknown,
+  known: readonly string[],
+  argument: string,
+  {
+    prefix = '',
+    aliases = {},
+    allowed = `an object of options (${known.join(', ')})`,
+  }: { prefix?: string; aliases?: Readonly<Record<string, string>>; allowed?: string } = {},
+): asserts given is object {
+  if (!isOptionsObject(given)) throw new ParameterError(argument, given, allowed);
+  for (const [key, value] of Object.entries(given)) {
+    if (!known.includes(key) && !Object.hasOwn(aliases, key)) throw unknownOption(key, value, known, aliases, prefix);
+  }
 }
 
 /** Levenshtein distance, for "did you mean". */

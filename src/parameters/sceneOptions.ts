@@ -114,10 +114,12 @@ export const DEFAULT_SHADING: Readonly<ShadingOptions> = Object.freeze({
  * and the British spellings as aliases.
  */
 export interface ShadingChanges extends Partial<Omit<ShadingOptions, 'scatterColor' | 'causticColor'>> {
+  /** ShadingOptions.scatterColor in any ColorInput form (an array is linear). @defaultValue [0.0, 0.035, 0.06] */
   scatterColor?: ColorInput;
+  /** ShadingOptions.causticColor in any ColorInput form (an array is linear). @defaultValue [0.12, 0.12, 0.12] */
   causticColor?: ColorInput;
-  /** @deprecated Another name for scatterColor (its British spelling), still accepted. */
+  /** @deprecated Another name for scatterColor (its British spelling), still accepted. @defaultValue [0.0, 0.035, 0.06] */
   scatterColour?: ColorInput;
-  /** @deprecated Another name for causticColor (its British spelling), still accepted. */
+  /** @deprecated Another name for causticColor (its British spelling), still accepted. @defaultValue [0.12, 0.12, 0.12] */
   causticColour?: ColorInput;
 }

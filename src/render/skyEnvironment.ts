@@ -49,7 +49,7 @@ import {
 } from 'three';
 import { skyDaylight, sunAboveHorizon } from './daylight';
 import { shaderSource } from '../shaderSource';
-import { checkOption, DisposedError, ParameterError } from '../parameters/options';
+import { checkOption, checkOptionNames, DisposedError, ParameterError } from '../parameters/options';
 import { DEFAULT_SUN, SUN_OPTIONS } from '../parameters/sceneOptions';
 
 /** URLs of the six faces, in three.js's naming (p/n = positive/negative axis). */
@@ -63,13 +63,19 @@ export interface CubeFaceUrls {
 }
 
 export interface SkyEnvironmentOptions {
-  /** Degrees above the horizon, in [-90, 90]. Default 30. */
+  /** Degrees above the horizon, in [-90, 90]. @defaultValue 30 */
   sunElevation?: number;
-  /** Degrees from +x towards +z. Default 40. */
+  /** Degrees from +x towards +z. @defaultValue 40 */
   sunAzimuth?: number;
-  /** Cube face size in texels. Default 256. */
+  /** Cube face size in texels, up to the renderer's largest cube map. @defaultValue 256 */
   resolution?: number;
 }
+
+/** The defaults of SkyEnvironmentOptions (the sun's are DEFAULT_SUN's). */
+export const DEFAULT_SKY_ENVIRONMENT: Readonly<Required<SkyEnvironmentOptions>> = Object.freeze({ ...DEFAULT_SUN, resolution: 256 });
+
+/** The names SkyEnvironmentOptions has: any other is a misspelling. */
+const SKY_ENVIRONMENT_OPTION_KEYS: readonly (keyof SkyEnvironmentOptions)[] = ['sunElevation', 'sunAzimuth', 'resolution'];
 
 /**
  * The face set shipped in public/skybox/ and where its sun is: pass these to setSun() so
@@ -169,7 +175,9 @@ export class SkyEnvironment {
     private readonly renderer: WebGLRenderer,
     options: SkyEnvironmentOptions = {},
   ) {
-    const { sunElevation = DEFAULT_SUN.sunElevation, sunAzimuth = DEFAULT_SUN.sunAzimuth, resolution = 256 } = options;
+    checkOptionNames(options, SKY_ENVIRONMENT_OPTION_KEYS, 'SkyEnvironment options', { prefix: 'SkyEnvironment ' });
+    const defaults = DEFAULT_SKY_ENVIRONMENT;
+    const { sunElevation = defaults.sunElevation, sunAzimuth = defaults.sunAzimuth, resolution = defaults.resolution } = options;
     validateSun(sunElevation, sunAzimuth);
     if (!Number.isInteger(resolution) || resolution < 1 || resolution > renderer.capabilities.maxCubemapSize) {
       throw new ParameterError('SkyEnvironment resolution', resolution, `an integer in [1, ${renderer.capabilities.maxCubemapSize}]`);

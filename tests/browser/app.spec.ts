@@ -698,6 +698,51 @@ async function compareHeightTile(page: Page): Promise<{ cascade: number; cells: 
   });
 }
 
+/**
+ * The inspector's spectrum tiles and labels as drawn: for each of Ψ, Re h̃0 and Im h̃0, the spread
+ * (standard deviation) of the relative luminance over its tile; for each label, its text and the
+ * least WCAG contrast ratio between its text colour and its band, the band composited over every
+ * canvas pixel under the label (over a pale tile the band must still keep the text readable).
+ */
+async function inspectorLegibility(page: Page): Promise<{ spreads: { title: string; spread: number }[]; labels: { text: string; contrast: number }[] }> {
+  return page.evaluate(async () => {
+    const { inspector, renderer } = window.oceanApp;
+    const { width, height, data } = await window.oceanApp.capturePixels();
+    const cells = (inspector!.constructor as unknown as { CELL_COUNT: number }).CELL_COUNT;
+    const size = Math.floor(width / cells);
+    const linear = (c: number) => (c <= 0.04045 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4);
+    /** Relative luminance (WCAG 2) of an sRGB colour with channels 0–255. */
+    const luminance = (rgb: number[]) => 0.2126 * linear(rgb[0] / 255) + 0.7152 * linear(rgb[1] / 255) + 0.0722 * linear(rgb[2] / 255);
+    /** A pixel of the canvas, (x, y) from its top left, as [r, g, b]. */
+    const pixel = (x: number, y: number) => [0, 1, 2].map((c) => data[4 * ((height - 1 - y) * width + x) + c]);
+    const spreads = [0, 1, 2].map((index) => {
+      const values: number[] = [];
+      for (let y = height - size; y < height; y++) for (let x = index * size; x < (index + 1) * size; x++) values.push(luminance(pixel(x, y)));
+      const mean = values.reduce((a, b) => a + b, 0) / values.length;
+      return { title: inspector!.tiles[index].title, spread: Math.sqrt(values.reduce((a, b) => a + (b - mean) ** 2, 0) / values.length) };
+    });
+    const canvas = renderer.domElement.getBoundingClientRect();
+    const rgba = (css: string) => css.match(/[\d.]+/g)!.map(Number);
+    const labels = inspector!.tiles.map(({ label }) => {
+      const style = getComputedStyle(label);
+      const text = rgba(style.color);
+      const [br, bg, bb, alpha = 1] = rgba(style.backgroundColor);
+      const box = label.getBoundingClientRect();
+      let contrast = Infinity;
+      for (let y = Math.ceil(box.top - canvas.top); y < Math.floor(box.bottom - canvas.top); y++) {
+        for (let x = Math.ceil(box.left - canvas.left); x < Math.floor(box.right - canvas.left); x++) {
+          const under = pixel(x, y);
+          const band = [br, bg, bb].map((c, i) => alpha * c + (1 - alpha) * under[i]);
+          const [light, dark] = [luminance(text), luminance(band)].sort((a, b) => b - a);
+          contrast = Math.min(contrast, (light + 0.05) / (dark + 0.05));
+        }
+      }
+      return { text: label.textContent ?? '', contrast };
+    });
+    return { spreads, labels };
+  });
+}
+
 test('the inspector draws the real height field: a tile matches the texture it shows', async ({ page }) => {
   // The JS path keeps the field in a DataTexture the test can read; paused, so it stays put.
   await openApp(page, 'resolution=32&path=js&paused=1&t=7.5&inspector=1', { width: 720, height: 405 }, false);
@@ -711,6 +756,15 @@ test('the inspector draws the real height field: a tile matches the texture it s
   expect(largest.cells).toBe(11); // ten field tiles and the S(ω) plot
   expect(largest.spread).toBeGreaterThan(0.03); // not a blank or uniform tile
   expect(largest.worst).toBeLessThan(0.03); // 8-bit output and float32 filtering: ~0.005
+
+  // The spectrum tiles show their content (the h̃0 tiles were almost blank, scaled to the single
+  // largest mode), and every label is readable on its band over whatever tile lies under it.
+  const { spreads, labels } = await inspectorLegibility(page);
+  console.log(`inspector: luminance spread ${spreads.map(({ title, spread }) => `${title} ${spread.toFixed(3)}`).join(', ')}; least label contrast ${Math.min(...labels.map((l) => l.contrast)).toFixed(2)}:1`);
+  for (const { title, spread } of spreads) expect(spread, `${title} tile`).toBeGreaterThan(0.02);
+  expect(labels).toHaveLength(10);
+  // WCAG 2 asks 4.5:1 for normal text (its 1.4.3 "Contrast (Minimum)"); white on white was 1:1.
+  for (const { text, contrast } of labels) expect(contrast, text).toBeGreaterThanOrEqual(4.5);
 
   // C shows the next cascade (after the last, the first): the tile then matches that one's texture.
   await page.keyboard.press('c');

@@ -254,13 +254,34 @@ test('the sea honours scene.fog (Fog and FogExp2) as three\'s materials do: far 
 test('with a plain, a logarithmic or a reversed depth buffer the sea hides the submerged half of a floating box', ALSO_ON_OLDEST_THREE, async ({ page }) => {
   await openOcean(page);
   const modes = await page.evaluate(() => window.ocean.depthBufferCheck());
-  for (const { mode, inForce, above, below } of modes) {
-    console.log(`depth buffer ${mode}${inForce ? '' : ' (not available here: plain depth in force)'}: box above the water ${above.join(',')}, below ${below.join(',')}`);
+  for (const { mode, supported, inForce, above, below } of modes) {
+    console.log(`depth buffer ${mode}${inForce ? ' (in force)' : ' (not available here: plain depth in force)'}: box above the water ${above.join(',')}, below ${below.join(',')}`);
+    // Where this context and three.js can give it, it must be what was drawn with: else the test
+    // would pass on a plain depth buffer and check nothing.
+    if (supported) expect(inForce, `${mode} depth buffer in force`).toBe(true);
     expect(above, `${mode}: the box above the water is red`).toEqual([255, 0, 0]);
     // Below the water line the sea is drawn, not the box (whose red would show through).
     expect(below[0] - Math.max(below[1], below[2]), `${mode}: the box under the water is hidden`).toBeLessThan(60);
   }
   expect(modes.find((m) => m.mode === 'logarithmic')!.inForce).toBe(true);
+});
+
+test('inside an EffectComposer (RenderPass, then OutputPass for tone mapping and colour space) the picture is the plain render\'s', async ({ page }) => {
+  await openOcean(page);
+  const result = await page.evaluate(() => window.ocean.composerCheck());
+  const show = (rgb: number[]) => rgb.map((c) => c.toFixed(0)).join(',');
+  console.log(`EffectComposer against renderer.render: mean difference ${result.meanDifference.toFixed(3)} levels, largest ${result.largestDifference}, ${result.over4} of ${result.channels} channel values over 4; composer's sky ${show(result.sky)}, sea ${show(result.sea)}`);
+  // The composer renders into a half-float target and tone-maps in the OutputPass rather than in
+  // the materials: only rounding differs (measured: 0.008 levels on average, at most 1). A plain
+  // copy in place of the OutputPass (no tone mapping, linear output) is 55 levels off on average.
+  expect(result.meanDifference).toBeLessThan(0.5);
+  expect(result.largestDifference).toBeLessThanOrEqual(4);
+  // Not blank: a bright blue sky over a darker blue sea.
+  const [sky, sea] = [result.sky, result.sea];
+  expect(sky[2]).toBeGreaterThan(120);
+  expect(sky[2]).toBeGreaterThan(sky[0] + 20);
+  expect(sea[2]).toBeGreaterThan(sea[0] + 10);
+  expect(sea[0] + sea[1] + sea[2]).toBeLessThan(sky[0] + sky[1] + sky[2] - 60);
 });
 
 test.describe('under water', () => {
@@ -400,12 +421,54 @@ test.describe('the Ocean API', () => {
     expect([result.kept.elevation, result.kept.azimuth]).toEqual([25, 60]);
   });
 
-  test('after dispose() every method throws a DisposedError (a ParameterError); disposing twice is harmless', async ({ page }) => {
+  test('setPath and the path option: ocean.path reports the preference, the path that runs and why, and the change is an event', async ({ page }) => {
+    await openOcean(page);
+    const result = await page.evaluate(() => {
+      const { Ocean, ParameterError, renderer } = window.ocean;
+      const ocean = new Ocean(renderer, { resolution: 16, worker: false, localWaves: false, path: 'gpu' });
+      const events: string[] = [];
+      ocean.addEventListener('pathchange', ({ path }) => events.push(`${path.preference} ${path.running} "${path.reason}"`));
+      ocean.update(1);
+      const paths = [ocean.path];
+      ocean.setPath('js');
+      paths.push(ocean.path);
+      ocean.update(2);
+      ocean.setPath('auto');
+      ocean.update(3);
+      paths.push(ocean.path);
+      let error = '';
+      try {
+        ocean.setPath('cuda' as never);
+      } catch (e) {
+        error = `${e instanceof ParameterError}: ${(e as Error).message}`;
+      }
+      paths.push(ocean.path);
+      ocean.dispose();
+      // The option at construction, with the JS path's worker.
+      const inWorker = new Ocean(renderer, { resolution: 16, localWaves: false, path: 'js' });
+      paths.push(inWorker.path);
+      inWorker.dispose();
+      return { paths, events, error };
+    });
+    expect(result.paths).toEqual([
+      { preference: 'gpu', running: 'gpu-rgba32f', reason: '' },
+      { preference: 'js', running: 'js', reason: 'asked for' }, // at once, before the next update
+      { preference: 'auto', running: 'gpu-rgba32f', reason: '' },
+      { preference: 'auto', running: 'gpu-rgba32f', reason: '' }, // a bad preference changes nothing
+      { preference: 'js', running: 'js-worker', reason: 'asked for' },
+    ]);
+    // The event comes at the update after each change of the running path, not for the first.
+    expect(result.events).toEqual(['js js "asked for"', 'auto gpu-rgba32f ""']);
+    expect(result.error).toBe('true: path must be \'auto\', \'gpu\' or \'js\'; got "cuda"');
+  });
+
+  test('after dispose() every method and getter throws a DisposedError (a ParameterError), and so do its local waves; disposing twice is harmless', async ({ page }) => {
     await openOcean(page);
     const result = await page.evaluate(() => {
       const { Ocean, ParameterError, DisposedError, renderer } = window.ocean;
       const ocean = new Ocean(renderer, { resolution: 16, worker: false });
       ocean.update(1);
+      const waves = ocean.localWaves!; // held by the caller: disposed with the ocean
       ocean.dispose();
       ocean.dispose();
       const calls: [string, () => unknown][] = [
@@ -413,9 +476,21 @@ test.describe('the Ocean API', () => {
         ['setParameters', () => ocean.setParameters({ windSpeed: 5 })],
         ['setShading', () => ocean.setShading({ ior: 1.4 })],
         ['setSun', () => ocean.setSun(10, 20)],
+        ['setPath', () => ocean.setPath('js')],
         ['heightAt', () => ocean.heightAt(0, 0)],
+        ['normalAt', () => ocean.normalAt(0, 0)],
+        ['heightsAt', () => ocean.heightsAt([0, 0], [0])],
         ['horizonDistanceFor', () => ocean.horizonDistanceFor(10)],
         ['horizonDistance', () => ocean.horizonDistance],
+        // The getters too: they would read freed layers or report a sea that no longer exists.
+        ['time', () => ocean.time],
+        ['parameters', () => ocean.parameters],
+        ['shading', () => ocean.shading],
+        ['heightRms', () => ocean.heightRms],
+        ['seaState', () => ocean.seaState],
+        ['repeatPeriod', () => ocean.repeatPeriod],
+        ['path', () => ocean.path],
+        ['localWaves', () => ocean.localWaves],
       ];
       const errors = calls.map(([name, call]) => {
         try {
@@ -426,15 +501,27 @@ test.describe('the Ocean API', () => {
           return `${name}: ${e instanceof DisposedError && e instanceof ParameterError} ${e.name} ${e.parameter}: ${e.message}`;
         }
       });
-      return { errors, children: ocean.children.length };
+      const localWaveErrors = [() => waves.drop(0, 0), () => waves.addPressure({ length: 8, beam: 2.6, draft: 0.6 }, { x: 0, z: 0, heading: 0 }), () => waves.follow(1, 2)].map((call) => {
+        try {
+          call();
+          return 'no error';
+        } catch (error) {
+          const e = error as InstanceType<typeof DisposedError>;
+          return `${e instanceof DisposedError} ${e.parameter}`;
+        }
+      });
+      return { calls: calls.map(([name]) => name), errors, localWaveErrors, children: ocean.children.length };
     });
     const method = (call: string) => (call === 'horizonDistance' ? 'horizonDistanceFor' : call);
+    expect(result.calls).toHaveLength(18);
     expect(result.errors).toEqual(
-      ['update', 'setParameters', 'setShading', 'setSun', 'heightAt', 'horizonDistanceFor', 'horizonDistance'].map(
+      result.calls.map(
         (call) =>
           `${call}: true DisposedError Ocean.${method(call)}: Ocean.${method(call)}: this Ocean has been disposed (its GPU resources are freed); create a new Ocean`,
       ),
     );
+    // The local waves an ocean made are freed with it: a stone dropped on them later would make no waves.
+    expect(result.localWaveErrors).toEqual(['true LocalWaves.drop', 'true LocalWaves.addPressure', 'true LocalWaves.follow']);
     expect(result.children).toBe(0); // left in a scene, it draws nothing
   });
 });

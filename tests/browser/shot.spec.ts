@@ -1,4 +1,4 @@
-import { expect, test } from '@playwright/test';
+import { expect, test, type Page } from '@playwright/test';
 import { spawn, spawnSync } from 'node:child_process';
 import { existsSync, mkdtempSync, readdirSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -118,9 +118,10 @@ test('--help lists the CLI\'s options and, from the option tables, every scene o
   expect(help.stdout).toMatch(
     /\n {2}--scatter-color <#rrggbb\|r,g,b> +a colour: a THREE\.Color,[\s\S]*?\(default 0,0\.035,0\.06\);\s+--scatter-colour\s+is\s+--scatter-color/,
   );
-  for (const name of ['spectrum', 'fetch', 'patch-sizes', 'depth', 'swell-height', 'shading-mode', 'absorption', 'path', 'skybox']) {
+  for (const name of ['spectrum', 'fetch', 'patch-sizes', 'depth', 'swell-height', 'shading-mode', 'absorption', 'path', 'skybox', 'boat', 'buoys', 'quality']) {
     expect(help.stdout).toMatch(new RegExp(`\\n  --${name} `));
   }
+  expect(help.stdout).toMatch(/has no use for[\s\S]*\n {2}--target-fps +the frame rate[\s\S]*\n {2}--time-scale /);
   expect(help.stdout).toMatch(/--sun-elevation <deg> +a number of degrees from -90 to 90 \(default 30\)/);
   expect(help.stdout).toMatch(/--wind-speed <m\/s> +a speed in m\/s from 0 to 60 \(default 10\)/);
   expect(help.stdout).toContain('(default 13.7,79.3,457)');
@@ -187,6 +188,13 @@ test('a bad value or an unknown option comes back from the page: exit code 2, na
     [['--wind', '5', '--wind-speed', '6'], '--wind-speed is given twice (also as --wind)'],
     [['--query', 'windSpeed=99&cam=1,2'], 'windSpeed must be a speed in m/s from 0 to 60; got "99"; cam must be five numbers'],
     [['--query', 'wind=5'], 'wind: unknown URL parameter'],
+    [['--buoy'], 'unknown option --buoy; did you mean --buoys?'],
+    [['--quality', 'ultra'], '--quality must be one of auto, high, medium, low, lowest; got "ultra"'],
+    // The app's settings a shot has no use for are refused, saying why, not silently dropped.
+    [['--target-fps', '60'], "--target-fps is an app setting a shot has no use for: the frame rate quality 'auto' adapts to"],
+    [['--time-scale', '2'], '--time-scale is an app setting a shot has no use for: a shot draws the times asked for'],
+    [['--paused'], '--paused is an app setting a shot has no use for'],
+    [['--t', '3'], '--t is an app setting a shot has no use for: the time of a shot is --time <seconds>'],
   ];
   let first = true;
   for (const [args, message] of cases) {
@@ -198,12 +206,11 @@ test('a bad value or an unknown option comes back from the page: exit code 2, na
   expect(existsSync(join(dir, 'never.png'))).toBe(false);
 });
 
-test('a link from the app and its shot agree pixel for pixel', async ({ page }) => {
-  test.setTimeout(300_000);
-  const size = { width: 320, height: 180 };
-  const query =
-    'windSpeed=14&windDirection=50&seed=5&sunElevation=18&sunAzimuth=70&absorption=0.3,0.06,0.03&scatterColour=%23103040&quality=high&paused=1&t=7.25&cam=3,9,-4,20,-8';
-  // The app, on the test server, as app.spec.ts drives it: its canvas right after a render.
+/**
+ * The app's canvas (on the test server, as app.spec.ts drives it) for a link's query, right after
+ * a render, as RGBA top row first like a PNG; the app must read the link without a warning.
+ */
+async function appCanvas(page: Page, query: string, size: { width: number; height: number }): Promise<{ width: number; height: number; data: Buffer }> {
   await page.setViewportSize(size);
   await page.goto(`/?${query}`);
   await page.waitForFunction(() => window.oceanApp !== undefined);
@@ -216,8 +223,28 @@ test('a link from the app and its shot agree pixel for pixel', async ({ page }) 
   });
   const warnings = await page.locator('.notice.warning').count();
   expect(warnings).toBe(0); // the link is one the app reads without complaint
-  const app = Buffer.from(appPixels.base64, 'base64');
-  expect([appPixels.width, appPixels.height]).toEqual([size.width, size.height]);
+  const { width, height } = appPixels;
+  // readPixels gives the bottom row first.
+  const bottomFirst = Buffer.from(appPixels.base64, 'base64');
+  const data = Buffer.alloc(bottomFirst.length);
+  for (let y = 0; y < height; y++) bottomFirst.copy(data, 4 * y * width, 4 * (height - 1 - y) * width, 4 * (height - y) * width);
+  return { width, height, data };
+}
+
+/** The largest difference of any channel at pixel i (a byte offset) between two RGBA pictures. */
+function pixelDifference(a: Buffer, b: Buffer, i: number): number {
+  let difference = 0;
+  for (let c = 0; c < 4; c++) difference = Math.max(difference, Math.abs(a[i + c] - b[i + c]));
+  return difference;
+}
+
+test('a link from the app and its shot agree pixel for pixel', async ({ page }) => {
+  test.setTimeout(300_000);
+  const size = { width: 320, height: 180 };
+  const query =
+    'windSpeed=14&windDirection=50&seed=5&sunElevation=18&sunAzimuth=70&absorption=0.3,0.06,0.03&scatterColour=%23103040&quality=high&paused=1&t=7.25&cam=3,9,-4,20,-8';
+  const app = await appCanvas(page, query, size);
+  expect([app.width, app.height]).toEqual([size.width, size.height]);
 
   // The shot of the same link (as copied: the whole address works too).
   const result = await shot(['--query', `http://127.0.0.1/?${query}`, '--size', `${size.width}x${size.height}`, '--out', join(dir, 'link.png')]);
@@ -226,18 +253,12 @@ test('a link from the app and its shot agree pixel for pixel', async ({ page }) 
   const { width, height, data } = rgba(join(dir, 'link.png'));
   expect([width, height]).toEqual([size.width, size.height]);
 
-  // readPixels gives the bottom row first, the PNG the top row first.
   let differing = 0;
   let largest = 0;
-  for (let y = 0; y < height; y++) {
-    for (let x = 0; x < width; x++) {
-      const a = 4 * ((height - 1 - y) * width + x);
-      const b = 4 * (y * width + x);
-      let difference = 0;
-      for (let c = 0; c < 4; c++) difference = Math.max(difference, Math.abs(app[a + c] - data[b + c]));
-      if (difference > 0) differing++;
-      largest = Math.max(largest, difference);
-    }
+  for (let i = 0; i < data.length; i += 4) {
+    const difference = pixelDifference(app.data, data, i);
+    if (difference > 0) differing++;
+    largest = Math.max(largest, difference);
   }
   expect({ differing, largest }).toEqual({ differing: 0, largest: 0 });
 
@@ -245,6 +266,59 @@ test('a link from the app and its shot agree pixel for pixel', async ({ page }) 
   const other = await shot(['--query', query.replace('cam=3,9,-4,20,-8', 'cam=3,9,-4,60,-8'), '--size', '320x180', '--out', join(dir, 'other.png'), '--no-build']);
   expect(other.code, other.stderr).toBe(0);
   expect(readFileSync(join(dir, 'other.png')).equals(readFileSync(join(dir, 'link.png')))).toBe(false);
+});
+
+test('a link with buoys=1: the shot draws the app\'s buoys where the app does; all else the same pixels', async ({ page }) => {
+  test.setTimeout(300_000);
+  const size = { width: 320, height: 180 };
+  const query = 'windSpeed=14&windDirection=50&seed=5&sunElevation=18&sunAzimuth=70&quality=high&paused=1&t=7.25&cam=3,9,-4,20,-8';
+  const withBuoys = query.replace('&quality', '&buoys=1&quality');
+  const app = await appCanvas(page, withBuoys, size);
+  const pictures: Record<string, Buffer> = {};
+  for (const [name, link] of [['buoys', withBuoys], ['none', query]]) {
+    const result = await shot(['--query', link, '--size', `${size.width}x${size.height}`, '--out', join(dir, `buoys-${name}.png`)]);
+    expect(result.code, result.stderr).toBe(0);
+    pictures[name] = rgba(join(dir, `buoys-${name}.png`)).data;
+  }
+  // The buoys of a picture: its pixels that differ from the same sea without them (before, the
+  // shot dropped buoys=1 and drew none).
+  const { width, height } = size;
+  const buoyPixels = (picture: Buffer) => Array.from({ length: width * height }, (_, p) => pixelDifference(picture, pictures.none, 4 * p) > 0);
+  const [inApp, inShot] = [buoyPixels(app.data), buoyPixels(pictures.buoys)];
+  const count = (mask: boolean[]) => mask.filter(Boolean).length;
+  /** How far (px, in x or y, up to 9) the pixel p is from the nearest pixel set in `mask`. */
+  const distanceTo = (mask: boolean[], p: number) => {
+    const [x, y] = [p % width, Math.floor(p / width)];
+    for (let r = 0; r < 9; r++) {
+      for (let v = Math.max(0, y - r); v <= Math.min(height - 1, y + r); v++) {
+        for (let u = Math.max(0, x - r); u <= Math.min(width - 1, x + r); u++) if (mask[v * width + u]) return r;
+      }
+    }
+    return 9;
+  };
+  let differingElsewhere = 0;
+  let differingAtBuoys = 0;
+  let farthest = 0; // from a buoy pixel of one picture to the nearest of the other
+  for (let p = 0; p < width * height; p++) {
+    if (inApp[p]) farthest = Math.max(farthest, distanceTo(inShot, p));
+    if (inShot[p]) farthest = Math.max(farthest, distanceTo(inApp, p));
+    if (pixelDifference(app.data, pictures.buoys, 4 * p) === 0) continue;
+    if (Math.min(distanceTo(inApp, p), distanceTo(inShot, p)) <= 2) differingAtBuoys++;
+    else differingElsewhere++;
+  }
+  console.log(
+    `buoys: ${count(inApp)} pixels in the app, ${count(inShot)} in the shot, each within ${farthest} px of the other's; ` +
+      `${differingAtBuoys} pixels differ at the buoys, ${differingElsewhere} elsewhere`,
+  );
+  expect(count(inShot)).toBeGreaterThan(100); // five floats and masts, the nearest 25 m ahead
+  // Away from the buoys (2 px around them in either picture) the pictures are the same pixels.
+  expect(differingElsewhere).toBe(0);
+  // The app sets its buoys down on its first, coarse copy of the finest cascade (its workers'
+  // fields come later), the shot on the exact surface: they ride up to ~10 cm apart (measured in
+  // the app: buoys set down again once its workers had answered moved by 0.4 to 12 cm), a pixel
+  // here. The same buoys in the same places: as many pixels within 15 %, each within 2 px.
+  expect(Math.abs(count(inApp) - count(inShot))).toBeLessThan(0.15 * count(inShot));
+  expect(farthest).toBeLessThanOrEqual(2);
 });
 
 test("the README's picture is what npm start shows first: the app's defaults at t = 0, rendered again, match it", async () => {
@@ -267,3 +341,4 @@ test("the README's picture is what npm start shows first: the app's defaults at 
   console.log(`README picture against a fresh first view: ${differing} of ${fresh.width * fresh.height} pixels differ by more than 24 levels`);
   expect(differing / (fresh.width * fresh.height)).toBeLessThan(0.01);
 });
+

@@ -1,13 +1,18 @@
 /**
  * Misspelt option names are errors that suggest the intended one, wherever options are taken:
- * validateParameters, the shading and sun tables, and the Ocean constructor (which checks its
- * option names before it touches the renderer). The British spellings of the colours are aliases
+ * validateParameters, the shading and sun tables, the Ocean constructor (which checks its option
+ * names before it touches the renderer), and every other exported constructor and method that
+ * takes options. The British spellings of the colours are aliases
  * of the American names; colours come in the forms three.js users pass. Messages quote what was
  * given, shortened.
  */
 import { Color, ColorManagement, type WebGLRenderer } from 'three';
 import { describe, expect, it, vi } from 'vitest';
 import { Ocean } from '../../src/ocean';
+import { FloatingBody } from '../../src/layers/floatingBody';
+import { LocalWaves } from '../../src/layers/localWaves';
+import { OceanSimulation } from '../../src/layers/oceanSimulation';
+import { SkyEnvironment } from '../../src/render/skyEnvironment';
 import { mergeOptions, nearestName, ParameterError, parseOptionText, quoteText } from '../../src/parameters/options';
 import { validateParameters } from '../../src/parameters/parameters';
 import { colorToLinear, DEFAULT_SHADING, SHADING_OPTIONS, type Rgb } from '../../src/parameters/sceneOptions';
@@ -62,6 +67,44 @@ describe('unknown option names', () => {
       expect(error.parameter).toBe('options');
       expect(error.message.startsWith('options must be an object of options, such as { windSpeed: 12 }; got ')).toBe(true);
     }
+  });
+});
+
+describe('unknown option names in every other constructor and method that takes options', () => {
+  // A fake renderer: each check must come before the renderer is used (the JS local waves ask only
+  // for the float-filtering extension).
+  const renderer = { extensions: { has: () => true } } as unknown as WebGLRenderer;
+  const localWaves = () => new LocalWaves(renderer, Infinity, false, { resolution: 16 });
+  const hull = { length: 8, beam: 2.6, draft: 0.6 };
+  const pose = { x: 0, z: 0, heading: 0 };
+  const cases: [string, () => unknown, string, string][] = [
+    ['new OceanSimulation(renderer, parameters, options)', () => new OceanSimulation(renderer, {}, { pth: 'js' } as never), 'pth', 'path'],
+    ['OceanSimulation\'s localWaves option', () => new OceanSimulation(renderer, {}, { localWaves: { cellSise: 2 } } as never), 'localWaves.cellSise', 'cellSize'],
+    ['new SkyEnvironment(renderer, options)', () => new SkyEnvironment(renderer, { sunElevaton: 10 } as never), 'SkyEnvironment sunElevaton', 'sunElevation'],
+    ['new FloatingBody(options)', () => new FloatingBody({ mass: 100, size: [1, 1, 1], dampng: 0.1 } as never), 'FloatingBody dampng', 'damping'],
+    ['new LocalWaves(renderer, depth, useGpu, options)', () => new LocalWaves(renderer, Infinity, false, { resolutoin: 64 } as never), 'localWaves.resolutoin', 'resolution'],
+    ['LocalWaves.drop(x, z, options)', () => localWaves().drop(0, 0, { radus: 2 } as never), 'drop radus', 'radius'],
+    ['LocalWaves.addPressure(shape, pose)', () => localWaves().addPressure({ ...hull, lenght: 9 } as never, pose), 'hull lenght', 'length'],
+    ['LocalWaves.addPressure(shape, pose)\'s pose', () => localWaves().addPressure(hull, { ...pose, headng: 1 } as never), 'hull pose headng', 'heading'],
+  ];
+  for (const [entry, action, parameter, suggestion] of cases) {
+    it(`${entry} names the misspelt key and suggests the nearest`, () => {
+      const error = errorOf(action);
+      expect(error.parameter).toBe(parameter);
+      expect(error.message).toContain(`(did you mean ${suggestion}?)`);
+    });
+  }
+
+  it('options that are not an object of them are a ParameterError naming the argument (before: a TypeError, or nothing)', () => {
+    const named: [() => unknown, string][] = [
+      [() => new OceanSimulation(renderer, {}, null as never), 'OceanSimulation options'],
+      [() => new SkyEnvironment(renderer, 'sunElevation' as never), 'SkyEnvironment options'],
+      [() => new FloatingBody(null as never), 'FloatingBody options'],
+      [() => localWaves().drop(0, 0, [1] as never), 'drop options'],
+      [() => localWaves().addPressure(8 as never, pose), 'hull shape'],
+      [() => localWaves().addPressure(hull, null as never), 'hull pose'],
+    ];
+    for (const [action, parameter] of named) expect(errorOf(action).parameter).toBe(parameter);
   });
 });
 

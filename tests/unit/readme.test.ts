@@ -11,6 +11,8 @@ import { ELEMENT_DEFAULTS, FFT_OCEAN_ATTRIBUTES } from '../../src/embed/fftOcean
 import type { OptionRule } from '../../src/parameters/options';
 import { DEFAULT_PARAMETERS, SIMULATION_OPTIONS } from '../../src/parameters/parameters';
 import { DEFAULT_SHADING, DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS } from '../../src/parameters/sceneOptions';
+import { DEFAULT_SIMULATION_OPTIONS } from '../../src/layers/oceanSimulation';
+import { DEFAULT_SKY_ENVIRONMENT } from '../../src/render/skyEnvironment';
 
 const root = new URL('../../', import.meta.url);
 const source = (path: string) => readFileSync(new URL(path, root), 'utf8');
@@ -23,8 +25,8 @@ interface MemberDoc {
   defaultNote: string;
 }
 
-/** The TSDoc of every member of `interface name` in the TypeScript source `text`. */
-function interfaceDocs(text: string, name: string): Map<string, MemberDoc> {
+/** The text of `interface name` in the TypeScript source `text`, from its name to its closing brace. */
+function interfaceBody(text: string, name: string): string {
   const start = text.search(new RegExp(`interface ${name}\\b[^{]*\\{`));
   if (start < 0) throw new Error(`no interface ${name}`);
   let depth = 0;
@@ -33,7 +35,12 @@ function interfaceDocs(text: string, name: string): Map<string, MemberDoc> {
     if (text[end] === '{') depth++;
     if (text[end] === '}' && --depth === 0) break;
   }
-  const body = text.slice(start, end);
+  return text.slice(start, end);
+}
+
+/** The TSDoc of every member of `interface name` in the TypeScript source `text`. */
+function interfaceDocs(text: string, name: string): Map<string, MemberDoc> {
+  const body = interfaceBody(text, name);
   const docs = new Map<string, MemberDoc>();
   for (const [, comment, member] of body.matchAll(/\/\*\*([\s\S]*?)\*\/\s*(\w+)\??:/g)) {
     const flat = comment
@@ -159,5 +166,38 @@ describe('the TSDoc of every option', () => {
     // The Ocean's own sun options repeat the sun table's: the same defaults.
     for (const [key, value] of Object.entries(DEFAULT_SUN)) expect(valueOf(constructorDocs.get(key)!.defaultValue!), `OceanOptions.${key}`).toEqual(value);
     expect(checked.length).toBe(Object.keys(DEFAULT_PARAMETERS).length + Object.keys(DEFAULT_SUN).length + Object.keys(DEFAULT_SHADING).length + Object.keys(ELEMENT_DEFAULTS).length);
+  });
+  it('of the other options objects gives a @defaultValue for every optional member, equal to the default in force where one is defined', () => {
+    const simulationOptions = source('src/layers/oceanSimulation.ts');
+    const skySource = source('src/render/skyEnvironment.ts');
+    const compared: [string, Map<string, MemberDoc>, Readonly<Record<string, unknown>>][] = [
+      ['SimulationOptions', interfaceDocs(simulationOptions, 'SimulationOptions'), DEFAULT_SIMULATION_OPTIONS],
+      ['SkyEnvironmentOptions', interfaceDocs(skySource, 'SkyEnvironmentOptions'), DEFAULT_SKY_ENVIRONMENT],
+      [
+        'ShadingChanges',
+        interfaceDocs(sceneSource, 'ShadingChanges'),
+        // The colours in any form, and their British aliases: the shading's defaults.
+        { scatterColor: DEFAULT_SHADING.scatterColor, causticColor: DEFAULT_SHADING.causticColor, scatterColour: DEFAULT_SHADING.scatterColor, causticColour: DEFAULT_SHADING.causticColor },
+      ],
+    ];
+    for (const [name, docs, defaults] of compared) {
+      expect([...docs.keys()].sort(), `${name}'s members`).toEqual(Object.keys(defaults).sort());
+      for (const [key, value] of Object.entries(defaults)) expect(valueOf(docs.get(key)!.defaultValue ?? 'none'), `${name}.${key}`).toEqual(value);
+    }
+    // Where the default is the state in force or the absence of a value: said in words, present.
+    const described: [string, string][] = [
+      ['src/ocean.ts', 'OceanOptions'],
+      ['src/ocean.ts', 'SunPosition'],
+      ['src/layers/localWaves.ts', 'LocalWavesOptions'],
+      ['src/layers/localWaves.ts', 'DropOptions'],
+      ['src/layers/floatingBody.ts', 'FloatingBodyOptions'],
+    ];
+    for (const [path, name] of described) {
+      const text = source(path);
+      const docs = interfaceDocs(text, name);
+      const optional = [...interfaceBody(text, name).matchAll(/^\s*(\w+)\?:/gm)].map((match) => match[1]);
+      expect(optional.length, `${name} has optional members`).toBeGreaterThan(0);
+      for (const member of optional) expect(docs.get(member)?.defaultValue, `${name}.${member} has a @defaultValue`).toBeTruthy();
+    }
   });
 });

@@ -23,6 +23,9 @@ import {
   WebGLRenderer,
   WebGLRenderTarget,
 } from 'three';
+import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
+import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
+import { RenderPass } from 'three/addons/postprocessing/RenderPass.js';
 import { DisposedError, Ocean, type OceanOptions } from '../../../src/ocean';
 import { ParameterError } from '../../../src/parameters/options';
 import { shaderSource } from '../../../src/shaderSource';
@@ -314,10 +317,12 @@ const harness = {
   /**
    * A red box 2 m on a side, half under a calm sea, seen from 7 m away and 2 m up, with a renderer
    * of each depth buffer: plain, logarithmic and reversed (where EXT_clip_control allows it). For
-   * each: whether it was in force, and the colour (0–255) at the middle of the box's front face
-   * 0.6 m above and 0.6 m below the water line.
+   * each: whether this context and three.js release can give it (reversed: EXT_clip_control, and
+   * a three.js with the option), whether it was in force (reversed: three's capability, and its
+   * depth state reversed during the render), and the colour (0–255) at the middle of the box's
+   * front face 0.6 m above and 0.6 m below the water line.
    */
-  depthBufferCheck(): { mode: string; inForce: boolean; above: number[]; below: number[] }[] {
+  depthBufferCheck(): { mode: string; supported: boolean; inForce: boolean; above: number[]; below: number[] }[] {
     const modes = [
       { mode: 'plain', options: {} },
       { mode: 'logarithmic', options: { logarithmicDepthBuffer: true } },
@@ -343,8 +348,13 @@ const harness = {
         gl.readPixels(Math.round(((at.x + 1) / 2) * 160), Math.round(((at.y + 1) / 2) * 120), 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
         return [...pixel.slice(0, 3)];
       };
-      const inForce = mode === 'plain' || (mode === 'logarithmic' ? own.capabilities.logarithmicDepthBuffer : own.capabilities.reversedDepthBuffer);
-      const result = { mode, inForce, above: colourAt(0.6), below: colourAt(-0.6) };
+      const capabilities = own.capabilities as { logarithmicDepthBuffer: boolean; reversedDepthBuffer?: boolean };
+      const depthState = own.state.buffers.depth as { getReversed?: () => boolean };
+      const supported = mode !== 'reversed' || (own.extensions.has('EXT_clip_control') && capabilities.reversedDepthBuffer !== undefined);
+      const inForce =
+        mode === 'plain' ||
+        (mode === 'logarithmic' ? capabilities.logarithmicDepthBuffer : capabilities.reversedDepthBuffer === true && depthState.getReversed?.() === true);
+      const result = { mode, supported, inForce, above: colourAt(0.6), below: colourAt(-0.6) };
       ocean.dispose();
       box.geometry.dispose();
       box.material.dispose();
@@ -352,6 +362,67 @@ const harness = {
       own.forceContextLoss();
       return result;
     });
+  },
+  /**
+   * The whole Ocean (its generated sky too) at the app's first view, drawn twice with the same
+   * renderer, scene, camera and time: by renderer.render straight to the canvas, and through three's
+   * EffectComposer (a RenderPass into its half-float target, then an OutputPass that applies the
+   * renderer's tone mapping and output colour space). Returns the mean and largest per-channel
+   * difference (0–255) between the two pictures, how many channel values differ by more than 4, and
+   * the composer's mean colour of the sky (rows 5–35 % of the height) and of the sea (65–95 %).
+   */
+  composerCheck(): { meanDifference: number; largestDifference: number; over4: number; channels: number; sky: number[]; sea: number[] } {
+    const [w, h] = [320, 180];
+    const own = new WebGLRenderer({ antialias: false });
+    own.setSize(w, h);
+    own.toneMapping = ACESFilmicToneMapping;
+    own.outputColorSpace = SRGBColorSpace;
+    const ownScene = new Scene();
+    const ocean = new Ocean(own, { seed: 7, localWaves: false, worker: false });
+    ownScene.add(ocean);
+    const ownCamera = new PerspectiveCamera(55, w / h, 0.5, 1e4);
+    ownCamera.position.set(0, 12, 0);
+    ownCamera.lookAt(60, 0, -80);
+    ownCamera.far = ocean.horizonDistanceFor(12);
+    ownCamera.updateProjectionMatrix();
+    const composer = new EffectComposer(own);
+    composer.addPass(new RenderPass(ownScene, ownCamera));
+    composer.addPass(new OutputPass());
+    const gl = own.getContext();
+    const read = (draw: () => void) => {
+      draw();
+      draw(); // the first draw after set-up builds the layers' programs
+      const pixels = new Uint8Array(4 * w * h);
+      gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+      return pixels;
+    };
+    ocean.update(6);
+    const plain = read(() => own.render(ownScene, ownCamera));
+    const composed = read(() => composer.render());
+    let [sum, largestDifference, over4] = [0, 0, 0];
+    for (let i = 0; i < plain.length; i++) {
+      if (i % 4 === 3) continue; // alpha
+      const difference = Math.abs(plain[i] - composed[i]);
+      sum += difference;
+      largestDifference = Math.max(largestDifference, difference);
+      if (difference > 4) over4++;
+    }
+    const channels = (plain.length / 4) * 3;
+    /** Mean RGB of the rows from `from` to `to` (fractions of the height from the top). */
+    const band = (from: number, to: number) => {
+      const total = [0, 0, 0];
+      let count = 0;
+      for (let y = Math.round((1 - to) * h); y < Math.round((1 - from) * h); y++) {
+        for (let x = 0; x < w; x++, count++) for (let c = 0; c < 3; c++) total[c] += composed[4 * (y * w + x) + c];
+      }
+      return total.map((t) => t / count);
+    };
+    const result = { meanDifference: sum / channels, largestDifference, over4, channels, sky: band(0.05, 0.35), sea: band(0.65, 0.95) };
+    composer.dispose();
+    ocean.dispose();
+    own.dispose();
+    own.forceContextLoss();
+    return result;
   },
   /**
    * The whole Ocean (its generated sky too), tone-mapped as the app draws it, seen level from 10 m
