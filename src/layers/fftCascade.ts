@@ -13,9 +13,9 @@
  * by their velocities (surfaceQuery.ts). Only when there are none within LONGEST_CARRY of the time
  * asked (the first query, a jump in time, a frame step far from the last, a worker given up or one
  * slower than the frames) are the fields computed here (`fieldsComputedHere` counts them): while a
- * worker is on its way, a coarse copy (PROVISIONAL_QUERY_RESOLUTION, made with the cascade,
- * computed with the update of a frame that follows queries and carried like the workers' fields),
- * else the whole.
+ * worker is on its way, a provisional copy (provisionalCopy: the finest cascade on a coarser grid),
+ * computed with the update of a frame that follows queries and carried like the workers' fields,
+ * and freed once a worker's fields are in; else the whole.
  *
  * Owns its backend, its query worker and its CPU copy for queries, and frees them in dispose().
  */
@@ -25,7 +25,7 @@ import { UnsupportedError } from '../parameters/options';
 import { CpuWaveFields } from '../fft/cpuWaveFields';
 import { FieldWorker } from '../fft/fieldWorker';
 import { GpuWaveFields, type GpuPrecision } from '../fft/gpuWaveFields';
-import { reducedSpectrum, type InitialSpectrum, type SpectrumOrigin } from '../spectrum/initialSpectrum';
+import { largestFrequency, reducedSpectrum, type InitialSpectrum, type SpectrumOrigin } from '../spectrum/initialSpectrum';
 import type { LayerFieldsOnCpu, LayerFrame, LayerQueryFields, WaveLayer } from './waveLayer';
 
 /** Which implementation computes a cascade's fields. */
@@ -49,12 +49,14 @@ export const LONGEST_CARRY = 0.04;
 export const QUERY_RESOLUTION = 256;
 
 /**
- * The grid of the copy computed here while a query worker is on its way (the first queries, a jump
- * in time): every cascade but the finest keeps its whole band on it at N = 256 (cascadeBands.ts:
- * up to about 27 rings), the finest loses its ripples shorter than a 64th of its patch; it costs a
- * sixteenth of a 256² copy, so no query waits long for it. Exact answers follow from the worker.
+ * The grid of the finest cascade's copy computed here while a worker is on its way (the first
+ * queries, a jump in time): it loses the ripples shorter than a 64th of the patch, and its waves
+ * fall between the texels of a grid half as fine as the drawn one, and costs a fifth of the whole
+ * (1.1 against 5.4 ms here). The other cascades' copies are on the queries' own grid
+ * (provisionalCopy). Together, over a 10 and a 14 m/s sea at N = 256, heightAt is then at most
+ * 0.5 cm (RMS 0.15 cm) from the exact answers, which follow from the worker.
  */
-export const PROVISIONAL_QUERY_RESOLUTION = 64;
+export const PROVISIONAL_QUERY_RESOLUTION = 128;
 
 /**
  * How long (ms) after the first query the query worker is made. Building its copy of the spectrum
@@ -63,6 +65,28 @@ export const PROVISIONAL_QUERY_RESOLUTION = 64;
  * thread and the GPU's driver may be using. Meanwhile the provisional copy answers.
  */
 export const QUERY_WORKER_DELAY_MS = 250;
+
+/**
+ * How long (ms) the provisional copy computed at a cascade's first update is kept for queries that
+ * have not come yet. Wall-clock time, not updates: the foam's warm-up updates a new cascade many
+ * times before the frame's queries.
+ */
+const UNQUERIED_PROVISIONAL_MS = 2000;
+
+/**
+ * The spectrum of the copy computed here while a worker is on its way, from the queries' own one.
+ * A cascade whose band ends inside the queries' grid (every one but the finest, cascadeBands.ts)
+ * keeps that grid: its FFT skips the empty columns (fft.ts), and the queries then interpolate it
+ * as the surface interpolates its texture. On a coarser grid its shortest waves would fall
+ * between texels: 64² copies of every cascade were up to 32 cm off between texels over a 14 m/s
+ * sea, though exact at them. The finest, whose band fills the grid, goes on
+ * PROVISIONAL_QUERY_RESOLUTION².
+ */
+export function provisionalQuerySpectrum(querySpectrum: InitialSpectrum): InitialSpectrum {
+  const { resolution } = querySpectrum;
+  const finest = largestFrequency(querySpectrum) >= resolution / 2;
+  return finest && resolution > PROVISIONAL_QUERY_RESOLUTION ? reducedSpectrum(querySpectrum, PROVISIONAL_QUERY_RESOLUTION) : querySpectrum;
+}
 
 export class FftCascade implements WaveLayer {
   readonly textures;
@@ -80,6 +104,10 @@ export class FftCascade implements WaveLayer {
   private lastQueryTime = 0;
   /** Whether update() ran once. */
   private updated = false;
+  /** Whether queryFields() was ever called. */
+  private everQueried = false;
+  /** When the cascade was made (performance.now(), ms). */
+  private readonly madeAt = performance.now();
   /** The newest fields the query worker finished. */
   private newest: LayerQueryFields | null = null;
   /** Whether queries came since the last update (the query worker is then asked at the next). */
@@ -90,7 +118,8 @@ export class FftCascade implements WaveLayer {
    */
   private computed: FieldsComputedHere | null = null;
   private computedReduced: FieldsComputedHere | null = null;
-  private computedProvisionally: FieldsComputedHere | null = null;
+  /** The provisional copy (provisionalCopy) while it may be wanted, else null. */
+  private provisional: FieldsComputedHere | null = null;
   private computedHere = 0;
 
   constructor(
@@ -106,10 +135,6 @@ export class FftCascade implements WaveLayer {
     this.backend =
       backend.kind === 'gpu' ? new GpuWaveFields(renderer, spectrum, backend.precision) : new CpuFieldTextures(renderer, spectrum, backend.worker);
     this.jsFieldsForQueries = this.backend instanceof CpuFieldTextures && this.querySpectrum === spectrum ? this.backend : null;
-    // The provisional copy is made now where a worker will bring the queries' fields (and computed
-    // at the first update): making it took ~2 ms per cascade here, mostly the first writes to fresh
-    // memory, too long for the first query to wait for.
-    if (this.workerComing) this.provisionalCopy();
     this.textures = { displacement: { value: this.backend.displacement }, derivatives: { value: this.backend.derivatives } };
     this.frame = { size: spectrum.patchSize, origin: [0, 0], periodic: true, resolution: spectrum.resolution };
   }
@@ -132,9 +157,11 @@ export class FftCascade implements WaveLayer {
     // with the frame's update, not in its first query: at the first update (no worker has answered
     // yet, and a new cascade is usually queried as the one it replaces was) and after frames with
     // queries. (Not fromWorker at the first update: asking the JS path's fields for queries has its
-    // worker compute velocities from then on.)
-    const provisionalWanted = this.updated ? this.queried && this.fromWorker(t) === null : true;
-    if (provisionalWanted && this.workerComing) {
+    // worker compute velocities from then on.) They are freed once the worker's fields are in, or
+    // UNQUERIED_PROVISIONAL_MS after the cascade was made if nothing asked for them.
+    const fromWorker = this.updated && this.queried ? this.fromWorker(t) : null;
+    if (fromWorker !== null || (!this.everQueried && performance.now() - this.madeAt > UNQUERIED_PROVISIONAL_MS)) this.provisional = null;
+    else if ((!this.updated || this.queried) && this.workerComing) {
       const provisional = this.provisionalCopy();
       if (provisional.lastWithin(t, LONGEST_CARRY) === null) this.computeHere(provisional, t).velocities();
     }
@@ -149,12 +176,12 @@ export class FftCascade implements WaveLayer {
   }
 
   queryFields(t: number): LayerQueryFields {
-    this.queried = true;
+    this.queried = this.everQueried = true;
     if (this.queryWorkerWanted && this.queryWorker === null) this.startQueryWorkerSoon(t);
     const near = this.fromWorker(t);
     if (near !== null) return near;
     if (!this.workerComing) return this.computeHere(this.exactCopy(), t);
-    // While a worker is on its way: the coarse copy, carried as the workers' fields are, so that
+    // While a worker is on its way: the provisional copy, carried as the workers' fields are, so that
     // it is computed here at most once per LONGEST_CARRY rather than every frame.
     const provisional = this.provisionalCopy();
     return provisional.lastWithin(t, LONGEST_CARRY) ?? this.computeHere(provisional, t);
@@ -196,11 +223,9 @@ export class FftCascade implements WaveLayer {
     return (this.computedReduced ??= new FieldsComputedHere(this.querySpectrum));
   }
 
-  /** A coarser copy computed here while a worker is on its way (PROVISIONAL_QUERY_RESOLUTION). */
+  /** The copy computed here while a worker is on its way (provisionalQuerySpectrum). */
   private provisionalCopy(): FieldsComputedHere {
-    if (this.spectrum.resolution <= PROVISIONAL_QUERY_RESOLUTION) return this.exactCopy();
-    this.computedProvisionally ??= new FieldsComputedHere(reducedSpectrum(this.spectrum, PROVISIONAL_QUERY_RESOLUTION));
-    return this.computedProvisionally;
+    return (this.provisional ??= new FieldsComputedHere(provisionalQuerySpectrum(this.querySpectrum)));
   }
 
   /**
@@ -244,7 +269,7 @@ export class FftCascade implements WaveLayer {
     if (this.queryWorkerTimer !== null) clearTimeout(this.queryWorkerTimer);
     this.queryWorkerTimer = null;
     this.queryWorker?.dispose();
-    this.computed = this.computedReduced = this.computedProvisionally = null;
+    this.computed = this.computedReduced = this.provisional = null;
     this.newest = null;
   }
 }

@@ -180,7 +180,7 @@ for (const [path, jitter] of [['gpu', 0], ['gpu', 0.005], ['js', 0.005]] as cons
     const result = await page.evaluate(([p, j]) => window.ocean.queriesFromWorkers(p, j), [path, jitter] as const);
     console.log(`queries from workers, ${result.path}, jitter ${jitter * 1000} ms: started after ${result.warmUpFrames} frames (${result.computedInWarmUp} computed here, ${result.computedByQueries} of them in the queries); then over 20 frames computed here ${result.computedHere} times, worst error ${(result.worstError * 1000).toFixed(3)} mm (RMS height ${result.rms.toFixed(3)} m)`);
     expect(result.path).toBe(path === 'gpu' ? 'gpu-rgba32f' : 'js-worker');
-    // Until the workers have started the queries compute here, a coarse copy carried like the
+    // Until the workers have started the queries read a provisional copy computed here, carried like the
     // workers' fields: once per LONGEST_CARRY (40 ms) of simulated time at most, not every frame
     // (steps of 1/60 s ± jitter); from then on, never.
     // The workers start 250 ms after the first query and build their spectra first (~25 frames
