@@ -64,16 +64,11 @@ export class Buoys extends Group {
     this.sync();
   }
 
-  /**
-   * Moves the buoys to time t (s) of the ocean (call after ocean.update(t)). The first update after
-   * dropAhead sets them down again at rest, on the water of t: they may have been dropped before
-   * the ocean was at that time (the app drops them before its first frame), and a paused sea never
-   * steps them.
-   */
+  /** Moves the buoys to time t (s) of the ocean (call after ocean.update(t)). */
   update(t: number): void {
-    const dt = this.lastTime === null ? null : t - this.lastTime;
+    const dt = this.lastTime === null ? 0 : t - this.lastTime;
     this.lastTime = t;
-    if (dt !== null && dt > 0 && dt <= MAX_STEP) for (const body of this.bodies) body.step(dt, this.ocean);
+    if (dt > 0 && dt <= MAX_STEP) for (const body of this.bodies) body.step(dt, this.ocean);
     else if (dt !== 0) for (const body of this.bodies) body.settle(this.ocean);
     this.sync();
   }
