@@ -59,43 +59,57 @@ export class CpuWaveFields {
   /** The velocity texels and the two-field FFT that makes them, once velocities are first asked for. */
   private velocityFields: { texels: Float32Array; fft: BatchedInverseFft2D } | null = null;
 
-  constructor(spectrum: SpectrumForFields) {
+  /**
+   * `reuse`: fields no longer wanted, whose arrays these take over if they have the same grid and
+   * band (their fields are then overwritten): on this machine fresh memory costs ~4 ms per MB, and a
+   * 256² spectrum's fields ~10 MB.
+   */
+  constructor(spectrum: SpectrumForFields, reuse: CpuWaveFields | null = null) {
     this.repeatPeriod = spectrum.repeatPeriod;
     const n = (this.size = spectrum.resolution);
     this.inputBand = largestFrequency(spectrum);
-    const fft = (this.fft = new BatchedInverseFft2D(n, PACKED_SPECTRA, this.inputBand));
-    this.displacement = new Float32Array(4 * n * n);
-    this.derivatives = new Float32Array(4 * n * n);
+    const same = reuse !== null && reuse.size === n && reuse.inputBand === this.inputBand ? reuse : null;
+    const fft = (this.fft = same?.fft ?? new BatchedInverseFft2D(n, PACKED_SPECTRA, this.inputBand));
+    this.displacement = same?.displacement ?? new Float32Array(4 * n * n);
+    this.derivatives = same?.derivatives ?? new Float32Array(4 * n * n);
+    this.velocityFields = same?.velocityFields ?? null;
     this.textures = [this.displacement, this.derivatives];
     // Each pair of wave vectors ±k once, as the one of the two with the lower input index, in the
     // order of the input indexes (so that evolve() writes through the buffers nearly in order).
     const pairCount = (n * n) / 2 + 2; // k ≡ −k at (0, 0), (N/2, 0), (0, N/2) and (N/2, N/2)
-    const modes = new Float64Array(MODE_LENGTH * pairCount);
-    const indexes = new Uint32Array(2 * pairCount);
     // The input row of frequency j, and column of frequency i: the bit reversal, its own inverse,
     // so it also gives the frequency of an input row or column.
     const placeOf = Uint32Array.from({ length: n }, (_, i) => fft.inputIndex(0, i, 0));
     const negated = (index: number) => (n - index) % n;
     const { amplitudes, waveVectors } = spectrum;
-    let kept = 0;
-    for (let row = 0; row < n; row++) {
-      for (let column = 0; column < n; column++) {
-        const i = placeOf[column];
-        const j = placeOf[row];
-        const at = row * n + column;
-        const partnerAt = placeOf[negated(j)] * n + placeOf[negated(i)];
-        const from = 4 * (j * n + i);
-        const [aRe, aIm, bRe, bIm] = [amplitudes[from], amplitudes[from + 1], amplitudes[from + 2], amplitudes[from + 3]];
-        if (partnerAt < at || (aRe === 0 && aIm === 0 && bRe === 0 && bIm === 0)) continue;
-        const to = MODE_LENGTH * kept;
-        [modes[to], modes[to + 1], modes[to + 2], modes[to + 3]] = [aRe + bRe, bIm - aIm, aIm + bIm, aRe - bRe];
-        for (let c = 0; c < 4; c++) modes[to + 4 + c] = waveVectors[from + c];
-        [indexes[2 * kept], indexes[2 * kept + 1]] = [at, partnerAt];
-        kept++;
+    /** Calls `keep` for each pair kept, in input order, and returns how many. */
+    const forEachPair = (keep: (kept: number, at: number, partnerAt: number, from: number) => void) => {
+      let kept = 0;
+      for (let row = 0; row < n; row++) {
+        for (let column = 0; column < n; column++) {
+          const i = placeOf[column];
+          const j = placeOf[row];
+          const at = row * n + column;
+          const partnerAt = placeOf[negated(j)] * n + placeOf[negated(i)];
+          const from = 4 * (j * n + i);
+          if (partnerAt < at || (amplitudes[from] === 0 && amplitudes[from + 1] === 0 && amplitudes[from + 2] === 0 && amplitudes[from + 3] === 0)) continue;
+          keep(kept++, at, partnerAt, from);
+        }
       }
-    }
-    this.modes = modes.slice(0, MODE_LENGTH * kept);
-    this.modePlaces = indexes.slice(0, 2 * kept);
+      return kept;
+    };
+    // Counted first, so that the arrays are made to size: a coarse cascade keeps a few per cent of
+    // the pairs, and fresh memory is slow here (above).
+    const kept = forEachPair(() => {});
+    const modes = (this.modes = new Float64Array(MODE_LENGTH * kept));
+    const indexes = (this.modePlaces = new Uint32Array(2 * kept));
+    forEachPair((k, at, partnerAt, from) => {
+      const to = MODE_LENGTH * k;
+      const [aRe, aIm, bRe, bIm] = [amplitudes[from], amplitudes[from + 1], amplitudes[from + 2], amplitudes[from + 3]];
+      [modes[to], modes[to + 1], modes[to + 2], modes[to + 3]] = [aRe + bRe, bIm - aIm, aIm + bIm, aRe - bRe];
+      for (let c = 0; c < 4; c++) modes[to + 4 + c] = waveVectors[from + c];
+      [indexes[2 * k], indexes[2 * k + 1]] = [at, partnerAt];
+    });
     this.hasZeroModes = kept < pairCount;
   }
 

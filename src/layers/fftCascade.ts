@@ -66,12 +66,6 @@ export const PROVISIONAL_QUERY_RESOLUTION = 128;
  */
 export const QUERY_WORKER_DELAY_MS = 250;
 
-/**
- * How long (ms) the provisional copy computed at a cascade's first update is kept for queries that
- * have not come yet. Wall-clock time, not updates: the foam's warm-up updates a new cascade many
- * times before the frame's queries.
- */
-const UNQUERIED_PROVISIONAL_MS = 2000;
 
 /**
  * The spectrum of the copy computed here while a worker is on its way, from the queries' own one.
@@ -106,8 +100,8 @@ export class FftCascade implements WaveLayer {
   private updated = false;
   /** Whether queryFields() was ever called. */
   private everQueried = false;
-  /** When the cascade was made (performance.now(), ms). */
-  private readonly madeAt = performance.now();
+  /** Updates with a time step before the first query. */
+  private unqueriedSteps = 0;
   /** The newest fields the query worker finished. */
   private newest: LayerQueryFields | null = null;
   /** Whether queries came since the last update (the query worker is then asked at the next). */
@@ -120,6 +114,8 @@ export class FftCascade implements WaveLayer {
   private computedReduced: FieldsComputedHere | null = null;
   /** The provisional copy (provisionalCopy) while it may be wanted, else null. */
   private provisional: FieldsComputedHere | null = null;
+  /** A provisional copy no longer wanted, kept for its arrays (provisionalCopy), or null. */
+  private spare: FieldsComputedHere | null = null;
   private computedHere = 0;
 
   constructor(
@@ -130,6 +126,8 @@ export class FftCascade implements WaveLayer {
     backend: FftBackend,
     /** Whether the queries' fields may be computed in a worker (else here, once per time asked). */
     private readonly queryWorkerWanted = true,
+    /** The cascade this one replaces, whose provisional copy's arrays it may take over (provisionalCopy). */
+    private predecessor: FftCascade | null = null,
   ) {
     this.querySpectrum = spectrum.resolution > QUERY_RESOLUTION ? reducedSpectrum(spectrum, QUERY_RESOLUTION) : spectrum;
     this.backend =
@@ -158,15 +156,21 @@ export class FftCascade implements WaveLayer {
     // yet, and a new cascade is usually queried as the one it replaces was) and after frames with
     // queries. (Not fromWorker at the first update: asking the JS path's fields for queries has its
     // worker compute velocities from then on.) They are freed once the worker's fields are in, or
-    // UNQUERIED_PROVISIONAL_MS after the cascade was made if nothing asked for them.
+    // after two frames that moved on in time without a query (counted by their steps: the foam's
+    // warm-up updates a new cascade many times before the frame's queries, with no step).
+    // Freed, or kept aside (`spare`) for a successor while queries come.
+    if (step !== 0 && !this.everQueried) this.unqueriedSteps++;
     const fromWorker = this.updated && this.queried ? this.fromWorker(t) : null;
-    if (fromWorker !== null || (!this.everQueried && performance.now() - this.madeAt > UNQUERIED_PROVISIONAL_MS)) this.provisional = null;
-    else if ((!this.updated || this.queried) && this.workerComing) {
+    if (fromWorker !== null || this.unqueriedSteps >= 2) {
+      this.spare = this.everQueried ? (this.provisional ?? this.spare) : null;
+      this.provisional = null;
+    } else if ((!this.updated || this.queried) && this.workerComing) {
       const provisional = this.provisionalCopy();
       if (provisional.lastWithin(t, LONGEST_CARRY) === null) this.computeHere(provisional, t).velocities();
     }
     this.queried = false;
     this.updated = true;
+    this.predecessor = null;
   }
 
   /** The fields at time t, computed here on the main thread (for the foam's warm-up and the tests). */
@@ -223,9 +227,24 @@ export class FftCascade implements WaveLayer {
     return (this.computedReduced ??= new FieldsComputedHere(this.querySpectrum));
   }
 
-  /** The copy computed here while a worker is on its way (provisionalQuerySpectrum). */
+  /**
+   * The copy computed here while a worker is on its way (provisionalQuerySpectrum), in the arrays of
+   * the one the cascade it replaces had (when they fit), or of its own earlier one.
+   */
   private provisionalCopy(): FieldsComputedHere {
-    return (this.provisional ??= new FieldsComputedHere(provisionalQuerySpectrum(this.querySpectrum)));
+    if (this.provisional === null) {
+      const reuse = this.spare ?? this.predecessor?.takeProvisionalCopy() ?? null;
+      this.provisional = new FieldsComputedHere(provisionalQuerySpectrum(this.querySpectrum), reuse);
+      this.spare = null;
+    }
+    return this.provisional;
+  }
+
+  /** Gives up the provisional copy (in use or kept aside), for a successor to compute its own in. */
+  private takeProvisionalCopy(): FieldsComputedHere | null {
+    const copy = this.provisional ?? this.spare;
+    this.provisional = this.spare = null;
+    return copy;
   }
 
   /**
@@ -269,7 +288,7 @@ export class FftCascade implements WaveLayer {
     if (this.queryWorkerTimer !== null) clearTimeout(this.queryWorkerTimer);
     this.queryWorkerTimer = null;
     this.queryWorker?.dispose();
-    this.computed = this.computedReduced = this.provisional = null;
+    this.computed = this.computedReduced = this.provisional = this.spare = this.predecessor = null;
     this.newest = null;
   }
 }
@@ -279,8 +298,9 @@ class FieldsComputedHere {
   private readonly fields: CpuWaveFields;
   private last: LayerQueryFields | null = null;
 
-  constructor(spectrum: InitialSpectrum) {
-    this.fields = new CpuWaveFields(spectrum);
+  /** `reuse`: a copy no longer wanted, whose arrays these may take over (CpuWaveFields). */
+  constructor(spectrum: InitialSpectrum, reuse: FieldsComputedHere | null = null) {
+    this.fields = new CpuWaveFields(spectrum, reuse?.fields ?? null);
   }
 
   isAt(t: number): boolean {

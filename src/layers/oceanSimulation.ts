@@ -203,10 +203,14 @@ export class OceanSimulation {
     const support = this.preference === 'js' ? { precision: null, reason: 'asked for' } : gpuSupport(this.renderer);
     let precision: GpuPrecision | null = support.precision;
     this.currentReason = support.reason;
-    const cascadesOn = (gpu: GpuPrecision | null) =>
-      spectra.map((spectrum, cascade) => new FftCascade(this.renderer, spectrum, { params: this.spectraParameters, cascade }, backendFor(gpu, this.useWorker), this.useWorker));
-    // The new layers are built before the old ones are freed (see `retired`).
+    // The new layers are built before the old ones are freed (see `retired`); each may take over the
+    // arrays of its predecessor's CPU copy for queries.
     const previous = this.currentLayers;
+    const cascadesOn = (gpu: GpuPrecision | null) =>
+      spectra.map(
+        (spectrum, cascade) =>
+          new FftCascade(this.renderer, spectrum, { params: this.spectraParameters, cascade }, backendFor(gpu, this.useWorker), this.useWorker, previous[cascade] ?? null),
+      );
     try {
       this.currentLayers = cascadesOn(precision);
     } catch (error) {

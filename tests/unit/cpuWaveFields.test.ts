@@ -620,6 +620,28 @@ function reducedAgainstFull(parameters: SimulationParameters, resolution: number
   });
 }
 
+describe('CpuWaveFields taking over the arrays of fields no longer wanted (fftCascade.ts: a new cascade\'s provisional copy)', () => {
+  it('gives bit for bit the fields, velocities included, of fields made afresh; in the old arrays only where grid and band match', () => {
+    const [before, after] = [10, 15].map((windSpeed) => createCascadeSpectra(validateParameters({ resolution: 64, windSpeed, seed: 4 })));
+    for (let cascade = 0; cascade < before.length; cascade++) {
+      const old = new CpuWaveFields(before[cascade]);
+      old.update(3);
+      const oldVelocities = old.updateVelocities(3);
+      const fresh = new CpuWaveFields(after[cascade]);
+      const taken = new CpuWaveFields(after[cascade], old);
+      for (const fields of [fresh, taken]) fields.update(7.5);
+      expect(taken.displacement).toBe(old.displacement); // the same array
+      expect(taken.displacement).toEqual(fresh.displacement);
+      expect(taken.derivatives).toEqual(fresh.derivatives);
+      expect(taken.updateVelocities(7.5)).toBe(oldVelocities);
+      expect(taken.updateVelocities(7.5)).toEqual(fresh.updateVelocities(7.5));
+    }
+    // Another band (the finest cascade's against a coarse one's): fresh arrays.
+    const finest = new CpuWaveFields(before[0]);
+    expect(new CpuWaveFields(after[2], finest).displacement).not.toBe(finest.displacement);
+  });
+});
+
 describe('reducedSpectrum (the queries\' copies of a cascade on coarser grids, fftCascade.ts)', () => {
   it('a 64² copy of the default N = 256 sea: every cascade but the finest exact at its texels; the finest within 1 % of the sea\'s RMS height there', { timeout: 60_000 }, () => {
     // Between the texels the coarse cascades' copies are not exact: surfaceQuery.test.ts.

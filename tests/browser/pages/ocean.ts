@@ -37,6 +37,7 @@ import { OceanSimulation } from '../../../src/layers/oceanSimulation';
 import { blendAngle, COPY_OFFSET, patchBlendUniforms } from '../../../src/layers/patchBlend';
 import { heightAt, normalAt } from '../../../src/layers/surfaceQuery';
 import type { WaveLayer } from '../../../src/layers/waveLayer';
+import type { FftCascade } from '../../../src/layers/fftCascade';
 import type { SimulationParameters } from '../../../src/parameters/parameters';
 
 const query = new URLSearchParams(location.search);
@@ -481,18 +482,30 @@ const harness = {
    * or alternately 1/60 s ± `jitter`. Frames run until no cascade has computed fields here for
    * three frames in a row (the workers started: `warmUpFrames`, at most 40), then 20 more, over which
    * it returns how many times the cascades computed fields here, and the worst difference between
-   * heightAt and the height from fields computed for the time asked; `computedByQueries` counts the
-   * fields computed here inside the queries (not in the updates) over all frames.
+   * heightAt and the height from fields computed for the time asked. Then a new wind (14 m/s: new
+   * cascades, which read provisional copies until their workers answer) and 3 frames, with the same
+   * worst difference (`worstAfterChange`, RMS height `rmsAfterChange`). `computedByQueries` counts
+   * the fields computed here inside the queries (not in the updates) over all frames.
    */
   async queriesFromWorkers(
     path: 'gpu' | 'js',
     jitter: number,
-  ): Promise<{ warmUpFrames: number; computedInWarmUp: number; computedByQueries: number; cascades: number; computedHere: number; worstError: number; rms: number; path: string }> {
+  ): Promise<{
+    warmUpFrames: number;
+    computedInWarmUp: number;
+    computedByQueries: number;
+    cascades: number;
+    computedHere: number;
+    worstError: number;
+    rms: number;
+    worstAfterChange: number;
+    rmsAfterChange: number;
+    path: string;
+  }> {
     const ocean = new Ocean(renderer, { path, worker: true, localWaves: false, seed: 3 });
-    const cascades = ocean.simulation.layers;
     const { choppiness } = ocean.parameters;
     // The same cascades, each answering with its fields computed here for the time asked.
-    const exact: WaveLayer[] = cascades.map((cascade) => ({
+    const exactOf = (cascades: readonly FftCascade[]): WaveLayer[] => cascades.map((cascade) => ({
       textures: cascade.textures,
       frame: cascade.frame,
       movesSideways: true,
@@ -500,6 +513,8 @@ const harness = {
       dispose: () => {},
       queryFields: (t: number) => ({ time: t, resolution: cascade.frame.resolution, ...cascade.fieldsOnCpu(t), velocities: () => new Float32Array(0) }),
     }));
+    let cascades = ocean.simulation.layers;
+    let exact = exactOf(cascades);
     const points = Array.from({ length: 25 }, (_, p) => [(p % 5) * 23.1 - 40, Math.floor(p / 5) * 19.7 - 35]);
     const normal = new Vector3();
     const computedHere = () => cascades.reduce((sum, cascade) => sum + cascade.fieldsComputedHere, 0);
@@ -533,20 +548,32 @@ const harness = {
       const warmUpFrames = frame;
       const computedInWarmUp = computedHere();
       const before = computedHere();
-      let [worstError, squares] = [0, 0];
-      for (let i = 0; i < 20; i++) {
-        const { worst, squares: s } = await step(true);
-        worstError = Math.max(worstError, worst);
-        squares += s;
-      }
+      /** `frames` frames compared: the worst difference and the RMS height. */
+      const compared = async (frames: number) => {
+        let [worstError, squares] = [0, 0];
+        for (let i = 0; i < frames; i++) {
+          const { worst, squares: s } = await step(true);
+          worstError = Math.max(worstError, worst);
+          squares += s;
+        }
+        return [worstError, Math.sqrt(squares / (frames * points.length))];
+      };
+      const [worstError, rms] = await compared(20);
+      const computedAfterWarmUp = computedHere() - before;
+      ocean.setParameters({ windSpeed: 14 });
+      cascades = ocean.simulation.layers;
+      exact = exactOf(cascades);
+      const [worstAfterChange, rmsAfterChange] = await compared(3);
       return {
         warmUpFrames,
         computedInWarmUp,
         computedByQueries,
         cascades: cascades.length,
-        computedHere: computedHere() - before,
+        computedHere: computedAfterWarmUp,
         worstError,
-        rms: Math.sqrt(squares / (20 * points.length)),
+        rms,
+        worstAfterChange,
+        rmsAfterChange,
         path: ocean.path.running,
       };
     } finally {
