@@ -13,9 +13,10 @@
  * by their velocities (surfaceQuery.ts). Only when there are none within LONGEST_CARRY of the time
  * asked (the first query, a jump in time, a frame step far from the last, a worker given up or one
  * slower than the frames) are the fields computed here (`fieldsComputedHere` counts them): while a
- * worker is on its way, a provisional copy (provisionalCopy: the finest cascade on a coarser grid),
- * computed with the update of a frame that follows queries and carried like the workers' fields,
- * and freed once a worker's fields are in; else the whole.
+ * worker is on its way, a provisional copy (provisionalQuerySpectrum: the finest cascade on a
+ * coarser grid), computed with the update of a frame that follows queries and carried like the
+ * workers' fields, then set aside once a worker's fields are in (its arrays serve the next
+ * provisional copy, this cascade's or the one of the cascade that replaces it); else the whole.
  *
  * Owns its backend, its query worker and its CPU copy for queries, and frees them in dispose().
  */
@@ -53,8 +54,8 @@ export const QUERY_RESOLUTION = 256;
  * queries, a jump in time): it loses the ripples shorter than a 64th of the patch, and its waves
  * fall between the texels of a grid half as fine as the drawn one, and costs a fifth of the whole
  * (1.1 against 5.4 ms here). The other cascades' copies are on the queries' own grid
- * (provisionalCopy). Together, over a 10 and a 14 m/s sea at N = 256, heightAt is then at most
- * 0.5 cm (RMS 0.15 cm) from the exact answers, which follow from the worker.
+ * (provisionalQuerySpectrum). Together, over a 10 and a 14 m/s sea at N = 256, heightAt is then
+ * about 0.5 cm at most (RMS 0.15 cm) from the exact answers, which follow from the worker.
  */
 export const PROVISIONAL_QUERY_RESOLUTION = 128;
 
@@ -65,7 +66,6 @@ export const PROVISIONAL_QUERY_RESOLUTION = 128;
  * thread and the GPU's driver may be using. Meanwhile the provisional copy answers.
  */
 export const QUERY_WORKER_DELAY_MS = 250;
-
 
 /**
  * The spectrum of the copy computed here while a worker is on its way, from the queries' own one.
@@ -155,10 +155,10 @@ export class FftCascade implements WaveLayer {
     // with the frame's update, not in its first query: at the first update (no worker has answered
     // yet, and a new cascade is usually queried as the one it replaces was) and after frames with
     // queries. (Not fromWorker at the first update: asking the JS path's fields for queries has its
-    // worker compute velocities from then on.) They are freed once the worker's fields are in, or
-    // after two frames that moved on in time without a query (counted by their steps: the foam's
-    // warm-up updates a new cascade many times before the frame's queries, with no step).
-    // Freed, or kept aside (`spare`) for a successor while queries come.
+    // worker compute velocities from then on.) Once the worker's fields are in, the copy is set
+    // aside (`spare`) for its arrays; after two frames that moved on in time without any query
+    // (counted by their steps: the foam's warm-up updates a new cascade many times before the
+    // frame's queries, with no step) it is freed.
     if (step !== 0 && !this.everQueried) this.unqueriedSteps++;
     const fromWorker = this.updated && this.queried ? this.fromWorker(t) : null;
     if (fromWorker !== null || this.unqueriedSteps >= 2) {
