@@ -181,7 +181,8 @@ export class FftCascade implements WaveLayer {
 
   queryFields(t: number): LayerQueryFields {
     this.queried = this.everQueried = true;
-    if (this.queryWorkerWanted && this.queryWorker === null) this.startQueryWorkerSoon(t);
+    // A query worker only where the JS path's own fields are not the queries' copy.
+    if (this.jsFieldsForQueries === null && this.queryWorkerWanted && this.queryWorker === null) this.startQueryWorkerSoon(t);
     const near = this.fromWorker(t);
     if (near !== null) return near;
     if (!this.workerComing) return this.computeHere(this.exactCopy(), t);
