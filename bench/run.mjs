@@ -31,7 +31,10 @@
 //                started), the calls over 1 ms over all frames (goal: none) and within the 40, the
 //                first frame's calls together, how often fields were computed here after the 40,
 //                and a control: after each call a fixed few microseconds of arithmetic, timed, whose
-//                calls over 1 ms count the times the machine held the main thread up anyway.
+//                calls over 1 ms count the times the machine held the main thread up anyway. Each
+//                call runs in a task of its own, traced: the `Cpu` figures count the main thread's
+//                CPU time in it (at most the task's thread time), where other threads cannot hold
+//                it up (firstCallCpuMs: the first call, which compiles the code).
 //   parameter-change  (with queries) a new wind set on the GPU path at N = 256 with the default
 //                cascades, as the app's panel sets it: the main thread's time in setParameters and
 //                in each of the two frames after it (update, 5 points' heightAt and normalAt, render
@@ -139,6 +142,28 @@ function stats(samples) {
     q1: round(quantile(sorted, 0.25)),
     q3: round(quantile(sorted, 0.75)),
   };
+}
+
+/**
+ * Each call's main-thread CPU time (ms), at most: the thread time of the task it ran in (the trace's
+ * FunctionCall around its `<kind>-call-<i>` mark, bench/pages/frame.ts), or its wall time
+ * `wallMs[i]` where that is less (the task also makes the mark and queues the next). A call whose
+ * wall time is long and CPU time short was held up by other threads, not by its own work.
+ */
+function callThreadTimes(traceEvents, kind, wallMs) {
+  const marks = new Map();
+  const markName = new RegExp(`^${kind}-call-(\\d+)$`);
+  for (const event of traceEvents) {
+    const match = markName.exec(event.name);
+    if (match) marks.set(Number(match[1]), event);
+  }
+  const tasks = traceEvents.filter((event) => event.name === 'FunctionCall' && event.ph === 'X');
+  return wallMs.map((ms, i) => {
+    const mark = marks.get(i);
+    const task = mark && tasks.find((t) => t.tid === mark.tid && t.ts <= mark.ts && mark.ts <= t.ts + t.dur);
+    if (!task) throw new Error(`the trace has no task around ${kind} call ${i}`);
+    return Math.min(ms, task.tdur / 1000);
+  });
 }
 
 const ratio = (a, b) => (a > 0 && b > 0 ? Math.round((a / b) * 1000) / 1000 : null);
@@ -755,18 +780,23 @@ async function browserBenchmarks(results) {
       results.queryFrames = {};
       for (const resolution of QUERY_FRAME_RESOLUTIONS) {
         log(`query frames: heightAt and normalAt at 5 points a frame, GPU path, N = ${resolution}`);
+        await browser.startTracing(page, { categories: ['devtools.timeline', 'blink.user_timing'] });
         const run = await withTimeout(
           page.evaluate((o) => window.frameBench.queryFrames(o), { resolution, warmUp: 40, frames: 60, frameMs: 50 }),
           BROWSER_STEP_TIMEOUT_MS,
           `the query frames at N = ${resolution}`,
         );
+        const trace = JSON.parse((await browser.stopTracing()).toString()).traceEvents;
+        const callCpuMs = callThreadTimes(trace, 'query', run.callMs);
+        const controlCpuMs = callThreadTimes(trace, 'control', run.controlMs);
         const afterWarmUp = run.callMs.slice(run.warmUpCalls);
         const row = stats(afterWarmUp);
         const over1Ms = (times) => times.filter((ms) => ms > 1).length;
         const largestCallMs = Math.max(...run.callMs);
         const callsOver1Ms = over1Ms(run.callMs);
+        const callsOver1MsCpu = over1Ms(callCpuMs);
         const controlCallsOver1Ms = over1Ms(run.controlMs);
-        results.queryFrames[resolution] = { ms: row.ms, largestCallMs, callsOver1Ms, controlCallsOver1Ms, firstFrameMs: run.firstFrameMs, computedHere: run.computedHere };
+        results.queryFrames[resolution] = { ms: row.ms, largestCallMs, callsOver1Ms, callsOver1MsCpu, controlCallsOver1Ms, firstFrameMs: run.firstFrameMs, computedHere: run.computedHere };
         emit({
           bench: 'query-frames',
           N: resolution,
@@ -775,9 +805,13 @@ async function browserBenchmarks(results) {
           largestCallMs,
           callsOver1Ms,
           callsOver1MsInWarmUp: over1Ms(run.callMs.slice(0, run.warmUpCalls)),
+          largestCallCpuMs: Math.max(...callCpuMs),
+          firstCallCpuMs: callCpuMs[0],
+          callsOver1MsCpu,
           controlCalls: run.controlMs.length,
           controlCallsOver1Ms,
           controlLargestMs: Math.max(...run.controlMs),
+          controlCallsOver1MsCpu: over1Ms(controlCpuMs),
           computedHereAfterWarmUp: run.computedHere,
           firstFrameMs: run.firstFrameMs,
           target: 'no call over 1 ms',

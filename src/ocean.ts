@@ -19,7 +19,7 @@ import { SkyEnvironment, sunAnglesFromDirection, type SunAngles, type SunDirecti
 import { OceanSimulation, type PathPreference, type SimulationOptions, type SimulationPath } from './layers/oceanSimulation';
 import type { LocalWaves } from './layers/localWaves';
 import { checkThreeRelease } from './fft/threeInternals';
-import { heightAt, normalAt, velocityAt } from './layers/surfaceQuery';
+import { compileQueryCode, heightAt, normalAt, velocityAt } from './layers/surfaceQuery';
 import { checkOptionNames, DisposedError, isOptionsObject, optionAliases } from './parameters/options';
 import { ParameterError, SIMULATION_OPTIONS, type SimulationParameters } from './parameters/parameters';
 import { DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ShadingChanges, type ShadingOptions } from './parameters/sceneOptions';
@@ -145,6 +145,7 @@ export class Ocean extends Object3D<OceanEventMap> {
     );
     this.skyBackground = new SkyBackground(this.sky, { backgroundWater: this.surface.backgroundWater, deepWater: this.surface.material.uniforms.scatterColor });
     this.add(this.surface, this.skyBackground);
+    compileQueryCode();
   }
 
   /**

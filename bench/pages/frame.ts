@@ -149,6 +149,10 @@ async function queries(options: { resolution: number; points: number; rounds: nu
  * machine (two cores shared with SwiftShader's threads, the workers and other tenants) the main
  * thread is now and then held up for milliseconds whatever it runs; a control call over 1 ms says
  * how often, beside the queries' count.
+ *
+ * Each call runs in a task of its own, marked `query-call-<i>` (i: its index in callMs) or
+ * `control-call-<i>`, so that a trace of the page gives the task's main-thread CPU time beside the
+ * call's wall time (bench/run.mjs): a call held up by other threads has the one, not the other.
  */
 async function queryFrames(options: { resolution: number; warmUp: number; frames: number; frameMs: number }): Promise<{ firstFrameMs: number; callMs: number[]; warmUpCalls: number; controlMs: number[]; computedHere: number }> {
   const renderer = new WebGLRenderer();
@@ -157,11 +161,20 @@ async function queryFrames(options: { resolution: number; warmUp: number; frames
   const normal = new Vector3();
   const computedHere = () => ocean.simulation.layers.reduce((sum, layer) => sum + layer.fieldsComputedHere, 0);
   const [callMs, controlMs]: number[][] = [[], []];
-  const timed = (call: () => unknown, into: number[]) => {
-    const start = performance.now();
-    call();
-    into.push(performance.now() - start);
-  };
+  const timed = (call: () => unknown, into: number[]) =>
+    new Promise<void>((resolve) => {
+      const channel = new MessageChannel();
+      channel.port1.onmessage = () => {
+        performance.mark(`${into === callMs ? 'query' : 'control'}-call-${into.length}`);
+        const start = performance.now();
+        call();
+        into.push(performance.now() - start);
+        channel.port1.close();
+        // The rest of the frame in a task of its own, not in this one.
+        setTimeout(resolve, 0);
+      };
+      channel.port2.postMessage(null);
+    });
   let [firstFrameMs, computedAtWarmUp, warmUpCalls, sink] = [0, 0, 0, 0];
   const control = () => {
     for (let i = 1; i <= 2000; i++) sink += Math.sqrt(i);
@@ -169,14 +182,13 @@ async function queryFrames(options: { resolution: number; warmUp: number; frames
   try {
     for (let frame = 0; frame < options.warmUp + options.frames; frame++) {
       ocean.update(30 + frame / 60);
-      const frameStart = performance.now();
       for (const [x, z] of points) {
-        timed(() => ocean.heightAt(x, z), callMs);
-        timed(control, controlMs);
-        timed(() => ocean.normalAt(x, z, normal), callMs);
-        timed(control, controlMs);
+        await timed(() => ocean.heightAt(x, z), callMs);
+        await timed(control, controlMs);
+        await timed(() => ocean.normalAt(x, z, normal), callMs);
+        await timed(control, controlMs);
       }
-      if (frame === 0) firstFrameMs = performance.now() - frameStart;
+      if (frame === 0) firstFrameMs = callMs.reduce((sum, ms) => sum + ms, 0);
       if (frame === options.warmUp - 1) [computedAtWarmUp, warmUpCalls] = [computedHere(), callMs.length];
       await new Promise((resolve) => setTimeout(resolve, options.frameMs));
     }
