@@ -1,7 +1,7 @@
 // three-fft-ocean public API: re-exports only.
 export { Ocean, DisposedError, type OceanOptions, type OceanPath, type OceanEventMap, type SunPosition } from './ocean';
 export { UnsupportedError } from './parameters/options';
-export { OceanSimulation, type SimulationOptions, type SimulationPath, type PathPreference } from './layers/oceanSimulation';
+export { OceanSimulation, DEFAULT_SIMULATION_OPTIONS, type SimulationOptions, type SimulationPath, type PathPreference } from './layers/oceanSimulation';
 export {
   DEFAULT_PARAMETERS,
   ParameterError,
@@ -44,6 +44,8 @@ export {
 } from './parameters/sceneOptions';
 export {
   SkyEnvironment,
+  DEFAULT_SKY_ENVIRONMENT,
+  type SkyEnvironmentOptions,
   skyboxFaceUrls,
   sunAnglesFromDirection,
   sunDirectionFromAngles,

@@ -11,8 +11,8 @@ import { ELEMENT_DEFAULTS, FFT_OCEAN_ATTRIBUTES } from '../../src/embed/fftOcean
 import type { OptionRule } from '../../src/parameters/options';
 import { DEFAULT_PARAMETERS, SIMULATION_OPTIONS } from '../../src/parameters/parameters';
 import { DEFAULT_SHADING, DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS } from '../../src/parameters/sceneOptions';
-import { DEFAULT_SIMULATION_OPTIONS } from '../../src/layers/oceanSimulation';
-import { DEFAULT_SKY_ENVIRONMENT } from '../../src/render/skyEnvironment';
+// From the package's entry point, as a user reads them.
+import { DEFAULT_SIMULATION_OPTIONS, DEFAULT_SKY_ENVIRONMENT } from '../../src/index';
 
 const root = new URL('../../', import.meta.url);
 const source = (path: string) => readFileSync(new URL(path, root), 'utf8');
