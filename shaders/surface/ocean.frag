@@ -67,9 +67,12 @@ uniform bool captureRestPoint;
 void main() {
   // First, so that every path below writes the same depth (ocean.vert).
   #include <logdepthbuf_fragment>
-  // The rest point's change to the next pixel, for the foam (foam.glsl), taken before any branch:
-  // derivatives are defined only where every pixel of a 2×2 quad runs the same code.
+  // The foam's pattern and the rest point's and the pattern's change to the next pixel (foam.glsl),
+  // taken before any branch: derivatives are defined only where every pixel of a 2×2 quad runs the
+  // same code.
   vec2 restPerPixelX = dFdx(vRestFromEye), restPerPixelY = dFdy(vRestFromEye);
+  vec2 foamDetail = foamPattern(vRestFromEye + foamPatternOrigin);
+  float foamDetailPerPixel = fwidth(foamDetail.x);
 #ifdef CAPTURE_POSITIONS
   // Geometry test: the displaced position, or the rest point with its mip level and ring (from the eye).
   gl_FragColor = captureRestPoint ? vec4(vRestFromEye, vLod, vRing) : vec4(vFromEye, 1.0);
@@ -137,7 +140,7 @@ void main() {
   vec3 colour = reflectance * sky + (1.0 - reflectance) * water + caustic * skySunVisibility * causticColor + glint;
   // Most of the sea has no foam: it pays for the pattern and the foam's light only where there is.
   if (vFoam > FOAM_VISIBLE) {
-    float opacity = foamOpacity(vFoam, vRestFromEye + foamPatternOrigin, restPerPixelX, restPerPixelY);
+    float opacity = foamOpacity(vFoam, foamDetail, foamDetailPerPixel, restPerPixelX, restPerPixelY);
     if (opacity > 0.0) colour = mix(colour, foamRadiance(normal, sunDirection, sunLight, environmentRadiance(normal)), opacity);
   }
   #endif

@@ -10,10 +10,8 @@ import type { WaveLayer } from '../layers/waveLayer';
 import { mergeOptions, ParameterError } from '../parameters/options';
 import { DEFAULT_SHADING, SHADING_MODES, SHADING_OPTIONS, type ShadingChanges, type ShadingOptions } from '../parameters/sceneOptions';
 import { shaderSource, withLayerCount } from '../shaderSource';
+import { FOAM_PATTERN_PERIOD, foamPatternDefines, foamPatternTextures } from './foamPattern';
 import { finestTexel, RING_COUNT } from './horizonGrid';
-
-/** The foam pattern repeats every this many metres (FOAM_PATTERN_PERIOD in shaders/surface/foam.glsl). */
-const FOAM_PATTERN_PERIOD = 1000;
 
 /** Where the eye is against the sea surface (the uniform eyeSide of ocean.frag). */
 export const EYE_SIDE = { above: 0, below: 1, near: 2 } as const;
@@ -44,7 +42,7 @@ export class OceanMaterial extends ShaderMaterial {
       // SHADING_MODE is a define, not a uniform: a mode change recompiles (rare), and the full
       // shading runs without the debug modes' branches (a few per cent of a SwiftShader frame).
       // LAYER_COUNT too (bindLayers): the sums over layers are unrolled.
-      defines: { RING_COUNT, SHADING_MODE: 0, LAYER_COUNT: 1, ...defines },
+      defines: { RING_COUNT, SHADING_MODE: 0, LAYER_COUNT: 1, ...foamPatternDefines(), ...defines },
       vertexShader: withLayerCount(shaderSource('surface/ocean.vert'), 1),
       fragmentShader: withLayerCount(shaderSource('surface/ocean.frag'), 1),
       side: DoubleSide,
@@ -89,6 +87,11 @@ export class OceanMaterial extends ShaderMaterial {
     this.uniforms.sunDirection = inputs.sunDirection;
     this.uniforms.skyDaylight = inputs.daylight?.skyDaylight ?? { value: 1 };
     this.uniforms.skySunVisibility = inputs.daylight?.skySunVisibility ?? { value: 1 };
+    // The foam's detail (foamPattern.ts): this material's own textures (set after the merge above,
+    // which would clone them), freed in dispose().
+    const foamPattern = foamPatternTextures();
+    this.uniforms.foamCoarseLattice = { value: foamPattern.coarse };
+    this.uniforms.foamFineTile = { value: foamPattern.fine };
     this.setShading(options);
   }
 
@@ -156,6 +159,13 @@ export class OceanMaterial extends ShaderMaterial {
       this.defines.SHADING_MODE = mode;
       this.needsUpdate = true;
     }
+  }
+
+  /** Frees the program (ShaderMaterial) and the foam pattern's textures. */
+  override dispose(): void {
+    this.uniforms.foamCoarseLattice.value.dispose();
+    this.uniforms.foamFineTile.value.dispose();
+    super.dispose();
   }
 
   get shading(): ShadingOptions {
