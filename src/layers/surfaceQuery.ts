@@ -123,8 +123,9 @@ let queryCodeCompiled = false;
  * Runs each query once over still water (one periodic 2² layer of zeros, carried from another
  * time), so that V8 compiles the query code here and not in an app's first query. V8 compiles a
  * function at its first call: the first heightAt of a page compiled 24 of them, 9 after this (the
- * ocean's and its layers' own methods). In Chromium 156 here that first call took 1.3–1.9 ms of
- * main-thread CPU, 0.5–1.0 ms after this (npm run bench, query-frames' firstCallCpuMs); issue 10
+ * ocean's and its layers' own methods). In Chromium 156 here that first call took 1.3 and 1.9 ms
+ * of main-thread CPU in two pages, 0.5–2.5 ms (median 0.9) in nine pages after this (npm run bench,
+ * query-frames' firstCallCpuMs: V8 also optimises there what the first calls made hot); issue 10
  * asks for no query over 1 ms. Once per page, from the Ocean's constructor, whose own work takes a
  * hundred times as long.
  */
