@@ -9,10 +9,12 @@
  * weighted 0.55, 0.3 and 0.15 (foam.glsl stretches their sum over [0, 1]), and the bubbles, an
  * octave of 15 cm cells.
  * - The coarse octave is a lattice, one texel a cell (COARSE_FOAM_LATTICE): foam.glsl interpolates
- *   it smoothly itself, so the foam's outlines stay round however close the eye.
+ *   it smoothly itself, so its contours have no texel-sized facets however close the eye (a tile
+ *   of it interpolated linearly drew the patches as polygons close up).
  * - The finer octaves (their weighted sum) and the bubbles are sampled on a finer tile
- *   (FINE_FOAM_TILE), 3.8 texels to a bubble, interpolated linearly and mipmapped: over the coarse
- *   octave's 200 m the fine detail's repeat every 20 m does not show.
+ *   (FINE_FOAM_TILE), 3.8 texels to a bubble, interpolated linearly and mipmapped. Their repeat
+ *   every 20 m runs under the coarse octave's 200 m; it did not show in the storm pictures
+ *   (docs/sea-states/, docs/features/whitecaps.png).
  * Both repeat a whole number of times within FOAM_PATTERN_PERIOD, and every octave's cells within
  * its texture, so the pattern is periodic.
  */
