@@ -138,7 +138,8 @@ void main() {
   vec3 water = throughWater(environmentRadiance(refracted), refracted, absorption, deepWater, viewDepth);
   vec3 glint = sunLight * reflectance * pow(max(dot(reflected, sunDirection), 0.0), sunShininess);
   vec3 colour = reflectance * sky + (1.0 - reflectance) * water + caustic * skySunVisibility * causticColor + glint;
-  // Most of the sea has no foam: it pays for the pattern and the foam's light only where there is.
+  // Most of the sea has no foam: it pays for the foam's light only where there is (the pattern, two
+  // texture lookups, is taken above for every pixel: its fwidth needs the neighbours).
   if (vFoam > FOAM_VISIBLE) {
     float opacity = foamOpacity(vFoam, foamDetail, foamDetailPerPixel, restPerPixelX, restPerPixelY);
     if (opacity > 0.0) colour = mix(colour, foamRadiance(normal, sunDirection, sunLight, environmentRadiance(normal)), opacity);

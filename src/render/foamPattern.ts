@@ -54,6 +54,19 @@ export function latticeValue(x: number, y: number): number {
   return (((h >>> 22) ^ h) >>> 0) / 4294967295;
 }
 
+/** Cells a side of an octave over `size` metres (a whole number: the octaves are chosen so). */
+const cellsOver = (octave: FoamOctave, size: number): number => Math.round(size * octave.cellsPerMetre);
+
+/** The coarse octave's cells a side, one texel each. */
+const COARSE_CELLS = cellsOver(COARSE_FOAM_LATTICE.octave, COARSE_FOAM_LATTICE.size);
+
+/** An octave's lattice values over `cells`² cells (row j, column i at j·cells + i). */
+function latticeGrid(octave: FoamOctave, cells: number): Float32Array {
+  const lattice = new Float32Array(cells * cells);
+  for (let j = 0; j < cells; j++) for (let i = 0; i < cells; i++) lattice[j * cells + i] = latticeValue(i + octave.lattice, j);
+  return lattice;
+}
+
 /**
  * Adds `scale` × one octave of smooth value noise, periodic over `size` metres (its cells fit a
  * whole number of times), sampled at the texel centres ((i + ½), (j + ½))·size/texels of a tile,
@@ -63,9 +76,8 @@ export function latticeValue(x: number, y: number): number {
  * along z on the row: computed once each.
  */
 function addOctave(octave: FoamOctave, size: number, texels: number, scale: number, into: Float32Array): void {
-  const period = Math.round(size * octave.cellsPerMetre);
-  const lattice = new Float32Array(period * period);
-  for (let j = 0; j < period; j++) for (let i = 0; i < period; i++) lattice[j * period + i] = latticeValue(i + octave.lattice, j);
+  const period = cellsOver(octave, size);
+  const lattice = latticeGrid(octave, period);
   // Per column (and, the same numbers, per row): the cell's first corner, the next one and the smoothstep weight.
   const first = new Int32Array(texels);
   const next = new Int32Array(texels);
@@ -90,13 +102,9 @@ function addOctave(octave: FoamOctave, size: number, texels: number, scale: numb
   }
 }
 
-/** The coarse octave's lattice values (R8, one texel per cell). */
+/** The coarse octave's lattice values (R8, one texel per cell), rounded to the nearest byte. */
 export function coarseFoamLatticeBytes(): Uint8Array {
-  const { size, octave } = COARSE_FOAM_LATTICE;
-  const cells = Math.round(size * octave.cellsPerMetre);
-  const bytes = new Uint8Array(cells * cells);
-  for (let j = 0; j < cells; j++) for (let i = 0; i < cells; i++) bytes[j * cells + i] = latticeValue(i + octave.lattice, j) * 255 + 0.5;
-  return bytes;
+  return Uint8Array.from(latticeGrid(COARSE_FOAM_LATTICE.octave, COARSE_CELLS), (value) => value * 255 + 0.5);
 }
 
 /** The fine tile (RG8): R the finer octaves' weighted sum over their total weight, G the bubbles. */
@@ -125,8 +133,7 @@ let bytes: { coarse: Uint8Array; fine: Uint8Array } | null = null;
  */
 export function foamPatternTextures(): { coarse: DataTexture; fine: DataTexture } {
   bytes ??= { coarse: coarseFoamLatticeBytes(), fine: fineFoamTileBytes() };
-  const cells = Math.round(COARSE_FOAM_LATTICE.size * COARSE_FOAM_LATTICE.octave.cellsPerMetre);
-  const coarse = new DataTexture(bytes.coarse, cells, cells, RedFormat, UnsignedByteType);
+  const coarse = new DataTexture(bytes.coarse, COARSE_CELLS, COARSE_CELLS, RedFormat, UnsignedByteType);
   const fine = new DataTexture(bytes.fine, FINE_FOAM_TILE.texels, FINE_FOAM_TILE.texels, RGFormat, UnsignedByteType);
   for (const texture of [coarse, fine]) {
     texture.wrapS = texture.wrapT = RepeatWrapping;
@@ -142,9 +149,9 @@ export function foamPatternTextures(): { coarse: DataTexture; fine: DataTexture 
 /** The constants foam.glsl takes from here, as GLSL float literals (its FOAM_* defines). */
 export function foamPatternDefines(): Record<string, string> {
   const float = (value: number) => (Number.isInteger(value) ? value.toFixed(1) : String(value));
-  const { size, octave } = COARSE_FOAM_LATTICE;
+  const { octave } = COARSE_FOAM_LATTICE;
   return {
-    FOAM_COARSE_CELLS: float(Math.round(size * octave.cellsPerMetre)),
+    FOAM_COARSE_CELLS: float(COARSE_CELLS),
     FOAM_COARSE_CELLS_PER_METRE: float(octave.cellsPerMetre),
     FOAM_COARSE_WEIGHT: float(octave.weight),
     FOAM_FINE_TILE: float(FINE_FOAM_TILE.size),
