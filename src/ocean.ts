@@ -19,7 +19,7 @@ import { SkyEnvironment, sunAnglesFromDirection, type SunAngles, type SunDirecti
 import { OceanSimulation, type PathPreference, type SimulationOptions, type SimulationPath } from './layers/oceanSimulation';
 import type { LocalWaves } from './layers/localWaves';
 import { checkThreeRelease } from './fft/threeInternals';
-import { compileQueryCode, heightAt, normalAt, velocityAt } from './layers/surfaceQuery';
+import { heightAt, normalAt, velocityAt } from './layers/surfaceQuery';
 import { checkOptionNames, DisposedError, isOptionsObject, optionAliases } from './parameters/options';
 import { ParameterError, SIMULATION_OPTIONS, type SimulationParameters } from './parameters/parameters';
 import { DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ShadingChanges, type ShadingOptions } from './parameters/sceneOptions';
@@ -76,6 +76,9 @@ export type WritableNumbers = { length: number; [index: number]: number };
 
 /** The batch queries' one vector, reused (nothing is allocated per point). */
 const scratch = { x: 0, y: 0, z: 0 };
+
+/** Whether an Ocean of this page has run the queries once (Ocean.warmUpQueries). */
+let queryCodeWarm = false;
 
 /** Significant wave height (m) and peak period (s) of a sea state. */
 export interface SeaStateSummary {
@@ -145,7 +148,6 @@ export class Ocean extends Object3D<OceanEventMap> {
     );
     this.skyBackground = new SkyBackground(this.sky, { backgroundWater: this.surface.backgroundWater, deepWater: this.surface.material.uniforms.scatterColor });
     this.add(this.surface, this.skyBackground);
-    compileQueryCode();
   }
 
   /**
@@ -215,6 +217,7 @@ export class Ocean extends Object3D<OceanEventMap> {
     this.simulation.localWaves?.cameraMoved(camera.x, camera.z);
     this.simulation.update(timeSeconds);
     this.currentTime = timeSeconds;
+    if (!queryCodeWarm) this.warmUpQueries();
     const running = this.simulation.path;
     if (running !== this.runningPath) {
       const first = this.runningPath === null;
@@ -378,6 +381,26 @@ export class Ocean extends Object3D<OceanEventMap> {
     this.skyBackground.dispose();
     this.sky.dispose();
     this.simulation.dispose();
+  }
+
+  /**
+   * Once per page, at the first update of its first Ocean, unless the app queried first: asks each
+   * query once of this sea, then has the cascades forget it (FftCascade.forgetQueries). V8 then
+   * compiles the query code and learns its types here, not in the app's first query: the first
+   * heightAt took a median 1.5 ms of main-thread CPU without this, 0.1 ms with it (8 fresh pages
+   * each, N = 512, Chromium 156; issue 10 asks for no query over 1 ms). The queries read the fields
+   * the update has just made for them (fftCascade.ts): nothing is computed for them, except on the
+   * JS path without a worker, the velocities (one FFT).
+   */
+  private warmUpQueries(): void {
+    queryCodeWarm = true;
+    const cascades = this.simulation.layers;
+    if (cascades.some((cascade) => cascade.queriedYet)) return; // the app's own queries compiled it
+    const out = new Vector3();
+    this.heightAt(0, 0);
+    this.normalAt(0, 0, out);
+    this.velocityAt(0, 0, out);
+    for (const cascade of cascades) cascade.forgetQueries();
   }
 
   private checkAlive(method: string): void {

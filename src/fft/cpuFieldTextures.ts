@@ -101,6 +101,11 @@ export class CpuFieldTextures {
     return this.shown?.hasVelocities ? this.shown.forQueries : null;
   }
 
+  /** Forgets that queries asked (FftCascade.forgetQueries): the worker is not asked for velocities. */
+  forgetQueries(): void {
+    this.velocitiesWanted = false;
+  }
+
   /** From now on the fields are computed here, in the arrays the textures show. */
   private runOnMainThread(fault: string): void {
     this.fault = fault;

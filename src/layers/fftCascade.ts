@@ -173,6 +173,24 @@ export class FftCascade implements WaveLayer {
     this.predecessor = null;
   }
 
+  /** Whether queries came (queryFields) since the cascade was made, or since forgetQueries. */
+  get queriedYet(): boolean {
+    return this.everQueried;
+  }
+
+  /**
+   * Forgets the queries so far, as if none had come: no query worker is made for them, the
+   * provisional copy is freed as an unqueried cascade's is, and the JS path's worker is not asked
+   * for velocities. For the Ocean's warm-up (Ocean.warmUpQueries), whose queries are not an app's;
+   * before any query worker was made.
+   */
+  forgetQueries(): void {
+    if (this.queryWorkerTimer !== null) clearTimeout(this.queryWorkerTimer);
+    this.queryWorkerTimer = null;
+    this.queried = this.everQueried = false;
+    this.jsFieldsForQueries?.forgetQueries();
+  }
+
   /** The fields at time t, computed here on the main thread (for the foam's warm-up and the tests). */
   fieldsOnCpu(t: number): LayerFieldsOnCpu {
     this.computed ??= new FieldsComputedHere(this.spectrum);

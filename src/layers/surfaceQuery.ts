@@ -117,38 +117,6 @@ export function velocityAt<T extends { x: number; y: number; z: number }>(
 
 const velocity = { x: 0, y: 0, z: 0 };
 
-let queryCodeCompiled = false;
-
-/**
- * Runs each query once over still water (one periodic 2² layer of zeros, carried from another
- * time), so that V8 compiles the query code here and not in an app's first query. V8 compiles a
- * function at its first call: the first heightAt of a page compiled 24 of them, 9 after this (the
- * ocean's and its layers' own methods). In Chromium 156 here that first call took 1.3 and 1.9 ms
- * of main-thread CPU in two pages, 0.5–2.5 ms (median 0.9) in nine pages after this (npm run bench,
- * query-frames' firstCallCpuMs: V8 also optimises there what the first calls made hot); issue 10
- * asks for no query over 1 ms. Once per page, from the Ocean's constructor, whose own work takes a
- * hundred times as long.
- */
-export function compileQueryCode(): void {
-  if (queryCodeCompiled) return;
-  queryCodeCompiled = true;
-  const zeros = new Float32Array(4 * 2 * 2);
-  const fields: LayerQueryFields = { time: 0, resolution: 2, displacement: zeros, derivatives: zeros, velocities: () => zeros };
-  const stillWater: WaveLayer = {
-    textures: { displacement: { value: null }, derivatives: { value: null } },
-    frame: { size: 1, origin: [0, 0], periodic: true, resolution: 2 },
-    movesSideways: true,
-    update: () => {},
-    queryFields: () => fields,
-    dispose: () => {},
-  };
-  const layers = [stillWater];
-  const out = { x: 0, y: 0, z: 0 };
-  heightAt(layers, 1, 0.01, 0.3, 0.3);
-  normalAt(layers, 1, 0.01, 0.3, 0.3, out);
-  velocityAt(layers, 1, 0.01, 0.3, 0.3, out);
-}
-
 /** Adds `weight` × the velocity texels' (∂Dx/∂t, ∂h/∂t, ∂Dz/∂t) at texel coordinates (u, v). */
 function addVelocity(texels: Float32Array, n: number, u: number, v: number, weight: number): void {
   placeTaps(primary, n, u, v);

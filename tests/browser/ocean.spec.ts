@@ -204,6 +204,27 @@ for (const [path, jitter] of [['gpu', 0], ['gpu', 0.005], ['js', 0.005]] as cons
   });
 }
 
+for (const path of ['gpu', 'js'] as const) {
+  test(`the first update's warm-up queries leave no trace: no query worker, no velocities asked, until the app queries (${path} path)`, async ({ page }) => {
+    await openOcean(page);
+    const result = await page.evaluate((p) => window.ocean.warmUpLeavesNoTrace(p), path);
+    console.log(`warm-up, ${path} path: ${result.warmUpQueries} queries reached the ${result.cascades} cascades in the first update; workers ${result.workersBefore} before the app's first query, ${result.workersAfter} after; requests for velocities ${result.velocityRequestsBefore} before, ${result.velocityRequestsAfter} after; its height ${(result.heightError * 1000).toFixed(3)} mm from the exact one (RMS ${result.rms.toFixed(3)} m)`);
+    // It ran (the page's first Ocean): heightAt, normalAt and velocityAt each asked every cascade.
+    expect(result.warmUpQueries).toBeGreaterThanOrEqual(3 * result.cascades);
+    // ...and was forgotten: no cascade counts as queried, and on the GPU path no query worker was made
+    // (QUERY_WORKER_DELAY_MS after a query); the JS path's workers are its own, one per cascade, and
+    // are not asked for velocities (a third more work) until a query wants them.
+    expect(result.queriedBefore).toBe(false);
+    expect(result.workersBefore).toBe(path === 'gpu' ? 0 : result.cascades);
+    expect(result.velocityRequestsBefore).toBe(0);
+    // The app's first query then starts the query workers as before (each asked for velocities at the
+    // updates after), and is answered within 1 % of the RMS height.
+    expect(result.workersAfter).toBe(result.cascades);
+    expect(result.velocityRequestsAfter).toBeGreaterThan(0);
+    expect(result.heightError).toBeLessThan(0.01 * result.rms);
+  });
+}
+
 test('the queries read the local waves on the GPU without waiting for it: read back behind a fence, a frame or two late, then the same', async ({ page }) => {
   await openOcean(page);
   const result = await page.evaluate(() => window.ocean.localWavesQueriedOnGpu());

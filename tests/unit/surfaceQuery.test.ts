@@ -14,7 +14,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import { blendAngle, COPY_OFFSET, patchBlendUniforms } from '../../src/layers/patchBlend';
-import { compileQueryCode, heightAt, normalAt, velocityAt } from '../../src/layers/surfaceQuery';
+import { heightAt, normalAt, velocityAt } from '../../src/layers/surfaceQuery';
 import { CpuWaveFields } from '../../src/fft/cpuWaveFields';
 import { validateParameters } from '../../src/parameters/parameters';
 import { GRAVITY } from '../../src/spectrum/dispersion';
@@ -302,25 +302,6 @@ describe('heightAt over a real sea', () => {
     console.log(`heightAt over 200 particles of a 20 m/s sea: worst ${(worst * 1e6).toFixed(2)} µm off (mean |h| ${(heights / 200).toFixed(2)} m)`);
     expect(heights / 200).toBeGreaterThan(0.5); // a real storm sea (m)
     expect(worst).toBeLessThan(1e-5);
-  });
-});
-
-describe('compileQueryCode (the queries run once over still water, for V8 to compile them)', () => {
-  it('leaves the answers of later queries over a real sea as they were', () => {
-    const parameters = validateParameters({ resolution: 64, windSpeed: 12, seed: 3 });
-    const layers = realSeaLayers(parameters, 0.02);
-    const answers = () => {
-      const [normal, velocity] = [{ x: 0, y: 0, z: 0 }, { x: 0, y: 0, z: 0 }];
-      normalAt(layers, 1.1, 7, 3.2, -4.1, normal);
-      velocityAt(layers, 1.1, 7, 3.2, -4.1, velocity);
-      return [heightAt(layers, 1.1, 7, 3.2, -4.1), normal.x, normal.y, normal.z, velocity.x, velocity.y, velocity.z];
-    };
-    const before = answers();
-    compileQueryCode();
-    expect(answers()).toEqual(before);
-    // A real answer: the sea moves there, and its normal is not straight up.
-    expect(Math.abs(before[1])).toBeGreaterThan(1e-3);
-    expect(Math.abs(before[5])).toBeGreaterThan(1e-3);
   });
 });
 

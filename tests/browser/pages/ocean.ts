@@ -37,7 +37,7 @@ import { OceanSimulation } from '../../../src/layers/oceanSimulation';
 import { blendAngle, COPY_OFFSET, patchBlendUniforms } from '../../../src/layers/patchBlend';
 import { heightAt, normalAt } from '../../../src/layers/surfaceQuery';
 import type { WaveLayer } from '../../../src/layers/waveLayer';
-import type { FftCascade } from '../../../src/layers/fftCascade';
+import { FftCascade, QUERY_WORKER_DELAY_MS } from '../../../src/layers/fftCascade';
 import type { SimulationParameters } from '../../../src/parameters/parameters';
 
 const query = new URLSearchParams(location.search);
@@ -476,6 +476,69 @@ const harness = {
     return results;
   },
   /**
+   * The page's first Ocean, whose first update runs the queries once and has its cascades forget
+   * them (Ocean.warmUpQueries): frames without queries for QUERY_WORKER_DELAY_MS + 0.35 s, then a
+   * query and as long again. Returns how many queries reached the cascades in the first update
+   * (FftCascade.queryFields counted), whether any cascade counted as queried before the app's
+   * query, the Workers made and the requests for fields with velocities sent to workers before and
+   * after it (Worker counted), and the first answer against the height from fields computed for the
+   * time asked.
+   */
+  async warmUpLeavesNoTrace(path: 'gpu' | 'js'): Promise<{
+    warmUpQueries: number;
+    cascades: number;
+    queriedBefore: boolean;
+    workersBefore: number;
+    workersAfter: number;
+    velocityRequestsBefore: number;
+    velocityRequestsAfter: number;
+    heightError: number;
+    rms: number;
+  }> {
+    const RealWorker = window.Worker;
+    let [workersMade, velocityRequests] = [0, 0];
+    window.Worker = class extends RealWorker {
+      constructor(url: string | URL, options?: WorkerOptions) {
+        super(url, options);
+        workersMade++;
+      }
+      override postMessage(message: unknown, transfer?: Transferable[] | StructuredSerializeOptions): void {
+        if ((message as { type?: string; velocities?: boolean }).velocities === true) velocityRequests++;
+        super.postMessage(message, transfer as Transferable[]);
+      }
+    };
+    const queryFields = FftCascade.prototype.queryFields;
+    let queries = 0;
+    FftCascade.prototype.queryFields = function (this: FftCascade, t: number) {
+      queries++;
+      return queryFields.call(this, t);
+    };
+    const ocean = new Ocean(renderer, { path, worker: true, localWaves: false, seed: 3 });
+    try {
+      const cascades = ocean.simulation.layers;
+      let t = 10;
+      const frames = async () => {
+        for (const until = performance.now() + QUERY_WORKER_DELAY_MS + 350; performance.now() < until; ) {
+          ocean.update((t += 1 / 60));
+          await new Promise((resolve) => setTimeout(resolve, 30));
+        }
+      };
+      ocean.update(t);
+      const warmUpQueries = queries;
+      await frames();
+      const queriedBefore = cascades.some((cascade) => cascade.queriedYet);
+      const [workersBefore, velocityRequestsBefore] = [workersMade, velocityRequests];
+      const height = ocean.heightAt(3, -4);
+      const heightError = Math.abs(height - heightAt(exactLayers(cascades), ocean.parameters.choppiness, t, 3, -4));
+      await frames();
+      return { warmUpQueries, cascades: cascades.length, queriedBefore, workersBefore, workersAfter: workersMade, velocityRequestsBefore, velocityRequestsAfter: velocityRequests, heightError, rms: ocean.heightRms };
+    } finally {
+      ocean.dispose();
+      window.Worker = RealWorker;
+      FftCascade.prototype.queryFields = queryFields;
+    }
+  },
+  /**
    * The queries in a frame loop as an app makes them: update, heightAt and normalAt at 25 points,
    * then a pause for the workers (a frame of a slow renderer). On the GPU path the queries read the
    * query workers' fields, on the JS path the JS workers' (fftCascade.ts). The steps are 1/60 s,
@@ -504,17 +567,8 @@ const harness = {
   }> {
     const ocean = new Ocean(renderer, { path, worker: true, localWaves: false, seed: 3 });
     const { choppiness } = ocean.parameters;
-    // The same cascades, each answering with its fields computed here for the time asked.
-    const exactOf = (cascades: readonly FftCascade[]): WaveLayer[] => cascades.map((cascade) => ({
-      textures: cascade.textures,
-      frame: cascade.frame,
-      movesSideways: true,
-      update: () => {},
-      dispose: () => {},
-      queryFields: (t: number) => ({ time: t, resolution: cascade.frame.resolution, ...cascade.fieldsOnCpu(t), velocities: () => new Float32Array(0) }),
-    }));
     let cascades = ocean.simulation.layers;
-    let exact = exactOf(cascades);
+    let exact = exactLayers(cascades);
     const points = Array.from({ length: 25 }, (_, p) => [(p % 5) * 23.1 - 40, Math.floor(p / 5) * 19.7 - 35]);
     const normal = new Vector3();
     const computedHere = () => cascades.reduce((sum, cascade) => sum + cascade.fieldsComputedHere, 0);
@@ -562,7 +616,7 @@ const harness = {
       const computedAfterWarmUp = computedHere() - before;
       ocean.setParameters({ windSpeed: 14 });
       cascades = ocean.simulation.layers;
-      exact = exactOf(cascades);
+      exact = exactLayers(cascades);
       const [worstAfterChange, rmsAfterChange] = await compared(3);
       return {
         warmUpFrames,
@@ -963,4 +1017,16 @@ declare global {
   }
 }
 window.ocean = harness;
+/** The same cascades, each answering the queries with its fields computed here for the time asked. */
+function exactLayers(cascades: readonly FftCascade[]): WaveLayer[] {
+  return cascades.map((cascade) => ({
+    textures: cascade.textures,
+    frame: cascade.frame,
+    movesSideways: true,
+    update: () => {},
+    dispose: () => {},
+    queryFields: (t: number) => ({ time: t, resolution: cascade.frame.resolution, ...cascade.fieldsOnCpu(t), velocities: () => new Float32Array(0) }),
+  }));
+}
+
 document.title = 'ready';
