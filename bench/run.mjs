@@ -819,6 +819,7 @@ async function browserBenchmarks(results) {
           controlCallsOver1Ms,
           controlLargestMs: Math.max(...run.controlMs),
           controlCallsOver1MsCpu: over1Ms(controlCpuMs),
+          controlCallsOver1MsCpuAt: controlCpuMs.flatMap((ms, i) => (ms > 1 ? [[Math.floor(i / 10), ms]] : [])), // [frame, CPU ms]
           computedHereAfterWarmUp: run.computedHere,
           firstFrameMs: run.firstFrameMs,
           target: 'no call over 1 ms',
