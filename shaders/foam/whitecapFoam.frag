@@ -17,7 +17,7 @@ uniform float jacobianFull;   // FOAM_J_FULL
 uniform float decay;
 uniform float gain;
 
-layout(location = 0) out vec4 foam;  // (coverage, 0, 0, 1)
+layout(location = 0) out vec4 foam;  // (coverage, 0, 0, 1): the red-only target keeps the coverage
 
 ivec2 nearestTexel(ivec2 texel, float scale, int resolution) {
   return ivec2(floor(vec2(texel) * scale + 0.5)) % resolution;

@@ -41,16 +41,21 @@ vec2 foamPattern(vec2 restPoint) {
   return vec2(smoothstep(0.2, 0.8, FOAM_COARSE_WEIGHT * coarse + FOAM_FINE_WEIGHT * fine.r), fine.g);
 }
 
+// How much of the pattern shows where the rest point changes by restPerPixelX/Y to the next pixel
+// across and down (dFdx, dFdy): 1 near, 0 where a pixel spans more than the pattern's finest
+// cells, whose pattern would alias into speckle.
+float foamPatternShown(vec2 restPerPixelX, vec2 restPerPixelY) {
+  vec2 footprint = abs(restPerPixelX) + abs(restPerPixelY);  // fwidth(restPoint): metres per pixel on the sea
+  return 1.0 - smoothstep(0.15, 0.6, max(footprint.x, footprint.y));
+}
+
 // Opacity of the foam for a coverage in [0, 1], at a rest point whose pattern is `pattern`
 // (foamPattern) and changes by `patternPerPixel` to the next pixel (fwidth): inside a patch,
-// thinner and thicker bubbles (cells of 15 cm) let some water through. Where a pixel spans more
-// than the pattern's finest cells the pattern would alias into speckle: it fades into its average
-// there, the coverage times the bubbles' mean opacity. restPerPixelX/Y are the rest point's change
-// to the next pixel across and down (dFdx, dFdy).
-float foamOpacity(float coverage, vec2 pattern, float patternPerPixel, vec2 restPerPixelX, vec2 restPerPixelY) {
+// thinner and thicker bubbles (cells of 15 cm) let some water through. Where the pattern shows
+// less (`detail`, foamPatternShown) it fades into its average, the coverage times the bubbles'
+// mean opacity.
+float foamOpacity(float coverage, vec2 pattern, float patternPerPixel, float detail) {
   const float meanBubbles = 0.825;
-  vec2 footprint = abs(restPerPixelX) + abs(restPerPixelY);  // fwidth(restPoint): metres per pixel on the sea
-  float detail = 1.0 - smoothstep(0.15, 0.6, max(footprint.x, footprint.y));
   if (detail <= 0.0) return meanBubbles * coverage;
   // The patch's edge spread over about a pixel, so that it does not crawl as the sea moves.
   float softness = clamp(patternPerPixel, 0.04, 0.2);

@@ -22,9 +22,9 @@ varying float vCrossDerivative;
 // metres and are interpolated.
 varying vec2 vBlend;
 varying vec2 vBlendSlope;
-// The foam coverage, per vertex at the vertex's mip level (the foam texels are as large as the
-// largest layer's, metres wide: the vertices are as dense as that near the eye, and far away the
-// mip level averages it anyway), so the fragment stage does not fetch it for every pixel.
+// The foam coverage, per vertex at the vertex's mip level, for the far sea (the fragment stage
+// takes its own where the foam's pattern shows, ocean.frag): far away a pixel spans metres and
+// the mip level averages it.
 varying float vFoam;
 varying vec3 vFromEye;  // the displaced point from the eye, metres
 // The rest point (x, z) from the eye's. centroid: with multisampling, a pixel only partly covered by

@@ -15,6 +15,7 @@ import {
   NearestFilter,
   OrthographicCamera,
   RepeatWrapping,
+  RedFormat,
   RGBAFormat,
   ShaderMaterial,
   WebGLRenderTarget,
@@ -78,21 +79,23 @@ export function runPasses(renderer: WebGLRenderer, passes: () => void): void {
 }
 
 /**
- * A square RGBA float target whose `count` textures a surface samples as periodic fields: REPEAT
+ * A square float target whose `count` textures a surface samples as periodic fields: REPEAT
  * wrapping, and where the type filters linearly, linear filtering with mipmaps made after each
- * pass (float32 filters only with OES_texture_float_linear; half floats always do).
+ * pass (float32 filters only with OES_texture_float_linear; half floats always do). RGBA, or
+ * red only for a field of one number (a quarter of the texels' bytes for each lookup to read).
  */
 export function periodicFieldTarget(
   renderer: WebGLRenderer,
   size: number,
   type: typeof FloatType | typeof HalfFloatType,
   count = 1,
+  format: typeof RGBAFormat | typeof RedFormat = RGBAFormat,
 ): WebGLRenderTarget {
   const filterable = type === HalfFloatType || renderer.extensions.has('OES_texture_float_linear');
   return new WebGLRenderTarget(size, size, {
     count,
     type,
-    format: RGBAFormat,
+    format,
     depthBuffer: false,
     wrapS: RepeatWrapping,
     wrapT: RepeatWrapping,

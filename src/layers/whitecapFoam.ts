@@ -122,7 +122,8 @@ class GpuFoam {
     type: typeof FloatType | typeof HalfFloatType,
   ) {
     const m = frame.resolution;
-    this.targets = [periodicFieldTarget(renderer, m, type), periodicFieldTarget(renderer, m, type)];
+    // Red only: the surface reads the coverage for every pixel (ocean.frag).
+    this.targets = [periodicFieldTarget(renderer, m, type, 1, RedFormat), periodicFieldTarget(renderer, m, type, 1, RedFormat)];
     this.targets.forEach((t) => (t.texture.name = 'foam'));
     this.texture = { value: this.targets[0].texture };
     this.material = fullscreenMaterial(withLayerCount(shaderSource('foam/whitecapFoam.frag'), cascades.length), {
@@ -153,10 +154,9 @@ class GpuFoam {
   coverageOnCpu(): Float32Array {
     const target = this.targets.find((t) => t.texture === this.texture.value)!;
     const m = target.width;
-    const texels = target.texture.type === HalfFloatType ? new Uint16Array(4 * m * m) : new Float32Array(4 * m * m);
+    const texels = target.texture.type === HalfFloatType ? new Uint16Array(m * m) : new Float32Array(m * m);
     this.renderer.readRenderTargetPixels(target, 0, 0, m, m, texels);
-    const toFloat = texels instanceof Uint16Array ? DataUtils.fromHalfFloat : (v: number) => v;
-    return Float32Array.from({ length: m * m }, (_, i) => toFloat(texels[4 * i]));
+    return texels instanceof Uint16Array ? Float32Array.from(texels, DataUtils.fromHalfFloat) : texels;
   }
 
   /** The pass, from the target shown to the other one, which is then shown. */
