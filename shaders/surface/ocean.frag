@@ -138,12 +138,11 @@ void main() {
   vec3 water = throughWater(environmentRadiance(refracted), refracted, absorption, deepWater, viewDepth);
   vec3 glint = sunLight * reflectance * pow(max(dot(reflected, sunDirection), 0.0), sunShininess);
   vec3 colour = reflectance * sky + (1.0 - reflectance) * water + caustic * skySunVisibility * causticColor + glint;
-  // The foam coverage. Where its pattern shows, for each pixel: two copies like the largest layer,
-  // with weights cos²θ + sin²θ = 1 (the vertex stage's, interpolated linearly over triangles whose
-  // cells are as large as the coverage's texels, ended a patch in a triangle's straight edge).
-  // Farther, the vertex stage's, at the vertex's mip level.
+  // The foam coverage: where its pattern shows, read for each pixel (the vertex stage's,
+  // interpolated linearly over triangles whose cells are as large as the coverage's texels, ended a
+  // patch in a triangle's straight edge); farther, the vertex stage's, at the vertex's mip level.
   float foamShown = foamPatternShown(restPerPixelX, restPerPixelY);
-  float pixelFoam = vBlend.x * vBlend.x * texture(tFoam, largestUv).r + vBlend.y * vBlend.y * texture(tFoam, largestUv + copyOffset).r;
+  float pixelFoam = blendedFoam(vBlend, texture(tFoam, largestUv).r, texture(tFoam, largestUv + copyOffset).r);
   float foamCoverage = mix(vFoam, pixelFoam, foamShown);
   // Most of the sea has no foam: it pays for the foam's light only where there is (the pattern, two
   // texture lookups, is taken above for every pixel: its fwidth needs the neighbours).

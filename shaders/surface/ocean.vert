@@ -66,9 +66,8 @@ void main() {
   vec4 copy = textureLod(tLayerDisplacement[LAYER_COUNT - 1], vLayerUv[LAYER_COUNT - 1] + copyOffset, largestLod);
   displacement += (blend.x - 1.0) * first + blend.y * copy;
   vBlend = blend.xy;
-  // Two copies like the largest layer, with weights cos²θ + sin²θ = 1.
-  vFoam = blend.x * blend.x * textureLod(tFoam, vLayerUv[LAYER_COUNT - 1], largestLod).r +
-          blend.y * blend.y * textureLod(tFoam, vLayerUv[LAYER_COUNT - 1] + copyOffset, largestLod).r;
+  vFoam = blendedFoam(blend.xy, textureLod(tFoam, vLayerUv[LAYER_COUNT - 1], largestLod).r,
+                      textureLod(tFoam, vLayerUv[LAYER_COUNT - 1] + copyOffset, largestLod).r);
   vBlendSlope = (blend.x * copy.y - blend.y * first.y) * blend.zw;
   displacement.xzw *= choppiness;
   vCrossDerivative = displacement.w;

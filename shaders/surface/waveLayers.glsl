@@ -32,3 +32,9 @@ vec4 blendWeights(vec2 fromEye) {
   }
   return vec4(cos(theta), sin(theta), gradient);
 }
+
+// The foam coverage from its two copies' values at x and x + o (the largest layer's patch), with
+// `blend` = (cos θ, sin θ): weights cos²θ + sin²θ = 1, so a uniform coverage stays itself.
+float blendedFoam(vec2 blend, float first, float copy) {
+  return blend.x * blend.x * first + blend.y * blend.y * copy;
+}

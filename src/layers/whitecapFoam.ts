@@ -123,7 +123,8 @@ class GpuFoam {
   ) {
     const m = frame.resolution;
     // Red only: the surface reads the coverage for every pixel (ocean.frag).
-    this.targets = [periodicFieldTarget(renderer, m, type, 1, RedFormat), periodicFieldTarget(renderer, m, type, 1, RedFormat)];
+    const target = () => periodicFieldTarget(renderer, m, type, 1, RedFormat);
+    this.targets = [target(), target()];
     this.targets.forEach((t) => (t.texture.name = 'foam'));
     this.texture = { value: this.targets[0].texture };
     this.material = fullscreenMaterial(withLayerCount(shaderSource('foam/whitecapFoam.frag'), cascades.length), {
