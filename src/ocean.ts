@@ -18,7 +18,7 @@ import { SkyBackground } from './render/skyBackground';
 import { SkyEnvironment, sunAnglesFromDirection, type SunAngles, type SunDirection } from './render/skyEnvironment';
 import { OceanSimulation, type PathPreference, type SimulationOptions, type SimulationPath } from './layers/oceanSimulation';
 import type { LocalWaves } from './layers/localWaves';
-import { checkThreeRelease } from './fft/threeInternals';
+import { checkThreeRelease, checkWebGLRenderer } from './fft/threeInternals';
 import { heightAt, normalAt, velocityAt } from './layers/surfaceQuery';
 import { checkOptionNames, DisposedError, isOptionsObject, optionAliases } from './parameters/options';
 import { ParameterError, SIMULATION_OPTIONS, type SimulationParameters } from './parameters/parameters';
@@ -122,6 +122,7 @@ export class Ocean extends Object3D<OceanEventMap> {
   ) {
     super();
     checkThreeRelease();
+    checkWebGLRenderer(renderer);
     this.name = 'Ocean';
     checkOptionNames(options, OCEAN_OPTION_KEYS, 'options', { aliases: SHADING_ALIASES, allowed: 'an object of options, such as { windSpeed: 12 }' });
     const simulationParameters = pick(options, SIMULATION_KEYS);

@@ -49,7 +49,7 @@ import { UnsupportedError } from '../parameters/options';
 import { fillPhaseTable, PHASE_TABLE_SIZE } from '../spectrum/dispersion';
 import { largestFrequency, type InitialSpectrum } from '../spectrum/initialSpectrum';
 import { FullscreenPass, fullscreenMaterial, periodicFieldTarget, runPasses } from './fullscreenPass';
-import { checkThreeInternals, glTextureOf, useExternalFramebuffer } from './threeInternals';
+import { checkThreeInternals, glTextureOf, missingThreeInternals, useExternalFramebuffer } from './threeInternals';
 import { FIELD_TEXTURES } from './waveFieldLayout';
 
 export type GpuPrecision = 'float32' | 'float16';
@@ -106,6 +106,8 @@ export function gpuSupport(renderer: WebGLRenderer): { precision: GpuPrecision |
   const drawBuffers = maxDrawBuffers.get(gl) ?? (gl.getParameter(gl.MAX_DRAW_BUFFERS) as number);
   maxDrawBuffers.set(gl, drawBuffers);
   if (drawBuffers < FFT_DRAW_BUFFERS) return { precision: null, reason: `MAX_DRAW_BUFFERS is ${drawBuffers} (the GPU FFT writes ${FFT_DRAW_BUFFERS} at once)` };
+  const missingInternals = missingThreeInternals(renderer);
+  if (missingInternals !== null) return { precision: null, reason: missingInternals };
   if (renderer.extensions.has('EXT_color_buffer_float')) return { precision: 'float32', reason: '' };
   if (renderer.extensions.has('EXT_color_buffer_half_float')) return { precision: 'float16', reason: 'no EXT_color_buffer_float: half floats' };
   return { precision: null, reason: 'no float render targets (EXT_color_buffer_float, EXT_color_buffer_half_float)' };

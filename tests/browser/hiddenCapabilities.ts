@@ -5,10 +5,13 @@ import type { Page } from '@playwright/test';
  * MAX_DRAW_BUFFERS (WebGL2 guarantees 4), extensions that are missing, or framebuffers with more
  * than one colour attachment reported incomplete (a driver that cannot render to that combination:
  * FRAMEBUFFER_UNSUPPORTED). The context itself is the real one; only what it reports is changed.
+ * `rendererMethods` takes methods out of every WebGLRenderer the page makes, as a three.js release
+ * without those internals would have them (three.js assigns them in the constructor: a setter on
+ * Object.prototype swallows the assignment).
  */
 export async function withHiddenCapabilities(
   page: Page,
-  hidden: { maxDrawBuffers?: number; extensions?: readonly string[]; layeredFramebuffers?: false },
+  hidden: { maxDrawBuffers?: number; extensions?: readonly string[]; layeredFramebuffers?: false; rendererMethods?: readonly string[] },
 ): Promise<void> {
   await page.addInitScript((hidden) => {
     const prototype = WebGL2RenderingContext.prototype;
@@ -32,6 +35,9 @@ export async function withHiddenCapabilities(
         const second = this.getFramebufferAttachmentParameter(target, this.COLOR_ATTACHMENT1, this.FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE);
         return second !== this.NONE ? this.FRAMEBUFFER_UNSUPPORTED : checkFramebufferStatus.call(this, target);
       };
+    }
+    for (const method of hidden.rendererMethods ?? []) {
+      Object.defineProperty(Object.prototype, method, { get: () => undefined, set: () => {}, configurable: true });
     }
   }, hidden);
 }

@@ -612,3 +612,28 @@ test.describe('a JS worker that fails', () => {
     });
   }
 });
+
+test.describe('a renderer the Ocean cannot drive', () => {
+  test("three.js's WebGPURenderer (its WebGL2 backend here) gets an UnsupportedError naming it, not a TypeError from inside three.js", async ({ page }) => {
+    await openOcean(page, 160, 90);
+    const thrown = await page.evaluate(async () => {
+      // From the dev server, as a user's bundler would serve them.
+      const webgpu = '/node_modules/three/build/three.webgpu.js';
+      const oceanModule = '/src/ocean.ts';
+      const { WebGPURenderer } = (await import(webgpu)) as typeof import('three/webgpu');
+      const { Ocean } = (await import(oceanModule)) as typeof import('../../src/ocean');
+      const renderer = new WebGPURenderer({ forceWebGL: true });
+      await renderer.init();
+      try {
+        new Ocean(renderer as never);
+        return null;
+      } catch (error) {
+        return { name: (error as Error).name, message: (error as Error).message };
+      } finally {
+        renderer.dispose();
+      }
+    });
+    expect(thrown?.name).toBe('UnsupportedError');
+    expect(thrown?.message).toContain("this is three.js's WebGPURenderer, which it does not drive yet");
+  });
+});

@@ -1,14 +1,18 @@
 /**
  * The three.js releases the package claims are the ones it checks at run time and the ones CI
- * tests: package.json's peer range is THREE_PEER_RANGE, the devDependency the browser suite runs is
- * its newest release, and a release outside it gets an UnsupportedError naming it and the range
- * (from the check itself, and from constructing an Ocean, before the renderer is touched).
+ * tests: package.json's peer range is THREE_PEER_RANGE, open above; the devDependency the browser
+ * suite runs is the newest tested release; a release older than the range gets an UnsupportedError
+ * naming it and the range (from the check itself, and from constructing an Ocean, before the
+ * renderer is touched); a newer one runs after one console note. Whether the GPU FFT may run on it
+ * is decided by its internals alone (missingThreeInternals), and a renderer that is not a
+ * WebGLRenderer is refused by name rather than failing inside three.js.
  */
 import { readFileSync } from 'node:fs';
 import type { WebGLRenderer } from 'three';
 import { afterEach, describe, expect, it, vi } from 'vitest';
-import { checkThreeRelease, SUPPORTED_THREE_RELEASES, THREE_PEER_RANGE } from '../../src/fft/threeInternals';
+import { checkThreeInternals, checkThreeRelease, checkWebGLRenderer, missingThreeInternals, SUPPORTED_THREE_RELEASES, THREE_PEER_RANGE } from '../../src/fft/threeInternals';
 import { UnsupportedError } from '../../src/parameters/options';
+import { Ocean } from '../../src/ocean';
 
 const packageJson = JSON.parse(readFileSync(new URL('../../package.json', import.meta.url), 'utf8')) as {
   peerDependencies: Record<string, string>;
@@ -16,26 +20,40 @@ const packageJson = JSON.parse(readFileSync(new URL('../../package.json', import
 };
 
 describe('the supported three.js releases', () => {
-  it('are package.json\'s peer range', () => {
+  it("are package.json's peer range, with no upper bound", () => {
     expect(packageJson.peerDependencies.three).toBe(THREE_PEER_RANGE);
+    expect(THREE_PEER_RANGE).toBe('>=0.180.0');
   });
 
-  it('end with the release the browser suite runs (the devDependency)', () => {
-    expect(packageJson.devDependencies.three).toMatch(new RegExp(`^0\\.${SUPPORTED_THREE_RELEASES.newest}\\.\\d+$`));
+  it('name as newest tested the release the browser suite runs (the devDependency)', () => {
+    expect(packageJson.devDependencies.three).toMatch(new RegExp(`^0\\.${SUPPORTED_THREE_RELEASES.newestTested}\\.\\d+$`));
   });
 });
 
 describe('checkThreeRelease', () => {
-  it('accepts the oldest and the newest supported release and those between', () => {
+  afterEach(() => vi.restoreAllMocks());
+
+  it('accepts the oldest and the newest tested release and those between, silently', () => {
+    const info = vi.spyOn(console, 'info').mockImplementation(() => {});
     for (const revision of ['180', '183', '187']) expect(() => checkThreeRelease(revision)).not.toThrow();
+    expect(info).not.toHaveBeenCalled();
   });
 
-  it('refuses a release outside the range with an UnsupportedError naming it and the range', () => {
-    for (const revision of ['160', '176', '179', '188', '188dev', '1000', 'r', '']) {
+  it('refuses a release older than the range with an UnsupportedError naming it and the range', () => {
+    for (const revision of ['160', '176', '179', '179dev', 'r', '']) {
       const check = () => checkThreeRelease(revision);
       expect(check).toThrow(UnsupportedError);
-      expect(check).toThrow(`three-fft-ocean supports three.js r180 to r187 (>=0.180.0 <0.188.0), not r${revision}`);
+      expect(check).toThrow(`three-fft-ocean supports three.js r180 and newer (>=0.180.0), not r${revision}`);
     }
+  });
+
+  it('runs a release newer than the newest tested, with one console note per release', () => {
+    const info = vi.spyOn(console, 'info').mockImplementation(() => {});
+    for (const revision of ['188', '188dev', '1000', '188']) expect(() => checkThreeRelease(revision)).not.toThrow();
+    expect(info).toHaveBeenCalledTimes(3);
+    expect(info.mock.calls[0][0]).toBe(
+      "three-fft-ocean: three.js r188 is newer than the newest release tested (r187); running, with the GPU FFT where three.js's internals still fit it.",
+    );
   });
 
   it('accepts the three.js these tests run', () => {
@@ -43,21 +61,68 @@ describe('checkThreeRelease', () => {
   });
 });
 
-describe('an Ocean on a three.js outside the range', () => {
+describe("three.js's internals the GPU FFT reaches into", () => {
+  const complete = () => ({ initRenderTarget() {}, setRenderTargetFramebuffer() {}, properties: { get: () => ({}) } });
+
+  it('are all there: nothing missing', () => {
+    expect(missingThreeInternals(complete() as never)).toBeNull();
+    expect(() => checkThreeInternals(complete() as never)).not.toThrow();
+  });
+
+  for (const gone of ['initRenderTarget', 'setRenderTargetFramebuffer', 'properties'] as const) {
+    it(`without ${gone}: the reason names it, and the check throws an UnsupportedError with it`, () => {
+      const renderer: Record<string, unknown> = complete();
+      delete renderer[gone];
+      const reason = missingThreeInternals(renderer as never);
+      expect(reason).toContain(`WebGLRenderer.${gone}`);
+      expect(() => checkThreeInternals(renderer as never)).toThrow(UnsupportedError);
+      expect(() => checkThreeInternals(renderer as never)).toThrow(reason!);
+    });
+  }
+});
+
+describe('checkWebGLRenderer', () => {
+  it("accepts three.js's WebGLRenderer by its flag", () => {
+    expect(() => checkWebGLRenderer({ isWebGLRenderer: true })).not.toThrow();
+  });
+
+  it("refuses three.js's WebGPURenderer (its WebGPU and its WebGL2 backend alike) by name", () => {
+    for (const renderer of [{ isRenderer: true, isWebGPURenderer: true }, { isRenderer: true }]) {
+      const check = () => checkWebGLRenderer(renderer);
+      expect(check).toThrow(UnsupportedError);
+      expect(check).toThrow("this is three.js's WebGPURenderer, which it does not drive yet");
+    }
+  });
+
+  it('refuses anything else, naming the parameter', () => {
+    for (const renderer of [undefined, null, {}, 12, 'webgl']) {
+      expect(() => checkWebGLRenderer(renderer)).toThrow("renderer: three-fft-ocean's Ocean draws with three.js's WebGLRenderer");
+      expect(() => checkWebGLRenderer(renderer)).toThrow('not a three.js renderer');
+    }
+  });
+});
+
+describe('an Ocean on a three.js older than the range', () => {
   afterEach(() => {
     vi.doUnmock('three');
     vi.resetModules();
   });
 
-  for (const revision of ['179', '188']) {
-    it(`throws the UnsupportedError for r${revision} before it touches the renderer`, async () => {
-      vi.resetModules();
-      vi.doMock('three', async (importOriginal) => ({ ...(await importOriginal<typeof import('three')>()), REVISION: revision }));
-      const { Ocean } = await import('../../src/ocean');
-      const { UnsupportedError: ErrorOfThisImport } = await import('../../src/parameters/options');
-      const construct = () => new Ocean({} as WebGLRenderer);
-      expect(construct).toThrow(ErrorOfThisImport);
-      expect(construct).toThrow(`not r${revision}`);
-    });
-  }
+  it('throws the UnsupportedError for r179 before it touches the renderer', async () => {
+    vi.resetModules();
+    vi.doMock('three', async (importOriginal) => ({ ...(await importOriginal<typeof import('three')>()), REVISION: '179' }));
+    const { Ocean } = await import('../../src/ocean');
+    const { UnsupportedError: ErrorOfThisImport } = await import('../../src/parameters/options');
+    const construct = () => new Ocean({} as WebGLRenderer);
+    expect(construct).toThrow(ErrorOfThisImport);
+    expect(construct).toThrow('not r179');
+  });
+});
+
+describe('an Ocean given a renderer it cannot drive', () => {
+  it('throws an UnsupportedError naming the renderer, not a TypeError from inside three.js', () => {
+    const construct = () => new Ocean({ isRenderer: true, isWebGPURenderer: true } as unknown as WebGLRenderer);
+    expect(construct).toThrow(UnsupportedError);
+    expect(construct).toThrow("three.js's WebGPURenderer");
+  });
 });
