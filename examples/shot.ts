@@ -320,7 +320,7 @@ async function start(): Promise<void> {
   // on the water of the first frame's time, as the app sets them down on the time it loads at.
   const buoys = state.buoys ? new Buoys(ocean) : null;
   if (buoys) {
-    ocean.update(state.t);
+    ocean.update(state.t, camera);
     buoys.dropAhead(camera);
     scene.add(buoys);
   }

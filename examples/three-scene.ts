@@ -90,7 +90,7 @@ const start = performance.now();
 let frames = 0;
 renderer.setAnimationLoop(() => {
   const t = fixedTime ?? (performance.now() - start) / 1000;
-  ocean.update(t);
+  ocean.update(t, camera);
   floatCrate(t);
   controls.update();
   // The far plane must reach the surface's far edge (it moves with the camera's height).

@@ -19,7 +19,7 @@ export { phillips } from './spectrum/phillips';
 export { seaState, waveNumberSpectrum, frequencySpectrum } from './spectrum/seaState';
 export { SEA_PRESETS, beaufortPreset } from './spectrum/presets';
 export { cascadeBands, type CascadeBand } from './spectrum/cascadeBands';
-export type { WaveLayer, LayerFrame, LayerFieldsOnCpu } from './layers/waveLayer';
+export { orderLayers, type WaveLayer, type LayerFrame, type LayerFieldsOnCpu, type LayerQueryFields } from './layers/waveLayer';
 export { FftCascade, type FftBackend } from './layers/fftCascade';
 export { FloatingBody, SEA_WATER_DENSITY, type FloatingBodyOptions, type WaterSurface } from './layers/floatingBody';
 export { WhitecapFoam, type FoamSettings } from './layers/whitecapFoam';

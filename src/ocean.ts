@@ -1,10 +1,10 @@
 /**
- * Ocean: the whole sea as one three.js Object3D — simulation (src/sim), sky (SkyEnvironment) and
+ * Ocean: the whole sea as one three.js Object3D — simulation (OceanSimulation), sky (SkyEnvironment) and
  * surface (OceanSurface) — for any scene.
  *
  *   const ocean = new Ocean(renderer, { windSpeed: 12, seed: 7 });
  *   scene.add(ocean);                    // the sea and, behind everything, its sky
- *   renderer.setAnimationLoop((ms) => { ocean.update(ms / 1000); renderer.render(scene, camera); });
+ *   renderer.setAnimationLoop((ms) => { ocean.update(ms / 1000, camera); renderer.render(scene, camera); });
  *
  * The sea is the plane y = 0 of world space; give the camera a far plane of at least
  * ocean.horizonDistanceFor(camera's height) (several thousand heights) so the surface reaches the
@@ -18,6 +18,7 @@ import { SkyBackground } from './render/skyBackground';
 import { SkyEnvironment, sunAnglesFromDirection, type SunAngles, type SunDirection } from './render/skyEnvironment';
 import { OceanSimulation, type PathPreference, type SimulationOptions, type SimulationPath } from './layers/oceanSimulation';
 import type { LocalWaves } from './layers/localWaves';
+import type { WaveLayer } from './layers/waveLayer';
 import { checkThreeRelease, checkWebGLRenderer } from './fft/threeInternals';
 import { heightAt, normalAt, velocityAt } from './layers/surfaceQuery';
 import { checkOptionNames, DisposedError, isOptionsObject, optionAliases } from './parameters/options';
@@ -76,6 +77,9 @@ export type WritableNumbers = { length: number; [index: number]: number };
 
 /** The batch queries' one vector, reused (nothing is allocated per point). */
 const scratch = { x: 0, y: 0, z: 0 };
+
+/** Where update's camera is in the world, reused. */
+const viewerPosition = new Vector3();
 
 /** Whether an Ocean of this page has run the queries once (Ocean.warmUpQueries). */
 let queryCodeWarm = false;
@@ -139,11 +143,11 @@ export class Ocean extends Object3D<OceanEventMap> {
       { environment: this.sky.environment, sunDirection: this.sky.skyUniforms.skySunDirection, daylight: this.sky.skyUniforms },
       // 6 RMS: a crest that high comes once in ~10⁸ waves (Rayleigh heights); plus the local waves' metre.
       () => ({
-        layers: sim.surfaceLayers,
+        layers: sim.layers,
         choppiness: sim.parameters.choppiness,
         foam: sim.foam.texture,
         surfaceBound: 6 * this.heightRms + 1,
-        waterHeightAt: (x: number, z: number) => heightAt(sim.surfaceLayers, sim.parameters.choppiness, this.currentTime, x, z),
+        waterHeightAt: (x: number, z: number) => heightAt(sim.layers, sim.parameters.choppiness, this.currentTime, x, z),
       }),
       shading,
     );
@@ -186,11 +190,11 @@ export class Ocean extends Object3D<OceanEventMap> {
    */
   get heightRms(): number {
     this.checkAlive('heightRms');
-    const layers = this.simulation.layers;
-    if (this.rms?.spectra.length !== layers.length || this.rms.spectra.some((spectrum, i) => spectrum !== layers[i].spectrum)) {
+    const cascades = this.simulation.cascades;
+    if (this.rms?.spectra.length !== cascades.length || this.rms.spectra.some((spectrum, i) => spectrum !== cascades[i].spectrum)) {
       let sum = 0;
-      for (const { spectrum } of layers) for (const a of spectrum.amplitudes) sum += a * a;
-      this.rms = { spectra: layers.map((layer) => layer.spectrum), value: Math.sqrt(sum) };
+      for (const { spectrum } of cascades) for (const a of spectrum.amplitudes) sum += a * a;
+      this.rms = { spectra: cascades.map((cascade) => cascade.spectrum), value: Math.sqrt(sum) };
     }
     return this.rms.value;
   }
@@ -211,11 +215,18 @@ export class Ocean extends Object3D<OceanEventMap> {
     return this.summary.value;
   }
 
-  /** Computes the sea at `timeSeconds` (any finite number; it repeats every repeatPeriod). */
-  update(timeSeconds: number): void {
+  /**
+   * Computes the sea at `timeSeconds` (any finite number; it repeats every repeatPeriod). `camera`
+   * is where the viewer is this frame: the local waves' grid follows it (unless told to follow
+   * something else, localWaves.follow). Without one the grid stays where it was.
+   */
+  update(timeSeconds: number, camera?: Object3D): void {
     this.checkAlive('update');
-    const camera = this.surface.lastCameraPosition;
-    this.simulation.localWaves?.cameraMoved(camera.x, camera.z);
+    if (camera !== undefined) {
+      if (!(camera instanceof Object3D)) throw new ParameterError('update(t, camera)', camera, 'a three.js camera (an Object3D) the local waves follow, or nothing');
+      camera.getWorldPosition(viewerPosition);
+      this.simulation.localWaves?.cameraMoved(viewerPosition.x, viewerPosition.z);
+    }
     this.simulation.update(timeSeconds);
     this.currentTime = timeSeconds;
     if (!queryCodeWarm) this.warmUpQueries();
@@ -271,6 +282,25 @@ export class Ocean extends Object3D<OceanEventMap> {
     return this.simulation.localWaves;
   }
 
+  /**
+   * Adds a wave layer of your own (the WaveLayer contract, src/layers/waveLayer.ts: its fields'
+   * textures, where they lie, and how to update and query them): from the next update on it moves
+   * with the sea's clock, the surface draws it, the queries and floating bodies feel it, and a
+   * periodic one makes whitecaps with the rest. It stays yours: removeLayer gives it back, and
+   * dispose() does not free it. A ParameterError names what is missing from a layer that does not
+   * meet the contract.
+   */
+  addLayer(layer: WaveLayer): void {
+    this.checkAlive('addLayer');
+    this.simulation.addLayer(layer);
+  }
+
+  /** Takes a layer that addLayer added off the sea (it is not freed). */
+  removeLayer(layer: WaveLayer): void {
+    this.checkAlive('removeLayer');
+    this.simulation.removeLayer(layer);
+  }
+
   /** Changes simulation parameters; a bad one throws a ParameterError and nothing changes. */
   setParameters(changes: Partial<SimulationParameters>): void {
     this.checkAlive('setParameters');
@@ -323,7 +353,7 @@ export class Ocean extends Object3D<OceanEventMap> {
   heightAt(x: number, z: number): number {
     this.checkAlive('heightAt');
     checkCoordinates('heightAt(x, z)', x, z);
-    return heightAt(this.simulation.surfaceLayers, this.simulation.parameters.choppiness, this.currentTime, x, z);
+    return heightAt(this.simulation.layers, this.simulation.parameters.choppiness, this.currentTime, x, z);
   }
 
   /**
@@ -334,7 +364,7 @@ export class Ocean extends Object3D<OceanEventMap> {
   normalAt(x: number, z: number, target = new Vector3()): Vector3 {
     this.checkAlive('normalAt');
     checkCoordinates('normalAt(x, z)', x, z);
-    return normalAt(this.simulation.surfaceLayers, this.simulation.parameters.choppiness, this.currentTime, x, z, target);
+    return normalAt(this.simulation.layers, this.simulation.parameters.choppiness, this.currentTime, x, z, target);
   }
 
   /**
@@ -345,7 +375,7 @@ export class Ocean extends Object3D<OceanEventMap> {
   velocityAt(x: number, z: number, target = new Vector3()): Vector3 {
     this.checkAlive('velocityAt');
     checkCoordinates('velocityAt(x, z)', x, z);
-    return velocityAt(this.simulation.surfaceLayers, this.simulation.parameters.choppiness, this.currentTime, x, z, target);
+    return velocityAt(this.simulation.layers, this.simulation.parameters.choppiness, this.currentTime, x, z, target);
   }
 
   /**
@@ -354,8 +384,8 @@ export class Ocean extends Object3D<OceanEventMap> {
    */
   heightsAt<T extends WritableNumbers>(xz: ArrayLike<number>, out: T): T {
     const count = this.checkBatch('heightsAt', xz, out, 1);
-    const { surfaceLayers, parameters } = this.simulation;
-    for (let p = 0; p < count; p++) out[p] = heightAt(surfaceLayers, parameters.choppiness, this.currentTime, xz[2 * p], xz[2 * p + 1]);
+    const { layers, parameters } = this.simulation;
+    for (let p = 0; p < count; p++) out[p] = heightAt(layers, parameters.choppiness, this.currentTime, xz[2 * p], xz[2 * p + 1]);
     return out;
   }
 
@@ -395,7 +425,7 @@ export class Ocean extends Object3D<OceanEventMap> {
    */
   private warmUpQueries(): void {
     queryCodeWarm = true;
-    const cascades = this.simulation.layers;
+    const cascades = this.simulation.cascades;
     if (cascades.some((cascade) => cascade.queriedYet)) return; // the app's own queries compiled it
     const out = new Vector3();
     this.heightAt(0, 0);
@@ -426,9 +456,9 @@ export class Ocean extends Object3D<OceanEventMap> {
 
   private batchOfVectors<T extends WritableNumbers>(method: string, query: typeof normalAt, xz: ArrayLike<number>, out: T): T {
     const count = this.checkBatch(method, xz, out, 3);
-    const { surfaceLayers, parameters } = this.simulation;
+    const { layers, parameters } = this.simulation;
     for (let p = 0; p < count; p++) {
-      query(surfaceLayers, parameters.choppiness, this.currentTime, xz[2 * p], xz[2 * p + 1], scratch);
+      query(layers, parameters.choppiness, this.currentTime, xz[2 * p], xz[2 * p + 1], scratch);
       out[3 * p] = scratch.x;
       out[3 * p + 1] = scratch.y;
       out[3 * p + 2] = scratch.z;

@@ -88,7 +88,7 @@ async function frames(options: FrameOptions): Promise<FrameSamples[]> {
     return subjects.map(({ label, ocean, samples, calls, triangles }) => ({
       label,
       patchSizes: [...ocean.simulation.parameters.patchSizes],
-      cascades: ocean.simulation.layers.length,
+      cascades: ocean.simulation.cascades.length,
       samples,
       calls,
       triangles,
@@ -160,7 +160,7 @@ async function queryFrames(options: { resolution: number; warmUp: number; frames
   const ocean = new Ocean(renderer, { resolution: options.resolution, seed: 7, path: 'gpu', localWaves: false });
   const points = [[0, 0], [12, -8], [-15, 4], [30, 22], [-6, -25]];
   const normal = new Vector3();
-  const computedHere = () => ocean.simulation.layers.reduce((sum, layer) => sum + layer.fieldsComputedHere, 0);
+  const computedHere = () => ocean.simulation.cascades.reduce((sum, layer) => sum + layer.fieldsComputedHere, 0);
   const [callMs, controlMs]: number[][] = [[], []];
   const timed = (call: () => unknown, into: number[]) =>
     new Promise<void>((resolve) => {

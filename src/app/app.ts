@@ -104,7 +104,7 @@ let buoys: Buoys | null = null;
 function showBuoys(show: boolean): void {
   if (show && !buoys) {
     buoys = new Buoys(ocean);
-    ocean.update(state.t); // the water they are set down on
+    ocean.update(state.t, camera); // the water they are set down on
     buoys.dropAhead(camera);
     scene.add(buoys);
   }

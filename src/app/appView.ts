@@ -92,7 +92,7 @@ export function loadAppSkybox(ocean: Ocean, skybox: string, trustedOrigins = tru
  * either side of the surface, or cross it: the sea draws itself from below too.
  */
 export function prepareAppFrame(ocean: Ocean, camera: PerspectiveCamera, t: number): void {
-  ocean.update(t);
+  ocean.update(t, camera);
   fitFarPlane(ocean, camera);
 }
 

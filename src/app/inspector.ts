@@ -141,16 +141,16 @@ export class Inspector {
 
   /** Shows the next cascade (after the last, the first). */
   nextCascade(): void {
-    this.cascade = (this.shownCascade + 1) % this.ocean.simulation.layers.length;
+    this.cascade = (this.shownCascade + 1) % this.ocean.simulation.cascades.length;
   }
 
   /** Index of the cascade the tiles show. */
   get shownCascade(): number {
-    return Math.min(this.ocean.simulation.layers.length - 1, Math.max(0, Math.floor(this.cascade)));
+    return Math.min(this.ocean.simulation.cascades.length - 1, Math.max(0, Math.floor(this.cascade)));
   }
 
   private shownLayer() {
-    return this.ocean.simulation.layers[this.shownCascade];
+    return this.ocean.simulation.cascades[this.shownCascade];
   }
 
   /** Colour scales from the spectrum: ⟨|h̃0|²⟩ = p = Ψ·Δk²/2 (initialSpectrum.ts), so Σ 2p is the height variance. */

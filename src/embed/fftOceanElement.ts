@@ -722,7 +722,7 @@ export class FftOceanElement extends ElementBase {
     // otherwise put the drifting view out where the surface's coordinates overflow.
     const t = wrapLongTime(this.simulatedTime, ocean.repeatPeriod);
     placeCamera(camera, t, this.settings.cameraHeight, this.optionSetting('sun', 'sunAzimuth') as number);
-    ocean.update(t);
+    ocean.update(t, camera);
     live.boat?.boat.update();
     live.boat?.light.update();
     // The far plane must reach the horizon.

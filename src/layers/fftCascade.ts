@@ -22,7 +22,6 @@
  */
 import type { WebGLRenderer } from 'three';
 import { CpuFieldTextures } from '../fft/cpuFieldTextures';
-import { UnsupportedError } from '../parameters/options';
 import { CpuWaveFields } from '../fft/cpuWaveFields';
 import { FieldWorker } from '../fft/fieldWorker';
 import { GpuWaveFields, type GpuPrecision } from '../fft/gpuWaveFields';
@@ -296,10 +295,9 @@ export class FftCascade implements WaveLayer {
     this.queryWorker.request(this.lastQueryTime, 0, true);
   }
 
-  /** The fields the textures show now, on the JS path (no computation); the GPU path keeps none. */
-  shownFieldsOnCpu(): LayerFieldsOnCpu {
-    if (this.backend instanceof GpuWaveFields) throw new UnsupportedError('shownFieldsOnCpu', 'FftCascade.shownFieldsOnCpu: the GPU path keeps its fields on the GPU');
-    return this.backend.shownFields;
+  /** The fields the textures show now, on the JS path (no computation); null on the GPU path, which keeps none. */
+  shownFieldsOnCpu(): LayerFieldsOnCpu | null {
+    return this.backend instanceof GpuWaveFields ? null : this.backend.shownFields;
   }
 
   dispose(): void {

@@ -393,6 +393,11 @@ export class LocalWaves implements WaveLayer {
     return this.cpuFields;
   }
 
+  /** The fields the surface shows now, on the JS path; null on the GPU path (fieldsOnCpu reads them back). */
+  shownFieldsOnCpu(): LayerFieldsOnCpu | null {
+    return this.backend.kind === 'js' ? this.backend.fields : null;
+  }
+
   /**
    * The fields for the queries at time t: the local waves carry no time of their own (a history),
    * so they are for the time asked and never carried forward. On the GPU path they are the last

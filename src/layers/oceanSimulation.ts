@@ -4,10 +4,13 @@
  * when the renderer can render to float targets and on the JS path otherwise (or when asked).
  *
  *   parameters ──► src/spectrum (Ψ(k) of the sea state, split into cascade bands, h̃0 per cascade)
- *   time t ──────► layers: FftCascade × patchSizes.length (evolve + FFT on the GPU or in JS)
- *              ──► whitecap foam from their summed Jacobian, with its history (whitecapFoam.ts)
- *   sources ─────► localWaves: stones, hulls (localWaves.ts), stepped by the time since the last update
- *              ──► the surface and the queries sum `surfaceLayers` (waveLayer.ts)
+ *   time t ──────► layers, one list in the contract's order (waveLayer.ts), on one clock:
+ *                    FftCascade × patchSizes.length (evolve + FFT on the GPU or in JS)
+ *                    local waves: stones, hulls (localWaves.ts)
+ *                    any layer added (addLayer)
+ *              ──► whitecap foam from the periodic layers' summed Jacobian, with its history
+ *                  (whitecapFoam.ts)
+ *              ──► the surface and the queries sum `layers`
  *
  * Bad parameters throw a ParameterError and change nothing, so the scene goes on with the last
  * good values. A change of a shader-only parameter (choppiness) rebuilds nothing. Owns the layers
@@ -26,7 +29,7 @@ import { createCascadeSpectra, type InitialSpectrum } from '../spectrum/initialS
 import { FftCascade, type FftBackend } from './fftCascade';
 import { isSoftwareRenderer } from './gpuLocalWaves';
 import { LOCAL_WAVES_OPTION_KEYS, LocalWaves, type LocalWavesOptions } from './localWaves';
-import type { WaveLayer } from './waveLayer';
+import { orderLayers, type WaveLayer } from './waveLayer';
 import { WhitecapFoam } from './whitecapFoam';
 
 /** Which implementation computes the fields. */
@@ -58,12 +61,18 @@ export class OceanSimulation {
   private currentParameters: SimulationParameters;
   /** The parameters the spectra were made from (a later change may have been shader-only). */
   private spectraParameters: SimulationParameters;
-  private currentLayers: FftCascade[] = [];
+  private currentCascades: FftCascade[] = [];
   private currentFoam: WhitecapFoam | null = null;
   private currentLocalWaves: LocalWaves | null = null;
   private readonly localWaveOptions: LocalWavesOptions | null;
-  private localWavesTime = NaN;
-  private currentSurfaceLayers: readonly WaveLayer[] = [];
+  /** Layers added by addLayer, in the order added; their owner is the caller. */
+  private readonly addedLayers: WaveLayer[] = [];
+  /** Every layer, in the contract's order (orderLayers): a new array whenever the list changes. */
+  private currentLayers: readonly WaveLayer[] = [];
+  /** Layers not updated yet: their first update is a jump (dt = 0). */
+  private readonly notUpdatedYet = new Set<WaveLayer>();
+  /** The precision the GPU path runs at (null: the JS path), for a foam rebuilt after addLayer. */
+  private gpuPrecision: GpuPrecision | null = null;
   private currentPath!: SimulationPath;
   /** Why the path is not the preferred one's best ('' when it is). */
   private currentReason = '';
@@ -77,6 +86,8 @@ export class OceanSimulation {
    * no shader compilation.
    */
   private retired: { dispose(): void }[] = [];
+  /** What rebuilds made since the last update (cascades, foam, local waves): none of it drew yet. */
+  private readonly madeSinceUpdate = new Set<{ dispose(): void }>();
 
   constructor(
     private readonly renderer: WebGLRenderer,
@@ -98,17 +109,40 @@ export class OceanSimulation {
     return this.currentParameters;
   }
 
-  /** The FFT cascades, finest first: what the surface and the queries sum. */
-  get layers(): readonly FftCascade[] {
+  /** The FFT cascades, finest first. */
+  get cascades(): readonly FftCascade[] {
+    return this.currentCascades;
+  }
+
+  /**
+   * Every layer, what the surface draws and the queries sum: the local waves (if any), the
+   * cascades and the layers added, in the contract's order (waveLayer.ts: the largest periodic one
+   * last). The same array until the layers change.
+   */
+  get layers(): readonly WaveLayer[] {
     return this.currentLayers;
   }
 
   /**
-   * Everything the surface draws and the queries sum: the local waves (if any) and the cascades,
-   * the largest last. The same array until the layers change.
+   * Adds a wave layer of the caller's (waveLayer.ts): from the next update on it is updated with
+   * the others on the simulation's clock, drawn, queried and, if periodic, read by the foam. The
+   * caller keeps it: removeLayer gives it back, and dispose() leaves it to the caller to free.
    */
-  get surfaceLayers(): readonly WaveLayer[] {
-    return this.currentSurfaceLayers;
+  addLayer(layer: WaveLayer): void {
+    checkWaveLayer(layer);
+    if (this.addedLayers.includes(layer)) throw new ParameterError('layer', layer, 'a layer not added yet');
+    this.addedLayers.push(layer);
+    this.notUpdatedYet.add(layer);
+    this.layersChanged(layer.frame.periodic);
+  }
+
+  /** Takes a layer addLayer added off the sea (not freed: it is the caller's). */
+  removeLayer(layer: WaveLayer): void {
+    const at = this.addedLayers.indexOf(layer);
+    if (at < 0) throw new ParameterError('layer', layer, 'a layer added with addLayer');
+    this.addedLayers.splice(at, 1);
+    this.notUpdatedYet.delete(layer);
+    this.layersChanged(layer.frame.periodic);
   }
 
   /** The local waves (stones, hulls), or null when turned off. */
@@ -123,7 +157,7 @@ export class OceanSimulation {
 
   /** The initial spectrum of each cascade, finest first. */
   get spectra(): readonly InitialSpectrum[] {
-    return this.currentLayers.map((layer) => layer.spectrum);
+    return this.currentCascades.map((cascade) => cascade.spectrum);
   }
 
   /** The implementation now running ('js' once a cascade's worker has failed for good). */
@@ -138,8 +172,8 @@ export class OceanSimulation {
 
   /** The first cascade's reason for computing on the main thread instead of its worker, or null. */
   private workerFault(): string | null {
-    for (const layer of this.currentLayers) {
-      if (layer.workerFault !== null) return layer.workerFault;
+    for (const cascade of this.currentCascades) {
+      if (cascade.workerFault !== null) return cascade.workerFault;
     }
     return null;
   }
@@ -156,7 +190,7 @@ export class OceanSimulation {
 
   /** Fragment passes per GPU update over all cascades, or 0 on the JS path. */
   get passCount(): number {
-    return this.currentLayers.reduce((sum, layer) => sum + layer.passCount, 0);
+    return this.currentCascades.reduce((sum, cascade) => sum + cascade.passCount, 0);
   }
 
   /**
@@ -172,28 +206,33 @@ export class OceanSimulation {
     if (changed.some((key) => !SHADER_ONLY_PARAMETERS.includes(key))) this.rebuild(true);
   }
 
-  /** Computes every layer at time t in seconds (any finite value). */
+  /**
+   * Computes every layer at time t in seconds (any finite value), each stepped by the time since
+   * the last update (0 at its first), then the foam.
+   */
   update(t: number): void {
     if (!Number.isFinite(t)) throw new ParameterError('time', t, 'a finite number of seconds');
     const dt = Number.isNaN(this.lastTime) ? 0 : t - this.lastTime;
-    for (const layer of this.currentLayers as readonly WaveLayer[]) layer.update(t, dt);
+    for (const layer of this.currentLayers) layer.update(t, this.notUpdatedYet.has(layer) ? 0 : dt);
+    this.notUpdatedYet.clear();
+    this.madeSinceUpdate.clear();
     this.lastTime = t;
-    this.currentLocalWaves?.update(t, Number.isNaN(this.localWavesTime) ? 0 : t - this.localWavesTime);
-    this.localWavesTime = t;
     const { choppiness, windSpeed, foamAmount, foamPersistence } = this.currentParameters;
     this.currentFoam!.update(t, { choppiness, windSpeed, amount: foamAmount, persistence: foamPersistence });
     this.disposeRetired();
   }
 
+  /** Frees the cascades, the local waves and the foam; the layers added stay the caller's. */
   dispose(): void {
     this.disposeRetired();
-    for (const layer of this.currentLayers) layer.dispose();
-    this.currentLayers = [];
+    for (const cascade of this.currentCascades) cascade.dispose();
+    this.currentCascades = [];
     this.currentFoam?.dispose();
     this.currentFoam = null;
     this.currentLocalWaves?.dispose();
     this.currentLocalWaves = null;
-    this.currentSurfaceLayers = [];
+    this.addedLayers.length = 0;
+    this.currentLayers = [];
   }
 
   private rebuild(newSpectra: boolean): void {
@@ -205,34 +244,62 @@ export class OceanSimulation {
     this.currentReason = support.reason;
     // The new layers are built before the old ones are freed (see `retired`); each may take over the
     // arrays of its predecessor's CPU copy for queries.
-    const previous = this.currentLayers;
+    const previous = this.currentCascades;
     const cascadesOn = (gpu: GpuPrecision | null) =>
       spectra.map(
         (spectrum, cascade) =>
           new FftCascade(this.renderer, spectrum, { params: this.spectraParameters, cascade }, backendFor(gpu, this.useWorker), this.useWorker, previous[cascade] ?? null),
       );
     try {
-      this.currentLayers = cascadesOn(precision);
+      this.currentCascades = cascadesOn(precision);
     } catch (error) {
       if (precision === null) throw error;
       // The GPU path failed to build here (an adapter check, a framebuffer): the JS path instead.
       precision = null;
       this.currentReason = `the GPU path failed: ${error instanceof Error ? error.message : String(error)}`;
-      this.currentLayers = cascadesOn(null);
+      this.currentCascades = cascadesOn(null);
     }
+    for (const cascade of this.currentCascades) {
+      this.notUpdatedYet.add(cascade);
+      this.madeSinceUpdate.add(cascade);
+    }
+    this.gpuPrecision = precision;
     this.currentPath = precision ? (precision === 'float32' ? 'gpu-rgba32f' : 'gpu-rgba16f') : this.useWorker ? 'js-worker' : 'js';
     if (this.currentReason !== '' && this.preference !== 'js' && !warned.has(this.currentReason)) {
       warned.add(this.currentReason);
       console.warn(`three-fft-ocean: ${this.currentReason}; using the ${PATH_NAMES[this.currentPath]} path.`);
     }
-    const replaced = this.currentFoam ? [...previous, this.currentFoam] : previous;
-    // Two rebuilds without an update between: the first one's layers never drew, the ones it retired did.
-    if (this.retired.length === 0) this.retired = replaced;
-    else for (const resource of replaced) resource.dispose();
-    this.currentFoam = new WhitecapFoam(this.renderer, this.currentLayers, precision === null ? null : precision === 'float32' ? FloatType : HalfFloatType);
-    this.lastTime = NaN;
+    for (const cascade of previous) this.notUpdatedYet.delete(cascade);
+    this.retire(previous);
     const localPath = this.localWaveOptions?.path ?? 'auto';
     this.rebuildLocalWaves(precision === 'float32' && (localPath === 'gpu' || (localPath === 'auto' && !isSoftwareRenderer(this.renderer))));
+    this.layersChanged(true);
+  }
+
+  /**
+   * Frees what a rebuild replaced: after the next update if it drew (see `retired`), at once if it
+   * was made since the last update and never drew (two rebuilds without an update between).
+   */
+  private retire(replaced: readonly { dispose(): void }[]): void {
+    for (const resource of replaced) {
+      if (this.madeSinceUpdate.has(resource)) resource.dispose();
+      else this.retired.push(resource);
+    }
+  }
+
+  /**
+   * Orders the layers anew (a new array, so the surface rebinds them); when the periodic ones
+   * changed, a new foam reads them (its history starts again).
+   */
+  private layersChanged(periodicChanged: boolean): void {
+    const local = this.currentLocalWaves ? [this.currentLocalWaves] : [];
+    this.currentLayers = orderLayers([...local, ...this.currentCascades, ...this.addedLayers]);
+    if (!periodicChanged) return;
+    if (this.currentFoam) this.retire([this.currentFoam]);
+    const precision = this.gpuPrecision;
+    const periodic = this.currentLayers.filter((layer) => layer.frame.periodic);
+    this.currentFoam = new WhitecapFoam(this.renderer, periodic, precision === null ? null : precision === 'float32' ? FloatType : HalfFloatType);
+    this.madeSinceUpdate.add(this.currentFoam);
   }
 
   private disposeRetired(): void {
@@ -250,10 +317,10 @@ export class OceanSimulation {
     const depth = this.currentParameters.depth;
     if (this.localWaveOptions && (previous === null || previous.path !== (useGpu ? 'gpu' : 'js') || previous.grid.depth !== depth)) {
       this.currentLocalWaves = new LocalWaves(this.renderer, depth, useGpu, this.localWaveOptions);
+      this.notUpdatedYet.add(this.currentLocalWaves);
+      if (previous) this.notUpdatedYet.delete(previous);
       previous?.dispose();
-      this.localWavesTime = NaN;
     }
-    this.currentSurfaceLayers = this.currentLocalWaves ? [this.currentLocalWaves, ...this.currentLayers] : this.currentLayers;
   }
 }
 
@@ -277,6 +344,31 @@ function checkLocalWaves(localWaves: boolean | LocalWavesOptions): LocalWavesOpt
     allowed: `true, false or an object { ${LOCAL_WAVES_OPTION_KEYS.join(', ')} }`,
   });
   return localWaves;
+}
+
+/** A ParameterError unless `layer` has what the contract asks (waveLayer.ts), with a periodic layer's size over 0. */
+function checkWaveLayer(layer: WaveLayer): void {
+  const candidate = layer as Partial<WaveLayer> | null;
+  const frame = candidate?.frame;
+  const methods = ['update', 'queryFields', 'fieldsOnCpu', 'shownFieldsOnCpu', 'dispose'] as const;
+  const wellFormed =
+    typeof candidate === 'object' &&
+    candidate !== null &&
+    typeof candidate.textures?.displacement === 'object' &&
+    typeof candidate.textures?.derivatives === 'object' &&
+    typeof candidate.movesSideways === 'boolean' &&
+    methods.every((method) => typeof candidate[method] === 'function') &&
+    typeof frame === 'object' &&
+    Number.isFinite(frame.size) &&
+    frame.size > 0 &&
+    Number.isInteger(frame.resolution) &&
+    frame.resolution > 0 &&
+    typeof frame.periodic === 'boolean' &&
+    Number.isFinite(frame.origin?.[0]) &&
+    Number.isFinite(frame.origin?.[1]);
+  if (!wellFormed) {
+    throw new ParameterError('layer', layer, `a WaveLayer (waveLayer.ts): { textures: { displacement, derivatives }, frame: { size > 0, origin, periodic, resolution }, movesSideways, ${methods.join(', ')} }`);
+  }
 }
 
 function checkPreference(preference: PathPreference): PathPreference {

@@ -7,8 +7,17 @@
  * (surfaceQuery.ts) and the app's inspector take a list of layers and nothing else, and sum them:
  * the sea is the sum of its layers, with the horizontal parts scaled by the choppiness.
  *
- * Today's layers are FFT cascades (fftCascade.ts), periodic patches of several sizes. A local layer
- * (a wake grid that follows a boat) or another backend is one more class against this contract.
+ * The layers are equals: the simulation (oceanSimulation.ts) keeps one list of them, in the order
+ * orderLayers gives, and updates each on one clock; the surface and the queries sum the list; the
+ * whitecap foam reads its periodic layers. Today's layers are the FFT cascades (fftCascade.ts,
+ * periodic patches of several sizes) and the local waves (localWaves.ts, a grid that follows the
+ * camera or a boat); a user's own layer joins them through Ocean.addLayer. A new kind of layer is
+ * one more class against this contract.
+ *
+ * The ordering rule: layers that do not repeat (periodic false) come first, then the periodic ones
+ * from the smallest patch to the largest. The largest periodic layer, last, is drawn as a blend of
+ * two copies so that its period does not show from altitude (patchBlend.ts), and the foam's
+ * history is kept over its patch (whitecapFoam.ts).
  */
 import type { Texture } from 'three';
 
@@ -69,6 +78,28 @@ export interface WaveLayer {
    * when they have nothing close enough.
    */
   queryFields(t: number): LayerQueryFields;
+  /**
+   * The layer's fields at time t on the CPU, computed now if the layer has none for t (a GPU layer
+   * reads them back): for the foam on the JS path, at the times its warm-up steps through, and
+   * for tests. Valid until the next call.
+   */
+  fieldsOnCpu(t: number): LayerFieldsOnCpu;
+  /**
+   * The fields the layer's textures hold now, where it keeps them on the CPU as well (the JS path);
+   * null where it keeps them only on the GPU. The foam on the JS path reads what is drawn.
+   */
+  shownFieldsOnCpu(): LayerFieldsOnCpu | null;
   /** Frees every GPU resource and worker the layer made. */
   dispose(): void;
+}
+
+/**
+ * The layers in the order the surface, the queries and the foam take them (the ordering rule in
+ * this file's header): those that do not repeat first, in the order given, then the periodic ones
+ * by patch size, the largest last. The order given decides between equal sizes.
+ */
+export function orderLayers(layers: readonly WaveLayer[]): WaveLayer[] {
+  const local = layers.filter((layer) => !layer.frame.periodic);
+  const periodic = layers.filter((layer) => layer.frame.periodic);
+  return [...local, ...periodic.map((layer, i) => ({ layer, i })).sort((a, b) => a.layer.frame.size - b.layer.frame.size || a.i - b.i).map(({ layer }) => layer)];
 }

@@ -1,21 +1,22 @@
 /**
  * The whitecap foam field (model and sources: foamModel.ts): coverage in [0, 1] per texel of the
- * largest FFT cascade's patch, kept from frame to frame, on the GPU (shaders/foam/whitecapFoam.frag,
- * ping-pong between two float targets) or in JS (CpuFoamField, uploaded as a DataTexture), the
- * same path as the cascades.
+ * largest periodic layer's patch, kept from frame to frame, on the GPU
+ * (shaders/foam/whitecapFoam.frag, ping-pong between two float targets) or in JS (CpuFoamField,
+ * uploaded as a DataTexture), the same path as the cascades. It reads the sea's periodic layers
+ * (waveLayer.ts), in the contract's order, whatever made them: the FFT cascades, or a user's own.
  *
- * Why in the largest cascade's patch: foam must keep its history where the water carries it, so in
+ * Why in the largest patch: foam must keep its history where the water carries it, so in
  * rest-point coordinates, and over a domain that repeats like the sea so that it covers the whole
- * plane. The cascades do not repeat together (their sizes are not multiples, on purpose), so no
- * square holds the total Jacobian exactly; the largest patch is where the foam of the largest waves
- * (the whitecaps one sees) stays on their crests. The finer cascades are sampled at the points of
- * the first patch: elsewhere their share of the folding lands on the same crests, statistically
- * right but not on their own small folds. The surface draws the foam like the largest cascade,
+ * plane. The layers do not repeat together (the cascades' sizes are not multiples, on purpose), so
+ * no square holds the total Jacobian exactly; the largest patch is where the foam of the largest
+ * waves (the whitecaps one sees) stays on their crests. The finer layers are sampled at the points
+ * of the first patch: elsewhere their share of the folding lands on the same crests, statistically
+ * right but not on their own small folds. The surface draws the foam like the largest layer,
  * blended from two copies (patchBlend.ts), with the same texture coordinates.
  *
  * Time: a step of dt in (0, WARM_UP_WINDOW·τ] advances the foam; any other change of time (the
  * first update, time going back, a long jump) rebuilds it from nothing over the warm-up window,
- * which recomputes the cascades at the warm-up's times (GPU), or their CPU fields (JS).
+ * which recomputes the layers at the warm-up's times (GPU), or their CPU fields (JS).
  */
 import {
   DataTexture,
@@ -34,7 +35,6 @@ import {
 } from 'three';
 import { FullscreenPass, fullscreenMaterial, periodicFieldTarget, runPasses } from '../fft/fullscreenPass';
 import { shaderSource, withLayerCount } from '../shaderSource';
-import type { FftCascade } from './fftCascade';
 import {
   CpuFoamField,
   FOAM_J_FULL,
@@ -44,9 +44,9 @@ import {
   foamStep,
   type CascadeOnCpu,
 } from './foamModel';
-import type { LayerFrame } from './waveLayer';
+import type { LayerFrame, WaveLayer } from './waveLayer';
 
-/** What the foam depends on besides the cascades. */
+/** What the foam depends on besides the layers. */
 export interface FoamSettings {
   /** λ of the choppy map whose Jacobian makes foam. */
   choppiness: number;
@@ -67,20 +67,24 @@ export class WhitecapFoam {
   /** True while the field is all zero (cleared, and no foam made since). */
   private empty = true;
 
+  /** `layers`: the sea's periodic layers, in the contract's order (orderLayers): the largest last. */
   constructor(
     renderer: WebGLRenderer,
-    private readonly cascades: readonly FftCascade[],
+    private readonly layers: readonly WaveLayer[],
     gpuType: typeof FloatType | typeof HalfFloatType | null,
   ) {
-    const largest = cascades[cascades.length - 1].frame;
+    if (layers.length === 0 || layers.some((layer, i) => !layer.frame.periodic || (i > 0 && layer.frame.size < layers[i - 1].frame.size))) {
+      throw new RangeError('WhitecapFoam: its layers are periodic ones, from the smallest patch to the largest (orderLayers)');
+    }
+    const largest = layers[layers.length - 1].frame;
     this.frame = { size: largest.size, origin: [0, 0], periodic: true, resolution: largest.resolution };
-    this.producer = gpuType === null ? new JsFoam(renderer, this.frame) : new GpuFoam(renderer, cascades, this.frame, gpuType);
+    this.producer = gpuType === null ? new JsFoam(renderer, this.frame) : new GpuFoam(renderer, layers, this.frame, gpuType);
     this.texture = this.producer.texture;
   }
 
   /**
-   * Brings the foam to time t, after the cascades were updated to t. On a jump (see the header)
-   * the GPU path recomputes the cascades at the warm-up's times, ending at t.
+   * Brings the foam to time t, after the layers were updated to t. On a jump (see the header)
+   * the GPU path recomputes the layers at the warm-up's times, ending at t.
    */
   update(t: number, settings: FoamSettings): void {
     const rate = settings.amount * foamCreationRate(settings.windSpeed);
@@ -93,8 +97,8 @@ export class WhitecapFoam {
     if (this.empty && rate === 0) return; // no foam, and none made: nothing to draw
     this.empty = false;
     for (const { time, dt } of steps) {
-      // A warm-up step recomputes the cascades at its time; a step to t uses them as they are.
-      this.producer.step(this.cascades, clear ? time : null, settings.choppiness, rate, settings.persistence, dt);
+      // A warm-up step recomputes the layers at its time; a step to t uses them as they are.
+      this.producer.step(this.layers, clear ? time : null, settings.choppiness, rate, settings.persistence, dt, t);
     }
   }
 
@@ -108,7 +112,7 @@ export class WhitecapFoam {
   }
 }
 
-/** The foam passes on the GPU: ping-pong between two targets of the cascades' float type. */
+/** The foam passes on the GPU: ping-pong between two targets of the layers' float type. */
 class GpuFoam {
   readonly texture: { value: Texture | null };
   private readonly targets: [WebGLRenderTarget, WebGLRenderTarget];
@@ -117,7 +121,7 @@ class GpuFoam {
 
   constructor(
     private readonly renderer: WebGLRenderer,
-    cascades: readonly FftCascade[],
+    layers: readonly WaveLayer[],
     frame: LayerFrame,
     type: typeof FloatType | typeof HalfFloatType,
   ) {
@@ -127,28 +131,34 @@ class GpuFoam {
     this.targets = [target(), target()];
     this.targets.forEach((t) => (t.texture.name = 'foam'));
     this.texture = { value: this.targets[0].texture };
-    this.material = fullscreenMaterial(withLayerCount(shaderSource('foam/whitecapFoam.frag'), cascades.length), {
+    this.material = fullscreenMaterial(withLayerCount(shaderSource('foam/whitecapFoam.frag'), layers.length), {
       tPreviousFoam: { value: null },
-      tLayerDisplacement: { value: cascades.map((c) => c.textures.displacement.value) },
-      tLayerDerivatives: { value: cascades.map((c) => c.textures.derivatives.value) },
-      layerTexelScale: { value: cascades.map((c) => (frame.size * c.frame.resolution) / (m * c.frame.size)) },
-      layerResolution: { value: cascades.map((c) => c.frame.resolution) },
+      tLayerDisplacement: { value: layers.map((layer) => layer.textures.displacement.value) },
+      tLayerDerivatives: { value: layers.map((layer) => layer.textures.derivatives.value) },
+      layerTexelScale: { value: layers.map((layer) => (frame.size * layer.frame.resolution) / (m * layer.frame.size)) },
+      layerResolution: { value: layers.map((layer) => layer.frame.resolution) },
       choppiness: { value: 1 },
       jacobianStart: { value: FOAM_J_START },
       jacobianFull: { value: FOAM_J_FULL },
       decay: { value: 1 },
       gain: { value: 0 },
-    }, { LAYER_COUNT: cascades.length });
+    }, { LAYER_COUNT: layers.length });
   }
 
   clear(): void {
     this.draw(1, 0, 0);
   }
 
-  /** One step; at `time` the cascades are first recomputed (warm-up), null: they are current. */
-  step(cascades: readonly FftCascade[], time: number | null, choppiness: number, rate: number, persistence: number, dt: number): void {
-    if (time !== null) for (const cascade of cascades) cascade.update(time, 0);
+  /** One step; at `time` the layers are first recomputed (warm-up), null: they are current. */
+  step(layers: readonly WaveLayer[], time: number | null, choppiness: number, rate: number, persistence: number, dt: number): void {
+    if (time !== null) for (const layer of layers) layer.update(time, 0);
     const { decay, gain } = foamStep(rate, persistence, dt);
+    // A layer may show another texture after an update (a ping-pong): the pass reads those shown now.
+    const u = this.material.uniforms;
+    layers.forEach((layer, i) => {
+      u.tLayerDisplacement.value[i] = layer.textures.displacement.value;
+      u.tLayerDerivatives.value[i] = layer.textures.derivatives.value;
+    });
     this.draw(choppiness, decay, gain);
   }
 
@@ -213,12 +223,15 @@ class JsFoam {
     this.dataTexture.needsUpdate = true;
   }
 
-  /** One step; with `time` from the cascades' fields computed at that time, else from those shown. */
-  step(cascades: readonly FftCascade[], time: number | null, choppiness: number, rate: number, persistence: number, dt: number): void {
-    const onCpu: CascadeOnCpu[] = cascades.map((cascade) => ({
-      fields: time === null ? cascade.shownFieldsOnCpu() : cascade.fieldsOnCpu(time),
-      size: cascade.frame.size,
-      resolution: cascade.frame.resolution,
+  /**
+   * One step; with `time` from the layers' fields computed at that time, else from those shown (a
+   * layer that keeps its fields on the GPU only is read back at `now`).
+   */
+  step(layers: readonly WaveLayer[], time: number | null, choppiness: number, rate: number, persistence: number, dt: number, now: number): void {
+    const onCpu: CascadeOnCpu[] = layers.map((layer) => ({
+      fields: time === null ? (layer.shownFieldsOnCpu() ?? layer.fieldsOnCpu(now)) : layer.fieldsOnCpu(time),
+      size: layer.frame.size,
+      resolution: layer.frame.resolution,
     }));
     this.field.step(onCpu, choppiness, rate, persistence, dt);
     this.dataTexture.needsUpdate = true;

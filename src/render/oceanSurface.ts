@@ -78,11 +78,6 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
     this.placeRings(camera);
   }
 
-  /** Where the camera of the last render was (the origin before the first). */
-  get lastCameraPosition(): Readonly<Vector3> {
-    return this.cameraPosition;
-  }
-
   /** Height above the sea of the camera of the last render (0 before the first). */
   get cameraHeight(): number {
     return this.cameraPosition.y;

@@ -363,7 +363,7 @@ test.describe('the app', () => {
       await menu.selectOption(name);
       const applied = await page.evaluate(() => {
         const { ocean } = window.oceanApp;
-        return { parameters: ocean.parameters, cascades: ocean.simulation.layers.map((layer) => layer.spectrum.patchSize), heightRms: ocean.heightRms };
+        return { parameters: ocean.parameters, cascades: ocean.simulation.cascades.map((layer) => layer.spectrum.patchSize), heightRms: ocean.heightRms };
       });
       // Every sea-state value of the preset (the swell and the depth of the URL are reset), and the
       // cascades it asks for; the grid's resolution, the seed and the choppiness stay.
@@ -470,7 +470,7 @@ test.describe('the app', () => {
       asked: window.oceanApp.state.resolution,
       msaa: window.oceanApp.output.msaa,
       msaaTarget: window.oceanApp.output.multisampleTarget !== null,
-      cascades: window.oceanApp.ocean.simulation.layers.map((layer) => layer.spectrum.patchSize),
+      cascades: window.oceanApp.ocean.simulation.cascades.map((layer) => layer.spectrum.patchSize),
       askedPatchSizes: window.oceanApp.state.patchSizes,
       frameMs: window.oceanApp.quality.medianFrameMs,
       fewestGridCells: window.oceanApp.ocean.surface.fewestCellsPerRing,
@@ -495,7 +495,7 @@ test.describe('the app', () => {
       pixelRatio: window.oceanApp.renderer.getPixelRatio(),
       resolution: window.oceanApp.ocean.parameters.resolution,
       msaa: window.oceanApp.output.msaa,
-      cascades: window.oceanApp.ocean.simulation.layers.length,
+      cascades: window.oceanApp.ocean.simulation.cascades.length,
       fewestGridCells: window.oceanApp.ocean.surface.fewestCellsPerRing,
       gridVertices: window.oceanApp.ocean.surface.geometry.getAttribute('position').count,
     }));
@@ -504,7 +504,7 @@ test.describe('the app', () => {
     // Patch sizes changed in the panel run within the level's cascades; the URL keeps all of them.
     await page.evaluate(() => window.oceanApp.set({ quality: 'low', patchSizes: [10, 50, 250, 1250] }));
     const low = await page.evaluate(() => ({
-      cascades: window.oceanApp.ocean.simulation.layers.map((layer) => layer.spectrum.patchSize),
+      cascades: window.oceanApp.ocean.simulation.cascades.map((layer) => layer.spectrum.patchSize),
       resolution: window.oceanApp.ocean.parameters.resolution,
     }));
     expect(low).toEqual({ cascades: [250, 1250], resolution: 64 });
@@ -664,7 +664,7 @@ async function compareHeightTile(page: Page): Promise<{ cascade: number; cells: 
     // Read the field after the await: the worker path swaps arrays between frames, and the one
     // the texture no longer holds is transferred to the worker (detached). Paused, every frame
     // carries the same field.
-    const field = (ocean.simulation.layers[cascade].textures.displacement.value as unknown as { image: { data: Float32Array } }).image.data.slice();
+    const field = (ocean.simulation.cascades[cascade].textures.displacement.value as unknown as { image: { data: Float32Array } }).image.data.slice();
     const n = 32;
     // The strip's square cells: the field tiles, then the S(ω) plot (Inspector.CELL_COUNT).
     const cells = (inspector!.constructor as unknown as { CELL_COUNT: number }).CELL_COUNT;
@@ -748,7 +748,7 @@ test('the inspector draws the real height field: a tile matches the texture it s
   await openApp(page, 'resolution=32&path=js&paused=1&t=7.5&inspector=1', { width: 720, height: 405 }, false);
   await expect.poll(() => page.evaluate(() => window.oceanApp.ocean.simulation.path)).toBe('js-worker');
   await frames(page, 10);
-  const cascades = await page.evaluate(() => window.oceanApp.ocean.simulation.layers.length);
+  const cascades = await page.evaluate(() => window.oceanApp.ocean.simulation.cascades.length);
   expect(cascades).toBe(DEFAULT_PARAMETERS.patchSizes.length);
   // By default the tiles show the largest cascade.
   const largest = await compareHeightTile(page);

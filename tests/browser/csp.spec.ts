@@ -91,7 +91,7 @@ test('the app: panel, inspector, the JS path in its worker and the skybox faces,
     .poll(() =>
       page.evaluate(() => {
         const { ocean } = window.oceanApp;
-        const field = (ocean.simulation.layers[0].textures.displacement.value as DataTexture).image.data as Float32Array;
+        const field = (ocean.simulation.cascades[0].textures.displacement.value as DataTexture).image.data as Float32Array;
         return { path: ocean.simulation.path, moving: field.some((value) => value !== 0), faces: ocean.sky.usingFaces };
       }),
     )

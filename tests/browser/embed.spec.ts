@@ -97,7 +97,7 @@ test('attributes apply live; a bad value warns, naming the attribute, and keeps 
       ...ocean.parameters,
       sunAzimuth: ocean.sky.sunAzimuth,
       mode: ocean.shading.shadingMode,
-      cascades: ocean.simulation.layers.map((layer) => layer.spectrum.patchSize),
+      cascades: ocean.simulation.cascades.map((layer) => layer.spectrum.patchSize),
     };
     el.setAttribute('wind-speed', 'fast');
     el.setAttribute('resolution', '100');
@@ -146,7 +146,7 @@ test('quality and target-fps: a level sets the render scale, MSAA, N and cascade
       msaa: el.output!.msaa,
       samples: el.output!.multisampleTarget?.samples ?? 0,
       resolution: el.ocean!.parameters.resolution,
-      cascades: el.ocean!.simulation.layers.map((layer) => layer.spectrum.patchSize),
+      cascades: el.ocean!.simulation.cascades.map((layer) => layer.spectrum.patchSize),
     });
     const high = look();
     el.setAttribute('quality', 'lowest');

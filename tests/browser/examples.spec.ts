@@ -172,7 +172,7 @@ test.describe('the built library (dist/lib) in a page without a bundler', () => 
         // The JS path in its Web Worker, loaded from dist/lib/assets next to the bundle.
         const renderer = new window.lib.WebGLRenderer();
         const ocean = new window.lib.Ocean(renderer, { resolution: 32, path: 'js', worker: true });
-        const field = () => (ocean.simulation.layers[0].textures.displacement.value as DataTexture).image.data as Float32Array;
+        const field = () => (ocean.simulation.cascades[0].textures.displacement.value as DataTexture).image.data as Float32Array;
         let workerResult = false;
         for (let i = 0; i < 100 && !workerResult; i++) {
           ocean.update(3 + i * 0.01);

@@ -22,6 +22,8 @@ function fakeLayer(size: number, resolution: number): WaveLayer {
     movesSideways: true,
     update: () => {},
     queryFields: (t: number) => ({ time: t, resolution, ...fields, velocities: () => fields.displacement }),
+    fieldsOnCpu: () => fields,
+    shownFieldsOnCpu: () => fields,
     dispose: () => {},
   };
 }

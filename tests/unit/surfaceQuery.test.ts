@@ -39,6 +39,8 @@ function fakeLayer(frame: LayerFrame, displacement: Float32Array, derivatives: F
       times.push(t);
       return { time: t, resolution: frame.resolution, displacement, derivatives, velocities: () => velocities };
     },
+    fieldsOnCpu: () => ({ displacement, derivatives }),
+    shownFieldsOnCpu: () => ({ displacement, derivatives }),
     dispose: () => {},
   };
 }
@@ -278,6 +280,11 @@ function realSeaLayers(parameters: ReturnType<typeof validateParameters>, lag = 
         }
         return shown;
       },
+      fieldsOnCpu: (t: number) => {
+        fields.update(t);
+        return fields;
+      },
+      shownFieldsOnCpu: () => null,
       dispose: () => {},
     };
   });

@@ -32,7 +32,6 @@ import { shaderSource } from '../../../src/shaderSource';
 import { OceanMaterial, type OceanShadingOptions } from '../../../src/render/oceanMaterial';
 import { OceanSurface } from '../../../src/render/oceanSurface';
 import { finestTexel } from '../../../src/render/horizonGrid';
-import { CpuWaveFields } from '../../../src/fft/cpuWaveFields';
 import { OceanSimulation } from '../../../src/layers/oceanSimulation';
 import { blendAngle, COPY_OFFSET, patchBlendUniforms } from '../../../src/layers/patchBlend';
 import { heightAt, normalAt } from '../../../src/layers/surfaceQuery';
@@ -82,7 +81,7 @@ function setup(parameters: Partial<SimulationParameters>, shading: OceanShadingO
   const sim = simulation;
   surface = new OceanSurface(
     { environment, sunDirection: { value: sunDirection } },
-    () => ({ layers: sim.surfaceLayers, choppiness: sim.parameters.choppiness, foam: sim.foam.texture, surfaceBound }),
+    () => ({ layers: sim.layers, choppiness: sim.parameters.choppiness, foam: sim.foam.texture, surfaceBound }),
     shading,
   );
   scene.add(surface);
@@ -119,6 +118,10 @@ const harness = {
     return Array.from(out);
   },
   geometryCheck,
+  /** Adds a layer to setup's simulation (the contract's way in, as Ocean.addLayer). */
+  addLayer(layer: WaveLayer): void {
+    simulation!.addLayer(layer);
+  },
   /**
    * The fraction of the canvas that whitecap foam brightens: the picture at time t with these
    * parameters against the same sea with foamAmount 0, pixels whose luminance rose by over 16/255 (under this page's uniform pale sky water and foam differ less than under a real sky).
@@ -184,7 +187,7 @@ const harness = {
         const h = (a: number, b: number) => local[4 * (b * resolution + a) + 1];
         return (1 - fv) * ((1 - fu) * h(i, j) + fu * h(i + 1, j)) + fv * ((1 - fu) * h(i, j + 1) + fu * h(i + 1, j + 1));
       };
-      const cascades = ocean.simulation.layers;
+      const cascades = ocean.simulation.cascades;
       const { choppiness } = ocean.parameters;
       let [largestLocal, worstHeight, normalsDiffer] = [0, 0, false];
       for (let x = -5; x <= 11; x += 0.7) {
@@ -515,7 +518,7 @@ const harness = {
     };
     const ocean = new Ocean(renderer, { path, worker: true, localWaves: false, seed: 3 });
     try {
-      const cascades = ocean.simulation.layers;
+      const cascades = ocean.simulation.cascades;
       let t = 10;
       const frames = async () => {
         for (const until = performance.now() + QUERY_WORKER_DELAY_MS + 350; performance.now() < until; ) {
@@ -567,7 +570,7 @@ const harness = {
   }> {
     const ocean = new Ocean(renderer, { path, worker: true, localWaves: false, seed: 3 });
     const { choppiness } = ocean.parameters;
-    let cascades = ocean.simulation.layers;
+    let cascades = ocean.simulation.cascades;
     let exact = exactLayers(cascades);
     const points = Array.from({ length: 25 }, (_, p) => [(p % 5) * 23.1 - 40, Math.floor(p / 5) * 19.7 - 35]);
     const normal = new Vector3();
@@ -615,7 +618,7 @@ const harness = {
       const [worstError, rms] = await compared(20);
       const computedAfterWarmUp = computedHere() - before;
       ocean.setParameters({ windSpeed: 14 });
-      cascades = ocean.simulation.layers;
+      cascades = ocean.simulation.cascades;
       exact = exactLayers(cascades);
       const [worstAfterChange, rmsAfterChange] = await compared(3);
       return {
@@ -677,7 +680,7 @@ const harness = {
       const waited = counts.waited - waitedAtFirst;
       const queried = points.map(([x, z]) => ocean.heightAt(x, z));
       const local = waves.fieldsOnCpu(ocean.time).displacement; // read back at once
-      const cascadesOnly = points.map(([x, z]) => heightAt(ocean.simulation.layers, 0, ocean.time, x, z));
+      const cascadesOnly = points.map(([x, z]) => heightAt(ocean.simulation.cascades, 0, ocean.time, x, z));
       const { size, origin, resolution } = waves.frame;
       let [worstDifference, largestLocal] = [0, 0];
       points.forEach(([x, z], p) => {
@@ -732,7 +735,7 @@ const harness = {
     const events: string[] = [];
     ocean.addEventListener('pathchange', ({ path }) => events.push(`${path.running}: ${path.reason}`));
     const pause = () => new Promise((resolve) => setTimeout(resolve, 30));
-    const layers = ocean.simulation.layers;
+    const layers = ocean.simulation.cascades;
     /** Updates at t until every cascade shows the fields of t (at most `seconds` of frames). */
     const runUntilShown = async (t: number, seconds: number) => {
       const until = performance.now() + seconds * 1000;
@@ -740,7 +743,7 @@ const harness = {
       while (performance.now() < until) {
         ocean.update(t);
         await pause();
-        error = Math.max(...layers.map((layer) => largestDifference(layer.shownFieldsOnCpu().displacement, layer.fieldsOnCpu(t).displacement)));
+        error = Math.max(...layers.map((layer) => largestDifference(layer.shownFieldsOnCpu()!.displacement, layer.fieldsOnCpu(t).displacement)));
         if (error === 0) break;
       }
       return error;
@@ -849,9 +852,10 @@ function withOcean<T>(changes: OceanOptions, use: (ocean: Ocean) => T): T {
 /**
  * Draws the horizon grid as points with the real vertex shader (define CAPTURE_POSITIONS), one
  * float texel per vertex, reads back each vertex's displaced position and rest point, and checks
- * displaced − rest against the sum of the layers' JS fields sampled at the rest point (bilinear,
- * REPEAT, at the vertex's mip level in each layer, mips built by 2×2 averages as generateMipmap
- * does), horizontal parts scaled by the choppiness.
+ * displaced − rest against the sum of the periodic layers' CPU fields (the contract's fieldsOnCpu:
+ * the cascades' JS fields, and any layer added) sampled at the rest point (bilinear, REPEAT, at the
+ * vertex's mip level in each layer, mips built by 2×2 averages as generateMipmap does), horizontal
+ * parts scaled by the choppiness. The local waves are left out: no source has touched them here.
  */
 function geometryCheck(t: number, withRestPoints = false) {
   const sim = simulation!;
@@ -864,8 +868,7 @@ function geometryCheck(t: number, withRestPoints = false) {
   const material = new OceanMaterial({ environment, sunDirection: { value: sunDirection } }, {}, { CAPTURE_POSITIONS: 1 });
   const { choppiness } = sim.parameters;
   // Bound as the surface binds them (the local waves first: zero here, no source has touched them).
-  material.bindLayers(sim.surfaceLayers, choppiness, sim.foam.texture);
-  const cascadesFrom = sim.surfaceLayers.length - sim.layers.length;
+  material.bindLayers(sim.layers, choppiness, sim.foam.texture);
   for (const name of ['ringFrames', 'ringLayerUvOrigins', 'ringOffsets', 'halfRingCells', 'patchBlend']) {
     material.uniforms[name].value = mesh.material.uniforms[name].value;
   }
@@ -891,22 +894,24 @@ function geometryCheck(t: number, withRestPoints = false) {
   target.dispose();
   material.dispose();
 
-  const n = sim.parameters.resolution;
-  const layers = sim.layers.map((layer, i) => {
-    const fields = new CpuWaveFields(layer.spectrum);
-    fields.update(t);
-    const lodBias = material.uniforms.layerLodBias.value[cascadesFrom + i] as number;
-    return { size: layer.frame.size, fields, mips: mipChain(fields.displacement, n), lodBias };
-  });
+  const layers = sim.layers
+    .filter((layer) => layer.frame.periodic)
+    .map((layer) => {
+      const fields = layer.fieldsOnCpu(t);
+      const n = layer.frame.resolution;
+      const lodBias = material.uniforms.layerLodBias.value[sim.layers.indexOf(layer)] as number;
+      return { size: layer.frame.size, n, fields, mips: mipChain(fields.displacement, n), lodBias };
+    });
   // RMS of the summed height over the largest patch's grid (the sum does not repeat on a smaller one).
   const largest = layers[layers.length - 1];
+  const n = largest.n;
   let sumSquares = 0;
   for (let j = 0; j < n; j++) {
     for (let i = 0; i < n; i++) {
       const x = (i * largest.size) / n;
       const z = (j * largest.size) / n;
       let h = 0;
-      for (const layer of layers) h += sampleBilinear(layer.fields.displacement, n, x / layer.size + 0.5 / n, z / layer.size + 0.5 / n)[1];
+      for (const layer of layers) h += sampleBilinear(layer.fields.displacement, layer.n, x / layer.size + 0.5 / layer.n, z / layer.size + 0.5 / layer.n)[1];
       sumSquares += h * h;
     }
   }
@@ -921,7 +926,7 @@ function geometryCheck(t: number, withRestPoints = false) {
     const theta = blendAngle(blend, x, z);
     layers.forEach((layer, i) => {
       const level = Math.min(Math.max(0, Math.round(lod) + layer.lodBias), layer.mips.length - 1); // GL clamps
-      const at = (u: number, v: number) => sampleBilinear(pick(layer, level), n >> level, u + 0.5 / n, v + 0.5 / n);
+      const at = (u: number, v: number) => sampleBilinear(pick(layer, level), layer.n >> level, u + 0.5 / layer.n, v + 0.5 / layer.n);
       const [u, v] = [x / layer.size, z / layer.size];
       const copies: [number, number[]][] =
         i === layers.length - 1 ? [[Math.cos(theta), at(u, v)], [Math.sin(theta), at(u + COPY_OFFSET[0], v + COPY_OFFSET[1])]] : [[1, at(u, v)]];
@@ -961,7 +966,7 @@ function geometryCheck(t: number, withRestPoints = false) {
     byLevel[key].maxError = Math.max(byLevel[key].maxError, error / rms);
     // Rest points lie on the world grid of their ring: multiples of the ring's cell size (exact, in
     // double precision: the uniform's float32 cell is off by 6e-8 of itself, a whole cell at 10⁷ m).
-    const cell = finestTexel(sim.surfaceLayers) * 2 ** (mesh.material.uniforms.ringFrames.value[4 * ring + 3] as number);
+    const cell = finestTexel(sim.layers) * 2 ** (mesh.material.uniforms.ringFrames.value[4 * ring + 3] as number);
     for (const c of [x, z]) maxOffGrid = Math.max(maxOffGrid, Math.abs(c / cell - Math.round(c / cell)));
     heights.push(py);
     if (level === 0 && layers.every((layer) => Math.round(lod) + layer.lodBias <= 0)) {
@@ -1026,6 +1031,8 @@ function exactLayers(cascades: readonly FftCascade[]): WaveLayer[] {
     update: () => {},
     dispose: () => {},
     queryFields: (t: number) => ({ time: t, resolution: cascade.frame.resolution, ...cascade.fieldsOnCpu(t), velocities: () => new Float32Array(0) }),
+    fieldsOnCpu: (t: number) => cascade.fieldsOnCpu(t),
+    shownFieldsOnCpu: () => null,
   }));
 }
 

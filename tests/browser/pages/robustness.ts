@@ -87,8 +87,8 @@ function nonFiniteInOcean(ocean: Ocean, renderer: WebGLRenderer): string[] {
   for (const [key, value] of Object.entries(ocean.parameters)) {
     if (!allFinite(value) && !(key === 'depth' && value === Infinity)) problems.push(`parameter ${key} = ${value}`);
   }
-  const { surfaceLayers, foam } = ocean.simulation;
-  const textures: [string, Texture | null][] = surfaceLayers.flatMap((layer, i) => [
+  const { layers, foam } = ocean.simulation;
+  const textures: [string, Texture | null][] = layers.flatMap((layer, i) => [
     [`layer ${i} displacement`, layer.textures.displacement.value],
     [`layer ${i} derivatives`, layer.textures.derivatives.value],
   ]);

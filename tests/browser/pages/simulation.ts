@@ -163,7 +163,7 @@ const harness = {
    */
   async workerAgainstDirect(changes: Partial<SimulationParameters>, t: number): Promise<{ path: string; maxDifference: number; rms: number }> {
     const simulation = new OceanSimulation(renderer, changes, { path: 'js', worker: true });
-    const displacement = () => simulation.layers[0].textures.displacement.value as DataTexture;
+    const displacement = () => simulation.cascades[0].textures.displacement.value as DataTexture;
     const deadline = performance.now() + 20_000;
     // The worker answers a frame later; keep asking, as the render loop would.
     while (performance.now() < deadline) {
@@ -171,7 +171,7 @@ const harness = {
       await new Promise((resolve) => setTimeout(resolve, 20));
       if (Array.from(displacement().image.data as Float32Array).some((v) => v !== 0)) break;
     }
-    const direct = new CpuWaveFields(simulation.layers[0].spectrum);
+    const direct = new CpuWaveFields(simulation.cascades[0].spectrum);
     direct.update(t);
     const fromWorker = displacement().image.data as Float32Array;
     let maxDifference = 0;
@@ -216,7 +216,7 @@ const harness = {
     simulation.update(4);
     const unchanged = JSON.stringify(before) === JSON.stringify(simulation.parameters);
     let nonFinite = simulation.foam.coverageOnCpu().filter((v) => !Number.isFinite(v)).length;
-    for (const layer of simulation.layers) {
+    for (const layer of simulation.cascades) {
       const { output } = (layer as unknown as { backend: GpuWaveFields }).backend;
       for (const index of [0, 1]) for (const v of readTarget(output, index, 64, 'float32')) if (!Number.isFinite(v)) nonFinite++;
     }
@@ -234,12 +234,12 @@ const harness = {
    */
   layersKeptAcross(): { choppiness: boolean; windSpeed: boolean; choppinessApplied: number } {
     const simulation = new OceanSimulation(renderer, { resolution: 32 }, { path: 'gpu', worker: false });
-    const same = (before: readonly object[]) => simulation.layers.every((layer, i) => layer === before[i]);
-    let before = [...simulation.layers];
+    const same = (before: readonly object[]) => simulation.cascades.every((layer, i) => layer === before[i]);
+    let before = [...simulation.cascades];
     simulation.setParameters({ choppiness: 2.5 });
     const choppiness = same(before);
     const choppinessApplied = simulation.parameters.choppiness;
-    before = [...simulation.layers];
+    before = [...simulation.cascades];
     simulation.setParameters({ windSpeed: 17 });
     const windSpeed = same(before);
     simulation.dispose();
