@@ -1,4 +1,9 @@
-// three-fft-ocean public API: re-exports only.
+/**
+ * The package's main entry, `import { Ocean } from 'three-fft-ocean'`: the ocean (Ocean), its
+ * simulation, layers and rendering parts, the sea-state spectra and the `<fft-ocean>` element's
+ * class. This file only re-exports.
+ * @module three-fft-ocean
+ */
 export { Ocean, DisposedError, type OceanOptions, type OceanPath, type OceanEventMap, type SunPosition } from './ocean';
 export { UnsupportedError } from './parameters/options';
 export { OceanSimulation, DEFAULT_SIMULATION_OPTIONS, type SimulationOptions, type SimulationPath, type PathPreference } from './layers/oceanSimulation';
@@ -55,3 +60,17 @@ export {
   type SunDirection,
 } from './render/skyEnvironment';
 export { FftOceanElement, defineFftOceanElement, FFT_OCEAN_ATTRIBUTES, type FftOceanAttribute } from './embed/fftOceanElement';
+// Types that the API above takes or returns, exported so they can be named (and are in the API reference).
+export type { Rgb } from './parameters/sceneOptions';
+export type { OptionTable, OptionRule, OptionType } from './parameters/options';
+export type { LocalWaveGrid } from './layers/localWaveModel';
+export type { SkyBackground } from './render/skyBackground';
+export type { SceneOutput } from './render/sceneOutput';
+export type { AdaptiveQuality, QualityLevel, QualitySetting, QualityStep } from './timing/adaptiveQuality';
+export type { SeaStateSummary, WritableNumbers } from './ocean';
+export type { WaveNumberSpectrum, SpectrumOrigin } from './spectrum/initialSpectrum';
+export type { SeaStateParameters } from './spectrum/seaState';
+export type { PhillipsParameters } from './spectrum/phillips';
+export type { SpectrumForFields } from './fft/cpuWaveFields';
+export type { PressableWater } from './layers/floatingBody';
+export type { OceanMaterialInputs } from './render/oceanMaterial';

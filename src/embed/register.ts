@@ -1,8 +1,11 @@
 /**
- * Side-effect module: importing it defines <fft-ocean> (once, however often it is imported).
+ * Side-effect module: importing it defines `<fft-ocean>` (once, however often it is imported).
  *
- *   import 'three-fft-ocean/register';
- *   // <fft-ocean wind-speed="14"></fft-ocean> now works anywhere in the page
+ * ```ts
+ * import 'three-fft-ocean/register';
+ * // <fft-ocean wind-speed="14"></fft-ocean> now works anywhere in the page
+ * ```
+ * @module three-fft-ocean/register
  */
 import { defineFftOceanElement } from './fftOceanElement';
 

@@ -35,7 +35,7 @@ export class CpuWaveFields {
   /** RGBA texels (∂h/∂x, ∂h/∂z, ∂Dx/∂x, ∂Dz/∂z). */
   readonly derivatives: Float32Array;
   private readonly fft: BatchedInverseFft2D;
-  /** [displacement, derivatives]: the FFT writes its two pairs of packed fields straight into them. */
+  /** The two fields, displacement then derivatives: the FFT writes its two pairs of packed fields straight into them. */
   private readonly textures: readonly Float32Array[];
   private readonly phaseTable = new Float32Array(4 * PHASE_TABLE_SIZE);
   /**

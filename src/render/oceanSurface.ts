@@ -67,6 +67,10 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
     this.fewestCells = cells;
   }
 
+  /**
+   * Called by three.js before each render of the sea: resizes the grid to the drawing buffer's
+   * height if needed and centres the rings under `camera` (placeRings).
+   */
   override onBeforeRender(renderer: WebGLRenderer, _scene: Scene, camera: Camera): void {
     renderer.getDrawingBufferSize(this.viewport);
     const cells = cellsPerRingForViewport(this.viewport.y, this.fewestCells);

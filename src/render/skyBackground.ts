@@ -52,6 +52,10 @@ export class SkyBackground extends Mesh<BufferGeometry, ShaderMaterial> {
     this.renderOrder = SKY_RENDER_ORDER;
   }
 
+  /**
+   * Called by three.js before each render: takes the camera's projection and rotation, and the
+   * depth convention of `renderer` (the sky goes at the far plane).
+   */
   override onBeforeRender(renderer: WebGLRenderer, _scene: Scene, camera: Camera): void {
     const u = this.material.uniforms;
     // A reversed depth buffer (three's reversedDepthBuffer) has its far plane at depth 0, and

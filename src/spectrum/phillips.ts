@@ -15,7 +15,7 @@ export function windUnitVector(directionDegrees: number): [number, number] {
   return detCosSinDegrees(directionDegrees);
 }
 
-type PhillipsParameters = Pick<SimulationParameters, 'windSpeed' | 'windDirection' | 'amplitude' | 'smallWaveCutoff'>;
+export type PhillipsParameters = Pick<SimulationParameters, 'windSpeed' | 'windDirection' | 'amplitude' | 'smallWaveCutoff'>;
 
 /** P(k) for the wave vector (kx, kz) in rad/m. */
 export function phillips(kx: number, kz: number, params: PhillipsParameters): number {
