@@ -119,7 +119,7 @@ OPTIONS.set('cam', { stateKey: 'cam', placeholder: 'x,y,z,yaw,pitch', help: "the
 
 /**
  * The app's settings that a shot has no use for, each with why: the CLI refuses them rather than
- * ignore them. (From a --query link they are read as the app reads them: see the README.)
+ * ignore them. (From a --query link they are read as the app reads them: see docs/embedding.md, "Headless shots".)
  */
 const NOT_IN_A_SHOT: Readonly<Record<string, string>> = {
   'target-fps': "the frame rate quality 'auto' adapts to; a shot draws each frame however long it takes, at the level 'auto' starts at (high)",

@@ -1,5 +1,6 @@
 #!/usr/bin/env node
-// `npm run make-sea-states`: the README's sea-state pictures and table, and its feature pictures.
+// `npm run make-sea-states`: the sea-state pictures and table of docs/sea-states.md, and the feature
+// pictures of the README and the guide.
 //
 // For every named preset (SEA_PRESETS) and for Beaufort forces 2, 4, 6, 8, 10 and 12
 // (beaufortPreset), renders one picture with the shot CLI (scripts/shot.mjs) into
@@ -7,7 +8,7 @@
 // parameter names come from the TypeScript sources themselves (loaded with Vite's ssrLoadModule,
 // as bench/run.mjs does), so no formula or default is copied here. It writes the Markdown table to
 // docs/sea-states/table.md (links relative to that folder) and prints the same Markdown with links
-// relative to the repository root, ready for the README.
+// relative to docs/, ready for docs/sea-states.md.
 //
 // Every picture: 960x540, seed 7, t = 12.5 s, the app's default lens and sun. The camera is the
 // app's default one (12 m up, cam=0,12,0,-53.13,-6.84) except for storm-type seas (Hs > 6 m), which
@@ -42,7 +43,7 @@ const OUT_DIR = join(ROOT, 'docs', 'sea-states');
 const FEATURES_DIR = join(ROOT, 'docs', 'features');
 /** The README's picture, in FEATURES_DIR (tests/browser/shot.spec.ts knows this name too). */
 const FIRST_VIEW_FILE = 'first-view.png';
-/** The README's feature pictures: app links (what the app's "copy link" gives), paused at their t. */
+/** The feature pictures of the README and the guide: app links (what the app's "copy link" gives), paused at their t. */
 const FEATURES = [
   { name: "the app's first view", file: FIRST_VIEW_FILE, query: 'paused=1', truecolour: true },
   { name: 'whitecaps in a storm', file: 'whitecaps.png', query: 'windSpeed=20&seed=7&paused=1&t=30&cam=0,25,0,-53.13,-12' },
@@ -329,7 +330,7 @@ async function main() {
   }
   const header = '<!-- Made by `npm run make-sea-states` (scripts/make-sea-state-pictures.mjs); do not edit. -->\n\n';
   writeFileSync(join(OUT_DIR, 'table.md'), header + markdown(states, ''));
-  process.stdout.write(markdown(states, 'docs/sea-states/'));
+  process.stdout.write(markdown(states, 'sea-states/')); // for docs/sea-states.md
   const total = states.reduce((sum, state) => sum + statSync(join(OUT_DIR, state.file)).size, 0);
   log(`wrote ${relative(ROOT, join(OUT_DIR, 'table.md'))}; pictures ${(total / 1024 / 1024).toFixed(2)} MiB; ${((performance.now() - started) / 1000).toFixed(0)} s`);
   if (failures.length > 0) throw new Error(`bad pictures:\n  ${failures.join('\n  ')}`);

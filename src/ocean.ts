@@ -1,5 +1,5 @@
 /**
- * Ocean: the whole sea as one three.js Object3D — simulation (OceanSimulation), sky (SkyEnvironment) and
+ * Ocean: the whole sea as one three.js Object3D — simulation (src/layers/oceanSimulation.ts), sky (SkyEnvironment) and
  * surface (OceanSurface) — for any scene.
  *
  *   const ocean = new Ocean(renderer, { windSpeed: 12, seed: 7 });
@@ -417,9 +417,9 @@ export class Ocean extends Object3D<OceanEventMap> {
   /**
    * Once per page, at the first update of its first Ocean, unless the app queried first: asks each
    * query once of this sea, then has the cascades forget it (FftCascade.forgetQueries). V8 then
-   * compiles the query code and learns its types here, not in the app's first query: the first
-   * heightAt took a median 1.5 ms of main-thread CPU without this, 0.1 ms with it (8 fresh pages
-   * each, N = 512, Chromium 156; issue 10 asks for no query over 1 ms). The queries read the fields
+   * compiles the query code and learns its types here, not in the app's first query, which would
+   * otherwise pay for that compilation (issue 10 asks for no query over 1 ms; docs/performance.md
+   * has the first heightAt as last measured). The queries read the fields
    * the update has just made for them (fftCascade.ts): nothing is computed for them, except on the
    * JS path without a worker, the velocities (one FFT).
    */

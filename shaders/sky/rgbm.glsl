@@ -2,10 +2,10 @@
 // (the encoding of Karis's "RGBM color encoding", 2009, used by Unreal and once by three.js).
 //
 // Why: SkyEnvironment's cube is sampled by every sea pixel (twice) and every sky pixel. Under
-// SwiftShader an 8-bit cube samples several times faster than a half-float one (bench/README
-// figures), and a plain 8-bit cube cannot hold HDR. RGBM keeps 8 bits of precision relative to
-// each texel's brightest channel: the deep-water blue (0.004–0.035) and the sky (0.05–2) both
-// keep their gradients. Radiance above RANGE clips: only the sun disk and the glow just around
+// SwiftShader an 8-bit cube samples several times faster than a half-float one (CHANGELOG.md,
+// performance history, "The single-patch core"), and a plain 8-bit cube cannot hold HDR. RGBM
+// keeps 8 bits of precision relative to each texel's brightest channel: the deep-water blue
+// (0.004–0.035) and the sky (0.05–2) both keep their gradients. Radiance above RANGE clips: only the sun disk and the glow just around
 // it, which tone mapping shows as white anyway, and the sea adds the sun's glint analytically.
 // Bilinear filtering of (rgb, a) is not exactly filtering of radiance; the error is confined to
 // texels where the multiplier jumps (the sun's edge).

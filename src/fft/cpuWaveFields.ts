@@ -5,7 +5,7 @@
  *
  * Time evolution (Tessendorf 2001, eq. 26; course report §2.1):
  *   h̃(k, t) = h̃0(k)·e^{iωt} + h̃0*(−k)·e^{−iωt},  ω = m·2π/T (dispersion.ts).
- * ω depends on |k| only (and spectrum.ts stores h̃0*(−k) next to each h̃0(k)), so
+ * ω depends on |k| only (and src/spectrum/initialSpectrum.ts stores h̃0*(−k) next to each h̃0(k)), so
  * h̃(−k, t) = conj(h̃(k, t)): evolve() computes h̃ once for each pair of wave vectors ±k and writes
  * the packed spectra of both.
  *
@@ -25,7 +25,7 @@ export type SpectrumForFields = Pick<InitialSpectrum, 'resolution' | 'repeatPeri
 const PACKED_SPECTRA = 4;
 /**
  * Numbers per mode in `modes`: with h̃0(k) = a and h̃0*(−k) = b,
- * (Re a + Re b, Im b − Im a, Im a + Im b, Re a − Re b), then kx, kz, 1/|k|, m as in spectrum.ts.
+ * (Re a + Re b, Im b − Im a, Im a + Im b, Re a − Re b), then kx, kz, 1/|k|, m as in src/spectrum/initialSpectrum.ts.
  */
 const MODE_LENGTH = 8;
 

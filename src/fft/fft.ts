@@ -1,7 +1,7 @@
 /**
  * Inverse 2D FFT on the CPU, for several complex fields at once:
  *   f(x_n, z_m) = Σ_{n', m'} F(n', m') · e^{+2πi·(n·n' + m·m')/N}   (no 1/N² factor)
- * which is Tessendorf's h(x) = Σ_k h̃(k)·e^{ik·x} on the grid of spectrum.ts.
+ * which is Tessendorf's h(x) = Σ_k h̃(k)·e^{ik·x} on the grid of src/spectrum/initialSpectrum.ts.
  *
  * Layout. One matrix of N rows, each holding the F fields side by side (N numbers each), rows
  * S = F·N + 16 numbers apart, real and imaginary parts in two Float64Arrays. The transform works in

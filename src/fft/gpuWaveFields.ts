@@ -21,8 +21,8 @@
  * public); three.js still allocates, binds and frees the textures.
  *
  * Textures (RGBA unless said):
- *   amplitudes  N×N (h̃0(k), h̃0*(−k))            static, from spectrum.ts
- *   waveVectors N×N (kx, kz, 1/k, m)             static, from spectrum.ts
+ *   amplitudes  N×N (h̃0(k), h̃0*(−k))            static, from initialSpectrum.ts
+ *   waveVectors N×N (kx, kz, 1/k, m)             static, from initialSpectrum.ts
  *   phases      256×1, (e^{ijφ}, e^{i256jφ})     uploaded each update, from dispersion.ts
  *   twiddles    N×1, (cos 2πj/N, sin 2πj/N)      static
  *   working     2 × (N/2)×(N/2)×4 layers, twice  working storage (two complex fields per texel)

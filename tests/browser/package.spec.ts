@@ -126,10 +126,17 @@ test("the packed library in a new vite project: the README's Quick start shows t
   const installed = join(project, 'node_modules/three-fft-ocean');
   expect(listFiles(installed).filter((path) => path.endsWith('.js')).length, 'library files in the tarball').toBeGreaterThan(2);
   expect(missingSourceMaps(installed), 'source maps named in the tarball but not in it').toEqual([]);
-  // The README's pictures are in it too, so that they show on the registry's page of the package.
-  const readmeImages = [...readFileSync(join(installed, 'README.md'), 'utf8').matchAll(/!\[[^\]]*\]\(([^)\s]+)\)/g)].map((match) => match[1]);
+  // The README's pictures are in it too, so that they show on the registry's page of the package;
+  // and so are the guide's pages (docs/*.md, which the README links to) with their pictures.
+  const pictures = (page: string) =>
+    [...readFileSync(join(installed, page), 'utf8').matchAll(/!\[[^\]]*\]\(([^)\s]+)\)/g)].map((match) => join(dirname(page), match[1]));
+  const readmeImages = pictures('README.md');
   expect(readmeImages.length, 'pictures in the README').toBeGreaterThan(10);
   expect(readmeImages.filter((path) => !existsSync(join(installed, path))), 'README pictures missing from the tarball').toEqual([]);
+  const guidePages = readdirSync(join(repo, 'docs')).filter((name) => name.endsWith('.md')).map((name) => `docs/${name}`);
+  expect(guidePages.filter((page) => !existsSync(join(installed, page))), 'guide pages missing from the tarball').toEqual([]);
+  const guideImages = guidePages.flatMap(pictures);
+  expect(guideImages.filter((path) => !existsSync(join(installed, path))), 'guide pictures missing from the tarball').toEqual([]);
 
   await test.step("build the README's quick start with vite", () => {
     const readme = readFileSync(join(repo, 'README.md'), 'utf8');

@@ -23,7 +23,7 @@ describe('Beaufort scale', () => {
     expect(beaufortWindSpeed(0)).toBe(0.1);
     expect(beaufortWindSpeed(6)).toBeCloseTo(12.3, 12);
     expect(beaufortWindSpeed(12)).toBeCloseTo(34.75, 12);
-    for (const bad of [-1, 13, 2.5, NaN]) expect(() => beaufortWindSpeed(bad)).toThrow(ParameterError); // the library's error type (README, Errors)
+    for (const bad of [-1, 13, 2.5, NaN]) expect(() => beaufortWindSpeed(bad)).toThrow(ParameterError); // the library's error type (docs/embedding.md, Errors)
     expect(() => beaufortPreset(13)).toThrow('Beaufort force must be an integer from 0 to 12; got 13');
   });
 

@@ -17,7 +17,7 @@ import { phillips, windUnitVector } from '../../src/spectrum/phillips';
 
 const G = 9.81;
 
-/** The signed frequency n' of index i, straight from the definition in spectrum.ts. */
+/** The signed frequency n' of index i, straight from the definition in src/spectrum/initialSpectrum.ts. */
 function signed(i: number, n: number): number {
   return i < n / 2 ? i : i - n;
 }

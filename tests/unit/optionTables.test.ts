@@ -1,8 +1,8 @@
 /**
- * The README's option tables come from the one source of truth: the option tables (rules, units,
- * what is allowed), the defaults, and the TSDoc of the option interfaces (what each option means
- * and its @defaultValue). This test builds the tables and fails when the README's differ;
- * `npm run docs` writes them. It also checks every @defaultValue against the default in force, so
+ * The option tables of the guide's embedding page (docs/embedding.md, "Options") come from the one
+ * source of truth: the option tables (rules, units, what is allowed), the defaults, and the TSDoc of
+ * the option interfaces (what each option means and its @defaultValue). This test builds the tables
+ * and fails when the page's differ; `npm run docs` (UPDATE_DOCS=1) writes them. It also checks every @defaultValue against the default in force, so
  * that the typed API docs cannot drift either.
  */
 import { readFileSync, writeFileSync } from 'node:fs';
@@ -99,7 +99,7 @@ const constructorDocs = new Map([
 ]);
 const elementDocs = interfaceDocs(source('src/embed/fftOceanElement.ts'), 'ElementSettings');
 
-/** The README's generated part: the option tables. */
+/** The page's generated part: the option tables. */
 function optionTables(): string {
   const lines: string[] = [];
   for (const { title, rules, defaults, docs } of TABLES) {
@@ -123,27 +123,30 @@ function optionTables(): string {
   return lines.join('\n');
 }
 
-const BEGIN = '<!-- option tables: generated from the source by `npm run docs`, checked by tests/unit/readme.test.ts -->';
+const BEGIN = '<!-- option tables: generated from the source by `npm run docs`, checked by tests/unit/optionTables.test.ts -->';
+/** The page that holds the option tables, relative to the repository root. */
+const PAGE = 'docs/embedding.md';
 const END = '<!-- end of option tables -->';
 
-describe('the README', () => {
-  it('has the option tables the source gives (npm run docs writes them)', () => {
-    const readme = source('README.md');
-    const begin = readme.indexOf(BEGIN);
-    const end = readme.indexOf(END);
-    expect(begin, 'the README has the option tables’ markers').toBeGreaterThan(0);
-    const written = readme.slice(begin + BEGIN.length, end).trim();
+describe(`the option tables of ${PAGE}`, () => {
+  it('are the tables the source gives (npm run docs writes them)', () => {
+    const page = source(PAGE);
+    const begin = page.indexOf(BEGIN);
+    const end = page.indexOf(END);
+    expect(begin, `${PAGE} has the option tables’ first marker`).toBeGreaterThan(0);
+    expect(end, `${PAGE} has the option tables’ end marker after the first`).toBeGreaterThan(begin);
+    const written = page.slice(begin + BEGIN.length, end).trim();
     const generated = optionTables();
-    if (process.env.UPDATE_README === '1' && written !== generated) {
-      writeFileSync(new URL('README.md', root), `${readme.slice(0, begin + BEGIN.length)}\n\n${generated}\n\n${readme.slice(end)}`);
+    if (process.env.UPDATE_DOCS === '1' && written !== generated) {
+      writeFileSync(new URL(PAGE, root), `${page.slice(0, begin + BEGIN.length)}\n\n${generated}\n\n${page.slice(end)}`);
       return;
     }
     expect(written).toBe(generated);
   });
 
-  it('names every attribute of <fft-ocean> in its tables', () => {
-    const readme = source('README.md');
-    const tables = readme.slice(readme.indexOf(BEGIN), readme.indexOf(END));
+  it('name every attribute of <fft-ocean>', () => {
+    const page = source(PAGE);
+    const tables = page.slice(page.indexOf(BEGIN), page.indexOf(END));
     for (const attribute of FFT_OCEAN_ATTRIBUTES) expect(tables, attribute).toContain(`\`${attribute}\``);
   });
 });
