@@ -1,7 +1,7 @@
 /**
  * One Web Worker (waveFieldWorker.ts) that computes a cascade's JS fields at the times it is asked,
  * one request at a time, and what happens when it fails. Two owners use it: the JS path's textures
- * (cpuFieldTextures.ts), and on the GPU path the CPU copy the queries read (fftCascade.ts).
+ * (cpuFieldTextures.ts), and on the GPU path the CPU copy the queries read (cascadeQueryFields.ts).
  *
  * The arrays travel: a request transfers a set to the worker, the reply transfers it back filled,
  * and the owner hands back the set it no longer needs for the next request. A frame allocates

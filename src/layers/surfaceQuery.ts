@@ -8,7 +8,7 @@
  * converged point is not.
  *
  * Each layer gives its fields for a time close to the one asked (waveLayer.ts: usually those a
- * worker finished a frame ago, fftCascade.ts); the displacement is carried to the time asked by its
+ * worker finished a frame ago, cascadeQueryFields.ts); the displacement is carried to the time asked by its
  * velocity, D(t) ≈ D(t0) + (t − t0)·∂D/∂t (first order; the derivatives and velocities are those at
  * t0, a frame old at most LONGEST_CARRY).
  */

@@ -45,7 +45,7 @@ export interface LayerQueryFields extends LayerFieldsOnCpu {
   readonly time: number;
   /**
    * Texels a side, over the layer's frame: its own resolution, or fewer (a cascade's queries may
-   * read a coarser copy without its shortest waves, fftCascade.ts).
+   * read a coarser copy without its shortest waves, cascadeQueryFields.ts).
    */
   readonly resolution: number;
   /**

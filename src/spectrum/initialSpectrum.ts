@@ -212,7 +212,7 @@ export function reducedSpectrum(spectrum: InitialSpectrum, resolution: number): 
       const texel = j * resolution + i;
       const from = ((signedFrequency(j, resolution) + n) % n) * n + ((signedFrequency(i, resolution) + n) % n);
       // Element by element: a subarray per texel would cost more than the copy (each cascade
-      // builds one of these on the main thread for the queries, fftCascade.ts).
+      // builds one of these on the main thread for the queries, cascadeQueryFields.ts).
       for (let c = 0; c < 4; c++) {
         amplitudes[4 * texel + c] = spectrum.amplitudes[4 * from + c];
         waveVectors[4 * texel + c] = spectrum.waveVectors[4 * from + c];

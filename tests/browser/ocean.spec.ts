@@ -188,7 +188,7 @@ for (const [path, jitter] of [['gpu', 0], ['gpu', 0.005], ['js', 0.005]] as cons
     expect(result.warmUpFrames).toBeLessThan(60);
     const carriedSpan = Math.ceil((result.warmUpFrames * (1 / 60 + jitter)) / 0.04) + 1;
     expect(result.computedInWarmUp).toBeLessThanOrEqual(result.cascades * carriedSpan);
-    // Those are computed with the updates, so that no query waits for them (fftCascade.ts).
+    // Those are computed with the updates, so that no query waits for them (cascadeQueryFields.ts).
     expect(result.computedByQueries).toBe(0);
     expect(result.computedHere).toBe(0);
     // The workers' fields are asked for the next frame's time (fieldWorker.ts); steps that change

@@ -620,7 +620,7 @@ function reducedAgainstFull(parameters: SimulationParameters, resolution: number
   });
 }
 
-describe('CpuWaveFields taking over the arrays of fields no longer wanted (fftCascade.ts: a new cascade\'s provisional copy)', () => {
+describe('CpuWaveFields taking over the arrays of fields no longer wanted (cascadeQueryFields.ts: a new cascade\'s provisional copy)', () => {
   it('gives bit for bit the fields, velocities included, of fields made afresh; in the old arrays only where grid and band match', () => {
     const [before, after] = [10, 15].map((windSpeed) => createCascadeSpectra(validateParameters({ resolution: 64, windSpeed, seed: 4 })));
     for (let cascade = 0; cascade < before.length; cascade++) {
@@ -642,7 +642,7 @@ describe('CpuWaveFields taking over the arrays of fields no longer wanted (fftCa
   });
 });
 
-describe('reducedSpectrum (the queries\' copies of a cascade on coarser grids, fftCascade.ts)', () => {
+describe('reducedSpectrum (the queries\' copies of a cascade on coarser grids, cascadeQueryFields.ts)', () => {
   it('a 64² copy of the default N = 256 sea: every cascade but the finest exact at its texels; the finest within 1 % of the sea\'s RMS height there', { timeout: 60_000 }, () => {
     // Between the texels the coarse cascades' copies are not exact: surfaceQuery.test.ts.
     const results = reducedAgainstFull(validateParameters({ resolution: 256, windSpeed: 12, seed: 8 }), 64, 17.25);

@@ -18,7 +18,7 @@ import { heightAt, normalAt, velocityAt } from '../../src/layers/surfaceQuery';
 import { CpuWaveFields } from '../../src/fft/cpuWaveFields';
 import { validateParameters } from '../../src/parameters/parameters';
 import { GRAVITY } from '../../src/spectrum/dispersion';
-import { LONGEST_CARRY, PROVISIONAL_QUERY_RESOLUTION, provisionalQuerySpectrum } from '../../src/layers/fftCascade';
+import { LONGEST_CARRY, PROVISIONAL_QUERY_RESOLUTION, provisionalQuerySpectrum } from '../../src/layers/cascadeQueryFields';
 import { createCascadeSpectra, reducedSpectrum, type InitialSpectrum } from '../../src/spectrum/initialSpectrum';
 import type { LayerFrame, LayerQueryFields, WaveLayer } from '../../src/layers/waveLayer';
 
@@ -261,7 +261,7 @@ function particleAt(layers: readonly WaveLayer[], lambda: number, t: number, x0:
 /**
  * The JS path's fields of the cascades of `parameters`, as a layer each, each from its spectrum or
  * from `copyOf` it; with `lag` (s) each layer answers a query at t with its fields for t − lag, as
- * a worker's fields a frame old (fftCascade.ts).
+ * a worker's fields a frame old (cascadeQueryFields.ts).
  */
 function realSeaLayers(parameters: ReturnType<typeof validateParameters>, lag = 0, copyOf = (spectrum: InitialSpectrum) => spectrum): WaveLayer[] {
   return createCascadeSpectra(parameters).map((cascadeSpectrum) => {

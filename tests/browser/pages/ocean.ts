@@ -36,7 +36,8 @@ import { OceanSimulation } from '../../../src/layers/oceanSimulation';
 import { blendAngle, COPY_OFFSET, patchBlendUniforms } from '../../../src/layers/patchBlend';
 import { heightAt, normalAt } from '../../../src/layers/surfaceQuery';
 import type { WaveLayer } from '../../../src/layers/waveLayer';
-import { FftCascade, QUERY_WORKER_DELAY_MS } from '../../../src/layers/fftCascade';
+import { FftCascade } from '../../../src/layers/fftCascade';
+import { QUERY_WORKER_DELAY_MS } from '../../../src/layers/cascadeQueryFields';
 import type { SimulationParameters } from '../../../src/parameters/parameters';
 
 const query = new URLSearchParams(location.search);
@@ -544,7 +545,7 @@ const harness = {
   /**
    * The queries in a frame loop as an app makes them: update, heightAt and normalAt at 25 points,
    * then a pause for the workers (a frame of a slow renderer). On the GPU path the queries read the
-   * query workers' fields, on the JS path the JS workers' (fftCascade.ts). The steps are 1/60 s,
+   * query workers' fields, on the JS path the JS workers' (cascadeQueryFields.ts). The steps are 1/60 s,
    * or alternately 1/60 s ± `jitter`. Frames run until no cascade has computed fields here for
    * three frames in a row (the workers started: `warmUpFrames`, at most 40), then 20 more, over which
    * it returns how many times the cascades computed fields here, and the worst difference between
