@@ -2,8 +2,9 @@
  * The local-wave layer: waves that things make on the sea — a stone dropped, a hull under way, a
  * floating body that moves — solved on a square grid that follows the camera (or whatever
  * follow() is given) and added to the FFT sea by the surface and the queries (waveLayer.ts). The
- * model and its proofs are in localWaveModel.ts; the GPU solver in gpuLocalWaves.ts, the JS one in
- * localWaveModel.ts.
+ * model and its proofs are in localWaveModel.ts; where it is solved (the GPU solver of
+ * gpuLocalWaves.ts or the JS one of localWaveModel.ts), and how the fields reach the surface and
+ * the queries, in localWaveFields.ts. This file keeps the sources, the grid and the time.
  *
  * Sources:
  *   drop(x, z)            a stone: a dip of the surface, once; the rings spread from it.
@@ -18,10 +19,10 @@
  * When nothing has made a wave for QUIET_AFTER seconds the layer clears and stops stepping (a
  * sea without sources costs nothing).
  */
-import { ClampToEdgeWrapping, DataTexture, FloatType, LinearFilter, NearestFilter, RGBAFormat, type WebGLRenderer } from 'three';
+import type { WebGLRenderer } from 'three';
 import { checkOptionNames, DisposedError, ParameterError } from '../parameters/options';
-import { GpuLocalWaves } from './gpuLocalWaves';
-import { CpuLocalWaves, MAX_IMPULSES_PER_STEP, type HeightImpulse, type LocalWaveGrid } from './localWaveModel';
+import { localWaveFields, type LocalWaveFields } from './localWaveFields';
+import { MAX_IMPULSES_PER_STEP, type HeightImpulse, type LocalWaveGrid } from './localWaveModel';
 import { heightAt } from './surfaceQuery';
 import type { LayerFieldsOnCpu, LayerFrame, LayerQueryFields, WaveLayer } from './waveLayer';
 
@@ -87,11 +88,6 @@ export interface PressureSource {
   remove(): void;
 }
 
-type Backend =
-  | { kind: 'gpu'; solver: GpuLocalWaves }
-  /** `fields` are the textures' own arrays. */
-  | { kind: 'js'; solver: CpuLocalWaves; textures: [DataTexture, DataTexture]; fields: LayerFieldsOnCpu };
-
 /** A hull's pose and how deep it presses now (m). */
 interface PressedPose extends HullPose {
   draft: number;
@@ -115,7 +111,7 @@ export class LocalWaves implements WaveLayer {
   readonly grid: LocalWaveGrid;
   /** The local waves move the surface only up and down. */
   readonly movesSideways = false;
-  private readonly backend: Backend;
+  private readonly solved: LocalWaveFields;
   private readonly currentFrame: { size: number; origin: [number, number]; periodic: false; resolution: number };
   /** The grid's texel (0, 0) in whole texels of the world. */
   private originTexel: [number, number];
@@ -128,24 +124,12 @@ export class LocalWaves implements WaveLayer {
   private quietFor = Infinity;
   /** The time of the last update, null before the first. */
   private time: number | null = null;
-  /** The GPU path's fields read back for queries, and the state they are read from (readBackLater swaps in newer ones). */
-  private cpuFields: { displacement: Float32Array; derivatives: Float32Array; state: Float32Array } | null = null;
-  private stepCount = 0;
-  /** The velocities for queries, and the update they are for. */
-  private velocities: { texels: Float32Array; step: number } | null = null;
-  /** The GPU path's velocities are computed in JS from the read-back potential. */
-  private velocitySolver: CpuLocalWaves | null = null;
-  private readBackStep = -1;
-  /** GPU path: the array a read-back without waiting fills, while one is in flight (else null). */
-  private pendingRead: Float32Array | null = null;
-  /** GPU path: the spare array for the next read-back without waiting. */
-  private spareState: Float32Array | null = null;
   private disposed = false;
   /** This layer as a list of layers, for the queries. */
   private readonly asLayers: readonly WaveLayer[] = [this];
 
   constructor(
-    private readonly renderer: WebGLRenderer,
+    renderer: WebGLRenderer,
     depth: number,
     useGpu: boolean,
     options: LocalWavesOptions = {},
@@ -158,24 +142,8 @@ export class LocalWaves implements WaveLayer {
     }
     if (!(cellSize >= 0.05 && cellSize <= 10)) throw new ParameterError('localWaves.cellSize', cellSize, 'metres per texel from 0.05 to 10');
     this.grid = { resolution, cellSize, depth };
-    if (useGpu) {
-      this.backend = { kind: 'gpu', solver: new GpuLocalWaves(renderer, this.grid) };
-      this.backend.solver.clear();
-      this.textures = { displacement: { value: this.backend.solver.displacement }, derivatives: { value: this.backend.solver.derivatives } };
-    } else {
-      const filterable = renderer.extensions.has('OES_texture_float_linear');
-      const texture = () => {
-        const t = new DataTexture(new Float32Array(4 * resolution * resolution), resolution, resolution, RGBAFormat, FloatType);
-        t.wrapS = t.wrapT = ClampToEdgeWrapping;
-        t.minFilter = t.magFilter = filterable ? LinearFilter : NearestFilter;
-        t.needsUpdate = true;
-        return t;
-      };
-      const textures: [DataTexture, DataTexture] = [texture(), texture()];
-      const fields = { displacement: textures[0].image.data as Float32Array, derivatives: textures[1].image.data as Float32Array };
-      this.backend = { kind: 'js', solver: new CpuLocalWaves(this.grid), textures, fields };
-      this.textures = { displacement: { value: textures[0] }, derivatives: { value: textures[1] } };
-    }
+    this.solved = localWaveFields(renderer, this.grid, useGpu);
+    this.textures = this.solved.textures;
     this.originTexel = this.originFor(this.target);
     this.currentFrame = { size: resolution * cellSize, origin: [0, 0], periodic: false, resolution };
     this.updateFrameOrigin();
@@ -195,7 +163,7 @@ export class LocalWaves implements WaveLayer {
 
   /** 'gpu' or 'js': where the waves are solved. */
   get path(): 'gpu' | 'js' {
-    return this.backend.kind;
+    return this.solved.path;
   }
 
   /** True while the layer steps (a source made waves in the last QUIET_AFTER seconds). */
@@ -315,8 +283,7 @@ export class LocalWaves implements WaveLayer {
       return;
     }
     this.advance(dt);
-    this.stepCount++;
-    this.publish();
+    this.solved.publish(this.active);
   }
 
   /**
@@ -340,8 +307,7 @@ export class LocalWaves implements WaveLayer {
       this.advance(WARM_UP_STEP);
     }
     this.quietFor = 0;
-    this.stepCount++;
-    this.publish();
+    this.solved.publish(this.active);
   }
 
   /** Steps the waves by dt, with the hulls moving from where they pressed to their new poses. */
@@ -367,7 +333,7 @@ export class LocalWaves implements WaveLayer {
       });
       for (let first = 0; first === 0 || first < impulses.length; first += MAX_IMPULSES_PER_STEP) {
         const step = { shiftX: first === 0 ? shift[0] : 0, shiftZ: first === 0 ? shift[1] : 0, impulses: impulses.slice(first, first + MAX_IMPULSES_PER_STEP), dt: first === 0 ? dt / substeps : 0 };
-        this.backend.solver.step(step);
+        this.solved.step(step);
       }
     }
     this.hulls.splice(0, this.hulls.length, ...this.hulls.filter((hull) => !hull.removed));
@@ -379,112 +345,35 @@ export class LocalWaves implements WaveLayer {
    * history, not a function of time). On the GPU path they are read back once per update asked.
    */
   fieldsOnCpu(_t: number): LayerFieldsOnCpu {
-    const n = this.grid.resolution;
-    if (this.backend.kind === 'js') return this.backend.fields;
-    this.cpuFields ??= { displacement: new Float32Array(4 * n * n), derivatives: new Float32Array(4 * n * n), state: new Float32Array(4 * n * n) };
-    if (this.readBackStep !== this.stepCount) {
-      this.readBackStep = this.stepCount;
-      const state = this.cpuFields.state;
-      if (this.active) this.renderer.readRenderTargetPixels(this.backend.solver.state, 0, 0, n, n, state);
-      else state.fill(0);
-      // The state's texels are (η_s, ψ, ∂η_s/∂x, ∂η_s/∂z).
-      toLayerFields(this.cpuFields, state, state.subarray(2), state.subarray(3), 4);
-    }
-    return this.cpuFields;
+    return this.solved.fieldsOnCpu(this.active);
   }
 
   /** The fields the surface shows now, on the JS path; null on the GPU path (fieldsOnCpu reads them back). */
   shownFieldsOnCpu(): LayerFieldsOnCpu | null {
-    return this.backend.kind === 'js' ? this.backend.fields : null;
+    return this.solved.shownFieldsOnCpu();
   }
 
   /**
    * The fields for the queries at time t: the local waves carry no time of their own (a history),
    * so they are for the time asked and never carried forward. On the GPU path they are the last
-   * read-back's, and a new read-back of the current state starts without waiting (readBackLater);
-   * only the first is read back at once.
+   * read-back's, and a new read-back of the current state starts without waiting; only the first
+   * is read back at once.
    */
   queryFields(t: number): LayerQueryFields {
-    const { displacement, derivatives } = this.backend.kind === 'gpu' && this.cpuFields !== null && this.active ? this.readBackLater() : this.fieldsOnCpu(t);
-    return { time: t, resolution: this.grid.resolution, displacement, derivatives, velocities: () => this.velocitiesOnCpu(t) };
-  }
-
-  /**
-   * GPU path: the fields of the last read-back, after starting a read-back of the current state
-   * if it is newer and none is in flight. three.js's readRenderTargetPixelsAsync copies into a
-   * pixel buffer behind a fence and polls it, so the main thread never waits for the GPU; the
-   * queries read the waves a frame or two old (local waves move by centimetres a second: under a
-   * millimetre in a frame).
-   */
-  private readBackLater(): LayerFieldsOnCpu {
-    const fields = this.cpuFields!;
-    if (this.readBackStep !== this.stepCount && this.pendingRead === null && this.backend.kind === 'gpu') {
-      const n = this.grid.resolution;
-      const step = this.stepCount;
-      const target = (this.pendingRead = this.spareState ?? new Float32Array(4 * n * n));
-      this.spareState = null;
-      this.renderer.readRenderTargetPixelsAsync(this.backend.solver.state, 0, 0, n, n, target).then(
-        () => {
-          this.pendingRead = null;
-          // Disposed meanwhile, or a read-back that waited has come first: nothing newer here.
-          if (this.disposed || step <= this.readBackStep) {
-            this.spareState = target;
-            return;
-          }
-          this.spareState = fields.state;
-          fields.state = target;
-          this.readBackStep = step;
-          toLayerFields(fields, target, target.subarray(2), target.subarray(3), 4);
-        },
-        () => (this.pendingRead = null), // a lost context: the next query starts another
-      );
-    }
-    return fields;
-  }
-
-  /**
-   * ∂h/∂t of the fields the queries read (the last update's, on the GPU path the last read-back's),
-   * in the layout of a layer's velocities: the local waves move the surface only up and down.
-   */
-  velocitiesOnCpu(t: number): Float32Array {
-    const n = this.grid.resolution;
-    this.velocities ??= { texels: new Float32Array(4 * n * n), step: -1 };
-    if (this.backend.kind === 'gpu' && this.cpuFields === null) this.fieldsOnCpu(t); // the first read-back
-    const step = this.backend.kind === 'js' ? this.stepCount : this.readBackStep;
-    if (this.velocities.step !== step) {
-      if (this.backend.kind === 'js') this.backend.solver.verticalVelocity(this.backend.solver.potential, 1, this.velocities.texels);
-      else {
-        this.velocitySolver ??= new CpuLocalWaves(this.grid);
-        this.velocitySolver.verticalVelocity(this.cpuFields!.state.subarray(1), 4, this.velocities.texels);
-      }
-      this.velocities.step = step;
-    }
-    return this.velocities.texels;
+    const { displacement, derivatives } = this.solved.queryFields(this.active);
+    return { time: t, resolution: this.grid.resolution, displacement, derivatives, velocities: () => this.solved.velocities(this.active) };
   }
 
   dispose(): void {
     this.disposed = true;
-    if (this.backend.kind === 'gpu') this.backend.solver.dispose();
-    else for (const texture of this.backend.textures) texture.dispose();
+    this.solved.dispose();
   }
 
   /** Clears every wave (the hulls stay, pressing from their next step on; stones not yet dropped still fall). */
   clear(): void {
     for (const hull of this.hulls) hull.applied = hull.pose;
-    if (this.backend.kind === 'gpu') this.backend.solver.clear();
-    else this.backend.solver.clear();
-    this.stepCount++;
-    this.publish();
-  }
-
-  private publish(): void {
-    if (this.backend.kind === 'gpu') {
-      if (this.active) this.backend.solver.unpack();
-      return;
-    }
-    const { solver, textures, fields } = this.backend;
-    toLayerFields(fields, solver.height, solver.slopeX, solver.slopeZ, 1);
-    for (const texture of textures) texture.needsUpdate = true;
+    this.solved.clear();
+    this.solved.publish(this.active);
   }
 
   /** Sub-steps for this update: enough that no hull moves more than a quarter of its length in one. */
@@ -521,25 +410,6 @@ export class LocalWaves implements WaveLayer {
   private updateFrameOrigin(): void {
     this.currentFrame.origin[0] = this.originTexel[0] * this.grid.cellSize;
     this.currentFrame.origin[1] = this.originTexel[1] * this.grid.cellSize;
-  }
-}
-
-/**
- * Writes the layer layout (0, h, 0, 0), (∂h/∂x, ∂h/∂z, 0, 0) from the height and slopes, texel t's
- * at index t·stride of each array.
- */
-function toLayerFields(
-  fields: { displacement: Float32Array; derivatives: Float32Array },
-  height: ArrayLike<number>,
-  slopeX: ArrayLike<number>,
-  slopeZ: ArrayLike<number>,
-  stride: number,
-): void {
-  const texels = fields.displacement.length / 4;
-  for (let texel = 0; texel < texels; texel++) {
-    fields.displacement[4 * texel + 1] = height[texel * stride];
-    fields.derivatives[4 * texel] = slopeX[texel * stride];
-    fields.derivatives[4 * texel + 1] = slopeZ[texel * stride];
   }
 }
 

@@ -79,7 +79,7 @@ export function normalAt<T extends { x: number; y: number; z: number }>(
 /**
  * Velocity (m/s) of the water surface over the world point (x, z) at time t, written into `out`:
  * the surface particle at the rest point x0 that heightAt finds moves with ∂P/∂t =
- * (λ·∂Dx/∂t, ∂h/∂t, λ·∂Dz/∂t) (each layer's velocitiesOnCpu, summed and blended as the fields
+ * (λ·∂Dx/∂t, ∂h/∂t, λ·∂Dz/∂t) (each layer's queryFields(t).velocities(), summed and blended as the fields
  * are; the blend's weights do not change with time). For the Airy waves of linear theory this is
  * the orbital velocity of the particles at the surface (Dean & Dalrymple 1991, §4.4; for one deep-
  * water wave of amplitude A at λ = 1, a circle at speed A·ω).
