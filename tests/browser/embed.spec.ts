@@ -290,7 +290,12 @@ test('it draws only while on screen, and time does not jump when it comes back',
     el.scrollIntoView();
     await window.embed.drawn(el, 5);
     window.scrollTo(0, 0);
-    await new Promise((resolve) => setTimeout(resolve, 300)); // the observer reports
+    // The observer reports (at a frame's rendering update): from then on it draws nothing.
+    const away = performance.now();
+    while (el.active) {
+      if (performance.now() - away > 20_000) throw new Error('still active 20 s after scrolling away');
+      await new Promise((resolve) => setTimeout(resolve, 50));
+    }
     const frames1 = el.frameCount;
     const time1 = el.time;
     await new Promise((resolve) => setTimeout(resolve, 1000));
