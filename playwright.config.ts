@@ -12,7 +12,8 @@ export default defineConfig({
   expect: { timeout: 30_000 },
   fullyParallel: false,
   workers: 1, // two cores, and SwiftShader uses both for one page
-  reporter: 'list',
+  // Each file's time at the end (fileTimesReporter.ts), then the list reporter's summary as the last line.
+  reporter: [['./tests/browser/fileTimesReporter.ts'], ['list']],
   outputDir: port === 5173 ? 'test-results' : `test-results-${port}`,
   retries: 0,
   use: {

@@ -290,7 +290,12 @@ test('it draws only while on screen, and time does not jump when it comes back',
     el.scrollIntoView();
     await window.embed.drawn(el, 5);
     window.scrollTo(0, 0);
-    await new Promise((resolve) => setTimeout(resolve, 300)); // the observer reports
+    // The observer reports (at a frame's rendering update): from then on it draws nothing.
+    const away = performance.now();
+    while (el.active) {
+      if (performance.now() - away > 20_000) throw new Error('still active 20 s after scrolling away');
+      await new Promise((resolve) => setTimeout(resolve, 50));
+    }
     const frames1 = el.frameCount;
     const time1 = el.time;
     await new Promise((resolve) => setTimeout(resolve, 1000));
@@ -439,22 +444,38 @@ test('its time follows real time × time-scale when frames are slow', async ({ p
 
 test('a click on its sea drops a stone there: the local waves get rings', async ({ page }) => {
   await openPage(page);
-  await page.evaluate(async () => {
+  // Two frames drawn: the canvas has its size and the camera its place, which the click's ray needs.
+  const calmBefore = await page.evaluate(async () => {
     const el = window.embed.create({ resolution: '64', 'wind-speed': '3' });
     await window.embed.drawn(el, 2);
+    return !el.ocean!.localWaves!.active;
   });
+  expect(calmBefore).toBe(true); // nothing has made a local wave yet: the layer does not step
   const box = (await page.locator('fft-ocean').boundingBox())!;
   await page.mouse.click(box.x + box.width / 2, box.y + box.height * 0.8); // the sea below the horizon
-  const largest = await page.evaluate(async () => {
+  const result = await page.evaluate(async () => {
     const el = document.querySelector('fft-ocean')!;
-    await window.embed.drawn(el, 6);
     const waves = el.ocean!.localWaves!;
+    // The click's handler ran (Playwright's click returns once the page has handled it): a stone
+    // dropped inside the grid wakes the layer (drop() returns true); it falls at the next update.
+    const dropped = waves.active;
+    // Then a fixed stretch of simulated time, not a count of frames: however many frames the
+    // element drew before this line ran, or however slow they are, the stone has fallen and its
+    // rings have spread for at least a second (they stay above 6 cm for 6 s).
+    const [time, frame] = [el.time, el.frameCount];
+    const start = performance.now();
+    while (el.time < time + 1 || el.frameCount < frame + 1) {
+      if (performance.now() - start > 60_000) throw new Error(`simulated time moved ${el.time - time} s in 60 s (${el.frameCount - frame} frames)`);
+      await window.embed.frames(1);
+    }
     const { displacement } = waves.fieldsOnCpu(0);
     let largest = 0;
     for (let i = 1; i < displacement.length; i += 4) largest = Math.max(largest, Math.abs(displacement[i]));
-    return largest;
+    return { dropped, largest, simulated: el.time - time };
   });
-  expect(largest).toBeGreaterThan(0.02); // a 0.8 m deep dip leaves rings of centimetres
+  console.log(`a click's stone: rings up to ${(100 * result.largest).toFixed(1)} cm after ${result.simulated.toFixed(2)} s`);
+  expect(result.dropped).toBe(true);
+  expect(result.largest).toBeGreaterThan(0.02); // a 0.8 m deep dip leaves rings of centimetres
 });
 
 test('boat: a boat circles ahead of the drifting view with a wake behind it; removing the attribute takes it off the sea', async ({ page }) => {
