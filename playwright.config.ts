@@ -13,7 +13,7 @@ export default defineConfig({
   fullyParallel: false,
   workers: 1, // two cores, and SwiftShader uses both for one page
   // Each file's time at the end (fileTimesReporter.ts), then the list reporter's summary as the last line.
-  reporter: [['./tests/browser/fileTimesReporter.ts'], ['list']],
+  reporter: [['./tests/browser/shared/fileTimesReporter.ts'], ['list']],
   outputDir: port === 5173 ? 'test-results' : `test-results-${port}`,
   retries: 0,
   use: {

@@ -27,7 +27,7 @@
 // rendered with the shot CLI's --query into docs/features/<file>, checked and stored the same way.
 // The first of them is the README's picture: what `npm start` shows first (the app with no URL
 // parameters, at t = 0), kept as the shot wrote it (truecolour), so that it is exactly that view;
-// tests/browser/shot.spec.ts renders it again and compares.
+// tests/browser/shot/shot.spec.ts renders it again and compares.
 import { spawn } from 'node:child_process';
 import { mkdirSync, readFileSync, statSync, writeFileSync } from 'node:fs';
 import { availableParallelism } from 'node:os';
@@ -41,7 +41,7 @@ import { ensureBuiltApp } from './shot.mjs';
 const ROOT = resolve(dirname(fileURLToPath(import.meta.url)), '..');
 const OUT_DIR = join(ROOT, 'docs', 'sea-states');
 const FEATURES_DIR = join(ROOT, 'docs', 'features');
-/** The README's picture, in FEATURES_DIR (tests/browser/shot.spec.ts knows this name too). */
+/** The README's picture, in FEATURES_DIR (tests/browser/shot/shot.spec.ts knows this name too). */
 const FIRST_VIEW_FILE = 'first-view.png';
 /** The feature pictures of the README and the guide: app links (what the app's "copy link" gives), paused at their t. */
 const FEATURES = [

@@ -4,7 +4,7 @@
 // makes others.
 //
 // skyRadiance() below is a port of shaders/sky/analyticSky.glsl (the formulas and their sources
-// are described there): keep the two in step. tests/browser/sky.spec.ts loads the shipped set
+// are described there): keep the two in step. tests/browser/sky/sky.spec.ts loads the shipped set
 // and compares it with the shader in many directions, which also checks the face orientation.
 // If you change the shipped set's sun, change SHIPPED_SKYBOX in src/render/skyEnvironment.ts.
 //

@@ -1,6 +1,6 @@
 /**
  * Hostile input for the property-based tests, shared by the Node fuzz tests (tests/unit/fuzz.test.ts)
- * and the in-browser ones (tests/browser/pages/robustness.ts), so both throw the same values at
+ * and the in-browser ones (tests/browser/robustness/robustness.ts), so both throw the same values at
  * the library.
  */
 import fc from 'fast-check';

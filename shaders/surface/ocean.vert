@@ -80,7 +80,7 @@ void main() {
   vInnerRing = ring > 0 ? vec3(inner.xy, halfRingCells * inner.z * (1.0 - 1e-4)) : vec3(0.0, 0.0, -1.0);
   vLod = point.lod;
 #ifdef CAPTURE_POSITIONS
-  // Geometry test (tests/browser/ocean.spec.ts): one texel per vertex in a float target.
+  // Geometry test (tests/browser/ocean/ocean.spec.ts): one texel per vertex in a float target.
   float texel = float(gl_VertexID);
   vec2 target = vec2(mod(texel, captureWidth), floor(texel / captureWidth)) + 0.5;
   gl_Position = vec4(target / vec2(captureWidth, captureHeight) * 2.0 - 1.0, 0.0, 1.0);

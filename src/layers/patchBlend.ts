@@ -4,7 +4,7 @@
  *
  * Why: every cascade is a periodic patch, and from a few kilometres up only the largest one is
  * resolved: its period showed (the rendered picture's autocorrelation at the 457 m patch size was
- * 0.63 from 4 km up, tests/browser/tiling.spec.ts). Where it is drawn, the largest cascade's field
+ * 0.63 from 4 km up, tests/browser/tiling/tiling.spec.ts). Where it is drawn, the largest cascade's field
  * P is replaced by
  *   cos θ(x) · P(x) + sin θ(x) · P(x + o),
  * P seen twice, the second copy shifted by o = (0.382, 0.618)·L (golden fractions of the patch, far

@@ -1,6 +1,6 @@
 /**
  * The whitecap foam model (src/layers/foamModel.ts) in JS, the path the GPU pass is compared with
- * in the browser (tests/browser/simulation.spec.ts): its coverage against Monahan &
+ * in the browser (tests/browser/simulation/simulation.spec.ts): its coverage against Monahan &
  * O'Muircheartaigh's law, none in a calm, its decay, frame-rate independence and determinism.
  */
 import { describe, expect, it } from 'vitest';

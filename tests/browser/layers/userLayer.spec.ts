@@ -9,7 +9,7 @@ import { expect, test, type Page } from '@playwright/test';
 async function openOcean(page: Page): Promise<void> {
   const errors: string[] = [];
   page.on('pageerror', (error) => errors.push(error.message));
-  await page.goto('/tests/browser/pages/ocean.html?width=640&height=360');
+  await page.goto('/tests/browser/ocean/ocean.html?width=640&height=360');
   await expect(page).toHaveTitle('ready');
   expect(errors).toEqual([]);
 }

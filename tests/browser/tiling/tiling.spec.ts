@@ -17,7 +17,7 @@ import { mkdirSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { expect, test, type Page } from '@playwright/test';
 import { PNG } from 'pngjs';
-import { fft2d } from '../referenceFft';
+import { fft2d } from '../../referenceFft';
 
 const SIZE = 512;
 const PORT = Number(process.env.TEST_PORT ?? 5173);
@@ -214,7 +214,7 @@ function measureStrip(strip: Float64Array, n: number, rows: number, patchSizes: 
 async function openPage(page: Page): Promise<void> {
   const errors: string[] = [];
   page.on('pageerror', (error) => errors.push(error.message));
-  await page.goto(`/tests/browser/pages/tiling.html?size=${SIZE}`);
+  await page.goto(`/tests/browser/tiling/tiling.html?size=${SIZE}`);
   await expect(page).toHaveTitle('ready');
   expect(errors).toEqual([]);
 }

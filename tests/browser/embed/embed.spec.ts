@@ -1,8 +1,8 @@
 import { expect, test, type Page } from '@playwright/test';
-import { DEFAULT_PARAMETERS } from '../../src/parameters/parameters';
-import { boatWake } from './boatWake';
-import { slowFrames } from './slowFrames';
-import { withoutWebGL2 } from './withoutWebGL2';
+import { DEFAULT_PARAMETERS } from '../../../src/parameters/parameters';
+import { boatWake } from '../shared/boatWake';
+import { slowFrames } from '../shared/slowFrames';
+import { withoutWebGL2 } from '../shared/withoutWebGL2';
 
 // <fft-ocean> in a page: zero-configuration rendering, sizing, live attributes, pausing when it
 // cannot be seen, and the message a browser without WebGL 2 gets. Small boxes and N = 64 keep
@@ -14,7 +14,7 @@ async function openPage(page: Page): Promise<{ errors: string[]; warnings: strin
   page.on('console', (message) => {
     if (message.type() === 'warning') log.warnings.push(message.text());
   });
-  await page.goto('/tests/browser/pages/embed.html');
+  await page.goto('/tests/browser/embed/embed.html');
   await expect(page).toHaveTitle('ready');
   return log;
 }
@@ -525,7 +525,7 @@ test('without WebGL 2 the box shows a message instead of staying blank', async (
   await withoutWebGL2(page);
   const errors: string[] = [];
   page.on('pageerror', (error) => errors.push(error.message));
-  await page.goto('/tests/browser/pages/embed.html');
+  await page.goto('/tests/browser/embed/embed.html');
   await expect(page).toHaveTitle('ready');
   const result = await page.evaluate(async () => {
     let event: string | null = null;
@@ -557,7 +557,7 @@ test('without WebGL 2 the box shows a message instead of staying blank', async (
 test('a frame that fails to draw: the box says so and the page gets fft-ocean-error, once, with no uncaught error', async ({ page }) => {
   const errors: string[] = [];
   page.on('pageerror', (error) => errors.push(error.message));
-  await page.goto('/tests/browser/pages/embed.html');
+  await page.goto('/tests/browser/embed/embed.html');
   await expect(page).toHaveTitle('ready');
   const result = await page.evaluate(async () => {
     const events: string[] = [];

@@ -1,7 +1,7 @@
 import { expect, test } from '@playwright/test';
 import { openRobustnessPage } from './robustnessPage';
 
-// A long run (tests/browser/pages/robustness.ts, soak): 10 000 frames of an Ocean with a setting
+// A long run (tests/browser/robustness/robustness.ts, soak): 10 000 frames of an Ocean with a setting
 // changed every 100 frames, and what the page holds (three.js's geometries, textures and programs,
 // WebGL framebuffers, live Web Workers) each time the settings are back to the first ones. Frames
 // are simulated (ocean.update at 1/60 s steps) and every tenth is drawn: SwiftShader takes ~30 ms

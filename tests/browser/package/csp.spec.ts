@@ -2,8 +2,8 @@ import { expect, test, type Locator, type Page } from '@playwright/test';
 import { join, resolve } from 'node:path';
 import { PNG } from 'pngjs';
 import type { DataTexture } from 'three';
-import { ensureBuiltApp } from '../../scripts/shot.mjs';
-import { serveDirectory } from '../../scripts/static-server.mjs';
+import { ensureBuiltApp } from '../../../scripts/shot.mjs';
+import { serveDirectory } from '../../../scripts/static-server.mjs';
 
 // The built app and example pages (dist/app, built by `vite build` as `npm run shot` builds it,
 // when older than the sources) served as plain files with a strict Content-Security-Policy: no
@@ -17,7 +17,7 @@ let server: { url: string; close: () => Promise<void> };
 test.beforeAll(async () => {
   test.setTimeout(180_000); // a build takes a few seconds, more on a busy machine
   ensureBuiltApp({ log: () => {} });
-  server = await serveDirectory(join(resolve(import.meta.dirname, '../..'), 'dist/app'), { headers: { 'content-security-policy': CSP } });
+  server = await serveDirectory(join(resolve(import.meta.dirname, '../../..'), 'dist/app'), { headers: { 'content-security-policy': CSP } });
 });
 test.afterAll(() => server?.close());
 

@@ -1,7 +1,7 @@
 /**
  * Test page for tiling: renders the whole Ocean (simulation, generated sky, surface) as an app
  * would (ACES filmic tone mapping, sRGB output, camera.far beyond ocean.horizonDistance) from a
- * given camera, and hands the frame back as a PNG data URL. tests/browser/tiling.spec.ts measures
+ * given camera, and hands the frame back as a PNG data URL. tests/browser/tiling/tiling.spec.ts measures
  * the picture's autocorrelation.
  */
 import { ACESFilmicToneMapping, PerspectiveCamera, Scene, SRGBColorSpace, Vector3, WebGLRenderer } from 'three';

@@ -1,21 +1,21 @@
 import { readFileSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { expect, test } from '@playwright/test';
-import { validateParameters } from '../../src/parameters/parameters';
-import { createCascadeSpectra } from '../../src/spectrum/initialSpectrum';
-import { ALSO_ON_OLDEST_THREE } from './threeRange';
+import { validateParameters } from '../../../src/parameters/parameters';
+import { createCascadeSpectra } from '../../../src/spectrum/initialSpectrum';
+import { ALSO_ON_OLDEST_THREE } from '../shared/threeRange';
 
 test.beforeEach(async ({ page }) => {
   const errors: string[] = [];
   page.on('pageerror', (error) => errors.push(error.message));
-  await page.goto('/tests/browser/pages/simulation.html');
+  await page.goto('/tests/browser/simulation/simulation.html');
   await expect(page).toHaveTitle('ready');
   expect(errors).toEqual([]);
 });
 
 test('the page runs the three.js release the dev server was given (THREE_FFT_OCEAN_THREE, else the devDependency)', ALSO_ON_OLDEST_THREE, async ({ page }) => {
   // So a run against another release cannot pass on a server or a cached bundle of the devDependency.
-  const servedThree = process.env.THREE_FFT_OCEAN_THREE ?? resolve(import.meta.dirname, '../../node_modules/three');
+  const servedThree = process.env.THREE_FFT_OCEAN_THREE ?? resolve(import.meta.dirname, '../../../node_modules/three');
   const { version } = JSON.parse(readFileSync(resolve(servedThree, 'package.json'), 'utf8')) as { version: string };
   expect(await page.evaluate(() => window.harness.threeRevision)).toBe(version.split('.')[1]);
 });

@@ -4,14 +4,14 @@
  * SwiftShader; pixels are read by the app right after its render (oceanApp.capturePixels).
  */
 import { expect, test, type Page } from '@playwright/test';
-import { DEFAULT_PARAMETERS } from '../../src/parameters/parameters';
-import { beaufortPreset, SEA_PRESETS } from '../../src/spectrum/presets';
-import { seaState } from '../../src/spectrum/seaState';
-import { boatWake } from './boatWake';
-import { slowAppFramesUntil, slowFrames } from './slowFrames';
-import { withHiddenCapabilities } from './hiddenCapabilities';
-import { withoutWebGL2 } from './withoutWebGL2';
-import { ALSO_ON_OLDEST_THREE } from './threeRange';
+import { DEFAULT_PARAMETERS } from '../../../src/parameters/parameters';
+import { beaufortPreset, SEA_PRESETS } from '../../../src/spectrum/presets';
+import { seaState } from '../../../src/spectrum/seaState';
+import { boatWake } from '../shared/boatWake';
+import { slowAppFramesUntil, slowFrames } from '../shared/slowFrames';
+import { withHiddenCapabilities } from '../shared/hiddenCapabilities';
+import { withoutWebGL2 } from '../shared/withoutWebGL2';
+import { ALSO_ON_OLDEST_THREE } from '../shared/threeRange';
 
 type Vec3 = [number, number, number];
 
@@ -888,7 +888,7 @@ test.describe('failures the app explains', () => {
     await page.waitForFunction(() => window.oceanApp !== undefined);
     const trusted = await page.evaluate(async () => {
       const appView = '/src/app/appView.ts'; // from the dev server, as the app loads it
-      const { loadAppSkybox, trustedSkyboxOrigins } = (await import(appView)) as typeof import('../../src/app/appView');
+      const { loadAppSkybox, trustedSkyboxOrigins } = (await import(appView)) as typeof import('../../../src/app/appView');
       const meta = Object.assign(document.createElement('meta'), { name: 'fft-ocean-skybox-origins', content: 'https://cdn.example  https://sky.example' });
       document.head.append(meta);
       if (trustedSkyboxOrigins().join(' ') !== `${location.origin} https://cdn.example https://sky.example`) return 'meta not read';

@@ -1,7 +1,7 @@
 import { openRobustnessPage as openPage } from './robustnessPage';
 import { expect, test } from '@playwright/test';
 
-// Hostile input, generated in the page (fast-check; tests/browser/pages/robustness.ts) against the
+// Hostile input, generated in the page (fast-check; tests/browser/robustness/robustness.ts) against the
 // real Ocean and <fft-ocean> in WebGL2: every call either works or is refused with a ParameterError
 // (the element: a console warning) that names what was wrong, and the sea keeps finite texels,
 // uniforms and heights. Seeded, so every run repeats the same cases; a failure prints fast-check's

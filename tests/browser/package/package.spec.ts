@@ -4,7 +4,7 @@ import { existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, 
 import { tmpdir } from 'node:os';
 import { dirname, join, relative, resolve } from 'node:path';
 import { PNG } from 'pngjs';
-import { serveDirectory } from '../../scripts/static-server.mjs';
+import { serveDirectory } from '../../../scripts/static-server.mjs';
 
 // What a new user gets (issue 11, "Done when"): the library packed as npm publishes it (`npm pack`,
 // whose prepack builds dist/lib), installed with three into a new project outside the repository,
@@ -12,7 +12,7 @@ import { serveDirectory } from '../../scripts/static-server.mjs';
 // plain files and opened in headless Chromium. Its picture must be the app's first view: the same
 // camera, renderer settings and sea at the same time give the same pixels.
 
-const repo = resolve(import.meta.dirname, '../..');
+const repo = resolve(import.meta.dirname, '../../..');
 /** The three.js the repository develops against: the one the new project installs. */
 const threeVersion: string = JSON.parse(readFileSync(join(repo, 'package.json'), 'utf8')).devDependencies.three;
 const SIZE = { width: 480, height: 270 }; // small: SwiftShader draws every pixel on the CPU

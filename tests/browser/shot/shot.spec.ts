@@ -9,7 +9,7 @@ import { PNG } from 'pngjs';
 // needed, starts its own headless Chromium and writes PNG files. Only the test that compares a
 // shot with the app itself (on the dev server, as app.spec.ts drives it) uses the page fixture.
 
-const root = resolve(import.meta.dirname, '../..');
+const root = resolve(import.meta.dirname, '../../..');
 const script = join(root, 'scripts/shot.mjs');
 let dir: string;
 

@@ -3,10 +3,10 @@ import { spawnSync } from 'node:child_process';
 import { existsSync, readdirSync, readFileSync, statSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import type { DataTexture, WebGLRenderer } from 'three';
-import type { FftOceanElement } from '../../src/embed/fftOceanElement';
-import type { Ocean } from '../../src/ocean';
-import { DEFAULT_PARAMETERS } from '../../src/parameters/parameters';
-import { serveDirectory } from '../../scripts/static-server.mjs';
+import type { FftOceanElement } from '../../../src/embed/fftOceanElement';
+import type { Ocean } from '../../../src/ocean';
+import { DEFAULT_PARAMETERS } from '../../../src/parameters/parameters';
+import { serveDirectory } from '../../../scripts/static-server.mjs';
 
 // The example pages (served by Vite, as in the app build) and the built library (dist/lib)
 // loaded by a plain page through an import map.
@@ -116,7 +116,7 @@ test('three-scene.html: the ocean in a plain three.js scene, a crate floating on
 });
 
 test.describe('the built library (dist/lib) in a page without a bundler', () => {
-  const root = resolve(import.meta.dirname, '../..');
+  const root = resolve(import.meta.dirname, '../../..');
   const bundle = join(root, 'dist/lib/three-fft-ocean.js');
 
   /** Newest modification time of the files the library is built from. */
@@ -158,7 +158,7 @@ test.describe('the built library (dist/lib) in a page without a bundler', () => 
     const server = await serveDirectory(root);
     try {
       const errors = collectErrors(page);
-      await page.goto(`${server.url}/tests/browser/pages/lib-import-map.html`);
+      await page.goto(`${server.url}/tests/browser/examples/lib-import-map.html`);
       await expect(page).toHaveTitle('ready');
       const result = await page.evaluate(async () => {
         const el = document.querySelector('fft-ocean')!;

@@ -1,8 +1,8 @@
 import { expect, test } from '@playwright/test';
-import { ALSO_ON_OLDEST_THREE } from './threeRange';
+import { ALSO_ON_OLDEST_THREE } from '../shared/threeRange';
 
 // Deterministic pictures: fixed seed and time from the URL, compared with committed baselines
-// (tests/browser/screenshots.spec.ts-snapshots/, each looked at before it was committed). The
+// (tests/browser/screenshots/screenshots.spec.ts-snapshots/, each looked at before it was committed). The
 // tolerance absorbs rasterization differences between Chromium builds, not wrong pictures: a
 // black frame, a missing sky or a different sea changes far more than 1% of the pixels.
 const TOLERANCE = { maxDiffPixelRatio: 0.01, threshold: 0.15 };
@@ -11,7 +11,7 @@ async function shot(page: import('@playwright/test').Page, query: string, width:
   const errors: string[] = [];
   page.on('pageerror', (error) => errors.push(error.message));
   await page.setViewportSize({ width, height });
-  await page.goto(`/tests/browser/pages/scene.html?seed=7&t=12.5&width=${width}&height=${height}&${query}`);
+  await page.goto(`/tests/browser/screenshots/scene.html?seed=7&t=12.5&width=${width}&height=${height}&${query}`);
   await expect(page).toHaveTitle('rendered');
   expect(errors).toEqual([]);
   return page.locator('canvas').screenshot();

@@ -1,11 +1,11 @@
 import { expect, test, type Page } from '@playwright/test';
-import type { Vec3, ViewOptions, ViewSummary } from './pages/sky';
-import { ALSO_ON_OLDEST_THREE } from './threeRange';
+import type { Vec3, ViewOptions, ViewSummary } from './sky';
+import { ALSO_ON_OLDEST_THREE } from '../shared/threeRange';
 
 test.beforeEach(async ({ page }) => {
   const errors: string[] = [];
   page.on('pageerror', (error) => errors.push(error.message));
-  await page.goto('/tests/browser/pages/sky.html');
+  await page.goto('/tests/browser/sky/sky.html');
   await expect(page).toHaveTitle('ready');
   expect(errors).toEqual([]);
 });
@@ -148,7 +148,7 @@ test('loadFaces that fails rejects naming the URL, and the generated sky stays i
   const { shippedUrls } = await page.evaluate(() => window.skyHarness);
   await page.evaluate(() => window.skyHarness.create());
   const missing = '/skybox/no-such-set/nx.png';
-  const notAnImage = '/tests/browser/pages/sky.html';
+  const notAnImage = '/tests/browser/sky/sky.html';
   for (const [face, url] of [['nx', missing], ['pz', notAnImage]] as const) {
     const { error, environment } = await page.evaluate((urls) => window.skyHarness.loadFaces(urls), { ...shippedUrls, [face]: url });
     expect(error).toMatch(/^ParameterError on urls: SkyEnvironment.loadFaces: could not load /);

@@ -1,10 +1,10 @@
 import { expect, test, type Page } from '@playwright/test';
-import { ALSO_ON_OLDEST_THREE } from './threeRange';
+import { ALSO_ON_OLDEST_THREE } from '../shared/threeRange';
 
 async function openOcean(page: Page, width = 640, height = 360): Promise<void> {
   const errors: string[] = [];
   page.on('pageerror', (error) => errors.push(error.message));
-  await page.goto(`/tests/browser/pages/ocean.html?width=${width}&height=${height}`);
+  await page.goto(`/tests/browser/ocean/ocean.html?width=${width}&height=${height}`);
   await expect(page).toHaveTitle('ready');
   expect(errors).toEqual([]);
 }
@@ -621,7 +621,7 @@ test.describe('a renderer the Ocean cannot drive', () => {
       const webgpu = '/node_modules/three/build/three.webgpu.js';
       const oceanModule = '/src/ocean.ts';
       const { WebGPURenderer } = (await import(webgpu)) as typeof import('three/webgpu');
-      const { Ocean } = (await import(oceanModule)) as typeof import('../../src/ocean');
+      const { Ocean } = (await import(oceanModule)) as typeof import('../../../src/ocean');
       const renderer = new WebGPURenderer({ forceWebGL: true });
       await renderer.init();
       try {

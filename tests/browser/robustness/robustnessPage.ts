@@ -7,7 +7,7 @@ export async function openRobustnessPage(page: Page): Promise<string[]> {
   page.on('console', (message) => {
     if (message.type() === 'error') problems.push(`console error: ${message.text()}`);
   });
-  await page.goto('/tests/browser/pages/robustness.html');
+  await page.goto('/tests/browser/robustness/robustness.html');
   await expect(page).toHaveTitle('ready');
   return problems;
 }

@@ -1,7 +1,7 @@
 import { expect, test, type Page } from '@playwright/test';
 import type { WebGLRenderer } from 'three';
-import type { FftOceanElement } from '../../src/embed/fftOceanElement';
-import { ALSO_ON_OLDEST_THREE } from './threeRange';
+import type { FftOceanElement } from '../../../src/embed/fftOceanElement';
+import { ALSO_ON_OLDEST_THREE } from '../shared/threeRange';
 
 declare global {
   interface Window {
@@ -18,7 +18,7 @@ declare global {
 async function openPage(page: Page): Promise<string[]> {
   const errors: string[] = [];
   page.on('pageerror', (error) => errors.push(error.message));
-  await page.goto('/tests/browser/pages/embed.html');
+  await page.goto('/tests/browser/embed/embed.html');
   await expect(page).toHaveTitle('ready');
   return errors;
 }

@@ -76,7 +76,7 @@ function compareChannels(gpu: Float32Array, js: Float32Array): ChannelComparison
 }
 
 const harness = {
-  /** The three.js release this page runs (tests/browser/simulation.spec.ts checks it). */
+  /** The three.js release this page runs (tests/browser/simulation/simulation.spec.ts checks it). */
   threeRevision: REVISION,
 
   supportedPrecision: () => supportedGpuPrecision(renderer),
