@@ -9,6 +9,19 @@ import { emit, log } from '../lib/output.mjs';
 import { BROWSER_STEP_TIMEOUT_MS, CASCADE_COUNTS, CASCADE_N, CASCADE_SETS, FRAME_ROUNDS, FRAME_SIZE } from '../lib/settings.mjs';
 import { stats } from '../lib/stats.mjs';
 
+/**
+ * window.frameBench.frames(options) in the frame page at FRAME_SIZE, 5 frames of warm-up and
+ * FRAME_ROUNDS timed; `options` gives resolution, patchSizeSets (and for the living group variants).
+ * Times out after `steps` browser steps. Shared with bench/groups/living.mjs.
+ */
+export function timeFrames(page, options, steps, what) {
+  return withTimeout(
+    page.evaluate((o) => window.frameBench.frames(o), { ...FRAME_SIZE, warmup: 5, rounds: FRAME_ROUNDS, ...options }),
+    steps * BROWSER_STEP_TIMEOUT_MS,
+    what,
+  );
+}
+
 /** The frame rows, on the frame page (bench/pages/frame.html). */
 export async function browser({ page, results }) {
   const frameRuns = [
@@ -18,15 +31,10 @@ export async function browser({ page, results }) {
   for (const { resolution: n, counts } of frameRuns) {
     const what = counts[0] === null ? 'default cascades' : `C = ${counts.join(', ')} cascades`;
     log(`frame N=${n}, ${what}: simulation + sky + surface at ${FRAME_SIZE.width}x${FRAME_SIZE.height}`);
-    const frames = await withTimeout(
-      page.evaluate((o) => window.frameBench.frames(o), {
-        resolution: n,
-        ...FRAME_SIZE,
-        warmup: 5,
-        rounds: FRAME_ROUNDS,
-        patchSizeSets: counts.map((count) => (count === null ? undefined : CASCADE_SETS[count])),
-      }),
-      counts.length * BROWSER_STEP_TIMEOUT_MS,
+    const frames = await timeFrames(
+      page,
+      { resolution: n, patchSizeSets: counts.map((count) => (count === null ? undefined : CASCADE_SETS[count])) },
+      counts.length,
       `the frame benchmark at N=${n}`,
     );
     for (const frame of frames) {

@@ -4,10 +4,10 @@
 //                and local waves ("bare"), with whitecap foam ("foam"), and with foam and local waves
 //                (a 256² grid) stepping every frame (a hull circling, a stone each second: "foam+local-waves"),
 //                interleaved; living-cost gives what foam and local waves add to the bare frame.
-import { withTimeout } from '../lib/browser.mjs';
 import { emit, log } from '../lib/output.mjs';
-import { BROWSER_STEP_TIMEOUT_MS, CASCADE_N, FRAME_ROUNDS, FRAME_SIZE } from '../lib/settings.mjs';
+import { CASCADE_N, FRAME_SIZE } from '../lib/settings.mjs';
 import { stats } from '../lib/stats.mjs';
+import { timeFrames } from './frame.mjs';
 
 /** The local-wave grid of the living-surface frame (the issue's 256², of 1 m texels). */
 const LOCAL_WAVES_N = 256;
@@ -15,20 +15,18 @@ const LOCAL_WAVES_N = 256;
 /** The living and living-cost rows, on the frame page (bench/pages/frame.html). */
 export async function browser({ page, results }) {
   log(`living surface N=${CASCADE_N}: bare, foam, foam and local waves at ${FRAME_SIZE.width}x${FRAME_SIZE.height}`);
-  const living = await withTimeout(
-    page.evaluate((o) => window.frameBench.frames(o), {
+  const living = await timeFrames(
+    page,
+    {
       resolution: CASCADE_N,
-      ...FRAME_SIZE,
-      warmup: 5,
-      rounds: FRAME_ROUNDS,
       patchSizeSets: [],
       variants: [
         { label: 'bare', options: { windSpeed: 20, foamAmount: 0, localWaves: false }, activeLocalWaves: false },
         { label: 'foam', options: { windSpeed: 20, localWaves: false }, activeLocalWaves: false },
         { label: 'foam+local-waves', options: { windSpeed: 20, localWaves: { resolution: LOCAL_WAVES_N } }, activeLocalWaves: true },
       ],
-    }),
-    3 * BROWSER_STEP_TIMEOUT_MS,
+    },
+    3,
     'the living-surface benchmark',
   );
   const livingMs = {};
