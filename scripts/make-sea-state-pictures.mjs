@@ -6,7 +6,7 @@
 // (beaufortPreset), renders one picture with the shot CLI (scripts/shot.mjs) into
 // docs/sea-states/<name>.png, and computes Hs and Tp with seaState. The presets, seaState and the
 // parameter names come from the TypeScript sources themselves (loaded with Vite's ssrLoadModule,
-// as bench/run.mjs does), so no formula or default is copied here. It writes the Markdown table to
+// as the bench does, bench/lib/servers.mjs), so no formula or default is copied here. It writes the Markdown table to
 // docs/sea-states/table.md (links relative to that folder) and prints the same Markdown with links
 // relative to docs/, ready for docs/sea-states.md.
 //

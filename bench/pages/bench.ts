@@ -2,7 +2,7 @@
  * Benchmark page for `npm run bench` (bench/run.mjs drives it through Playwright): times one full
  * GpuWaveFields.update() (every field) and one CpuWaveFields.update() in this page, for one cascade
  * (`fields`) or for every cascade of a set of patch sizes (`cascades`, one update of each cascade
- * per sample), and hands back raw samples in milliseconds; run.mjs takes the medians.
+ * per sample), and hands back raw samples in milliseconds; bench/lib/stats.mjs takes the medians.
  *
  * GPU work is timed two ways, interleaved round by round:
  *   - timer query: EXT_disjoint_timer_query_webgl2 TIME_ELAPSED_EXT around update(), the result

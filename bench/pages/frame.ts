@@ -153,7 +153,7 @@ async function queries(options: { resolution: number; points: number; rounds: nu
  *
  * Each call runs in a task of its own, marked `query-call-<i>` (i: its index in callMs) or
  * `control-call-<i>`, so that a trace of the page gives the task's main-thread CPU time beside the
- * call's wall time (bench/run.mjs): a call held up by other threads has the one, not the other.
+ * call's wall time (bench/groups/query-frames.mjs): a call held up by other threads has the one, not the other.
  */
 async function queryFrames(options: { resolution: number; warmUp: number; frames: number; frameMs: number }): Promise<{ firstFrameMs: number; callMs: number[]; warmUpCalls: number; controlMs: number[]; computedHere: number }> {
   const renderer = new WebGLRenderer();
