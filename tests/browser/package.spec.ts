@@ -257,6 +257,12 @@ const R3F_PACKAGES = ['react@19.3.1', 'react-dom@19.3.1', '@react-three/fiber@9.
 
 test('the packed library in a new vite project with react-three-fiber: the example draws a sea', async ({ page }) => {
   test.setTimeout(180_000);
+  // The guide shows this very file (docs/embedding.md, "With react-three-fiber").
+  const source = readFileSync(join(repo, 'examples/react-three-fiber/main.jsx'), 'utf8');
+  const guide = readFileSync(join(repo, 'docs/embedding.md'), 'utf8');
+  expect(guide, 'the example in docs/embedding.md as it is in examples/react-three-fiber/main.jsx').toContain(
+    `<!-- example: examples/react-three-fiber/main.jsx -->\n\`\`\`jsx\n${source}\`\`\`\n`,
+  );
   let project = '';
   await test.step('install React, react-three-fiber, three and the tarball into a new project', () => {
     project = newProject('react-three-fiber', [tarball(), `three@${threeVersion}`, ...R3F_PACKAGES]);
