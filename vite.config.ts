@@ -78,7 +78,9 @@ function workerWithoutSourceMap(): Plugin {
 /**
  * Two builds from one config (`npm run build` runs both):
  *
- * - `vite build` (the default mode): the app (index.html) and the example pages into dist/app.
+ * - `vite build` (the default mode): the app (index.html), the example pages and their gallery
+ *   (examples/index.html) into dist/app. (examples/react-three-fiber/ needs React: it is built
+ *   in tests/browser/package/package.spec.ts, not here.)
  *   The dev server serves the same pages, plus the pages the browser tests and benchmarks drive,
  *   so tests exercise exactly the modules the app ships.
  * - `vite build --mode lib`: the ES module library from src/index.ts (and the side-effecting
@@ -135,6 +137,7 @@ export default defineConfig(({ mode }) => ({
               element: resolve(root, 'examples/element.html'),
               threeScene: resolve(root, 'examples/three-scene.html'),
               shot: resolve(root, 'examples/shot.html'),
+              gallery: resolve(root, 'examples/index.html'),
             },
           },
         },

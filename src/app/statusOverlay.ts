@@ -2,7 +2,7 @@
  * What the app shows on top of the canvas, top left: the sea state (Hs, Tp), the FFT path, frame rate and CPU timings
  * (ocean.update and renderer.render as measured on the main thread — GPU work is not included),
  * the time (and how fast it runs, when slower than asked: frames over a second apart), a help line for the keys, and below them notices — warnings about bad values (each names its
- * parameter and stays until dismissed or fixed) and the "copy link" field.
+ * parameter and stays until dismissed or fixed) and the "copy link" field. Last in the box, a link to the examples gallery.
  */
 import type { SimulationPath } from '../layers/oceanSimulation';
 import type { Ocean } from '../ocean';
@@ -107,8 +107,16 @@ export class StatusOverlay {
     this.time = element('div', 'status-time');
     this.help = element('div', 'status-help');
     this.help.textContent = helpText;
+    // The examples gallery (examples/index.html), relative to the app's page so that it is found
+    // wherever the built app is served from.
+    const links = element('div', 'status-links');
+    const examples = document.createElement('a');
+    examples.href = 'examples/index.html';
+    examples.textContent = 'Examples';
+    examples.title = 'Example pages: the ocean as an element, in a three.js scene, in React';
+    links.append(examples);
     const box = element('div', 'status-box');
-    box.append(this.status, this.time, this.help);
+    box.append(this.status, this.time, this.help, links);
     this.notices = element('div', 'notices');
     this.notices.setAttribute('role', 'status');
     this.notices.setAttribute('aria-live', 'polite');

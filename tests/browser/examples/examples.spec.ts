@@ -6,6 +6,7 @@ import type { DataTexture, WebGLRenderer } from 'three';
 import type { FftOceanElement } from '../../../src/embed/fftOceanElement';
 import type { Ocean } from '../../../src/ocean';
 import { DEFAULT_PARAMETERS } from '../../../src/parameters/parameters';
+import { PNG } from 'pngjs';
 import { serveDirectory } from '../../../scripts/static-server.mjs';
 
 // The example pages (served by Vite, as in the app build) and the built library (dist/lib)
@@ -113,6 +114,84 @@ test('three-scene.html: the ocean in a plain three.js scene, a crate floating on
   expect(result.background).toBe(true);
   expect(Math.max(...result.sky.slice(0, 3))).toBeGreaterThan(120);
   expect(errors).toEqual([]);
+});
+
+test.describe('the gallery (examples/index.html)', () => {
+  const examples = resolve(import.meta.dirname, '../../../examples');
+  /** Every example page: each examples/*.html but the gallery itself. */
+  const pages = readdirSync(examples)
+    .filter((name) => name.endsWith('.html') && name !== 'index.html')
+    .sort();
+
+  test('lists every example page, each with its thumbnail (320×180, loaded)', async ({ page }) => {
+    const errors = collectErrors(page);
+    await page.goto('/examples/index.html');
+    await page.waitForFunction(() => [...document.images].every((image) => image.complete));
+    const cards = await page.evaluate(() =>
+      [...document.querySelectorAll('.gallery li')].map((card) => {
+        const image = card.querySelector('img')!;
+        return {
+          href: card.querySelector('a')?.getAttribute('href') ?? null,
+          src: image.getAttribute('src')!,
+          size: [image.naturalWidth, image.naturalHeight],
+          text: card.querySelector('p')!.textContent!.trim(),
+        };
+      }),
+    );
+    const linked = cards.flatMap((card) => (card.href ? [card.href.replace(/^\.\//, '')] : []));
+    expect(linked.sort(), 'the pages the gallery links to').toEqual(pages);
+    // Every card (the react-three-fiber one too, which is not served here) has a picture and a sentence.
+    expect(cards.length).toBeGreaterThanOrEqual(pages.length);
+    for (const card of cards) {
+      expect(card.src, card.href ?? card.src).toMatch(/^\.\/thumbnails\/[\w-]+\.png$/);
+      expect(existsSync(join(examples, card.src)), card.src).toBe(true);
+      expect(card.size, `${card.src} loaded at its size`).toEqual([320, 180]);
+      expect(card.text.length, `${card.src}: a sentence`).toBeGreaterThan(40);
+    }
+    expect(errors).toEqual([]);
+  });
+
+  test("the app's Examples link opens the gallery", async ({ page }) => {
+    const errors = collectErrors(page);
+    await page.setViewportSize({ width: 640, height: 360 });
+    await page.goto('/');
+    await page.click('#status .status-links a');
+    await page.waitForURL('**/examples/index.html');
+    await expect(page).toHaveTitle(/^Examples/);
+    expect(errors).toEqual([]);
+  });
+
+  for (const name of pages) {
+    test(`${name}, opened from the gallery, draws a picture without errors`, async ({ page }) => {
+      const errors = collectErrors(page);
+      await page.setViewportSize({ width: 640, height: 360 });
+      await page.goto('/examples/index.html');
+      await page.click(`.gallery a[href="./${name}"]`);
+      await page.waitForURL(`**/examples/${name}`);
+      const canvas = page.locator('canvas').first();
+      await canvas.waitFor({ timeout: 60_000 });
+      // Drawn: the canvas is neither black nor one flat colour.
+      await expect
+        .poll(
+          async () => {
+            const { width, height, data } = PNG.sync.read(await canvas.screenshot());
+            let sum = 0;
+            let min = 255;
+            let max = 0;
+            for (let i = 0; i < width * height; i++) {
+              const value = (data[4 * i] + data[4 * i + 1] + data[4 * i + 2]) / 3;
+              sum += value;
+              min = Math.min(min, value);
+              max = Math.max(max, value);
+            }
+            return { mean: sum / (width * height) > 30, varied: max - min > 30 };
+          },
+          { timeout: 60_000, message: `${name}: a picture, not a black or flat canvas` },
+        )
+        .toEqual({ mean: true, varied: true });
+      expect(errors).toEqual([]);
+    });
+  }
 });
 
 test.describe('the built library (dist/lib) in a page without a bundler', () => {

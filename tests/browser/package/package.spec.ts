@@ -1,6 +1,6 @@
 import { expect, test, type Page } from '@playwright/test';
 import { execFileSync } from 'node:child_process';
-import { existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import { copyFileSync, existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { dirname, join, relative, resolve } from 'node:path';
 import { PNG } from 'pngjs';
@@ -92,33 +92,52 @@ function watchProblems(page: Page): string[] {
 }
 
 let workDir: string | undefined;
+let packed: string | undefined;
 test.afterAll(() => {
   if (workDir) rmSync(workDir, { recursive: true, force: true });
 });
 
+/** The folder this file's projects and tarball live in (removed after the tests). */
+function work(): string {
+  workDir ??= mkdtempSync(join(tmpdir(), 'three-fft-ocean-package-'));
+  return workDir;
+}
+
+/** The library packed as npm publishes it (prepack builds dist/lib; only `files` of package.json are in it), once per run. */
+function tarball(): string {
+  if (packed) return packed;
+  run('npm', ['pack', '--silent', '--pack-destination', work()], repo);
+  const name = readdirSync(work()).find((file) => file.endsWith('.tgz'));
+  if (!name) throw new Error('npm pack wrote no tarball');
+  packed = join(work(), name);
+  return packed;
+}
+
+/** A new project (folder `name` of the work folder) with `packages` installed: from npm's cache when they are there, else from the registry. */
+function newProject(name: string, packages: string[]): string {
+  const project = join(work(), name);
+  mkdirSync(project);
+  writeFileSync(join(project, 'package.json'), JSON.stringify({ name, private: true, type: 'module' }, null, 2));
+  const install = ['install', '--no-audit', '--no-fund', '--no-save', ...packages];
+  try {
+    run('npm', [...install, '--offline'], project); // from npm's cache: no network when all is there
+  } catch {
+    console.log(`package.spec: ${packages.filter((p) => !p.endsWith('.tgz')).join(', ')} not all in npm's cache; installing from the registry`);
+    run('npm', [...install, '--prefer-offline'], project);
+  }
+  return project;
+}
+
 test("the packed library in a new vite project: the README's Quick start shows the app's first view", async ({ page, browser }) => {
   test.setTimeout(180_000); // pack (builds the library), install, build, two pages: about 60 s here, more on a busy machine
-  workDir = mkdtempSync(join(tmpdir(), 'three-fft-ocean-package-'));
-  const project = join(workDir, 'project');
+  let project = '';
 
-  // Pack as npm publishes: prepack builds dist/lib. Only `files` of package.json are in it.
   await test.step('npm pack', () => {
-    run('npm', ['pack', '--silent', '--pack-destination', workDir!], repo);
+    expect(tarball(), 'the tarball npm pack wrote').toMatch(/\.tgz$/);
   });
-  const tarball = readdirSync(workDir).find((name) => name.endsWith('.tgz'));
-  expect(tarball, 'the tarball npm pack wrote').toBeTruthy();
 
   await test.step('install the tarball and three into a new project', () => {
-    mkdirSync(project);
-    writeFileSync(join(project, 'package.json'), JSON.stringify({ name: 'quick-start', private: true, type: 'module' }, null, 2));
-    const install = ['install', '--no-audit', '--no-fund', '--no-save', join(workDir!, tarball!), `three@${threeVersion}`];
-    try {
-      run('npm', [...install, '--offline'], project); // from npm's cache: no network when three is there
-    } catch {
-      // three is not in npm's cache on this machine yet: fetch it from the registry npm is set up with.
-      console.log(`package.spec: three@${threeVersion} is not in npm's cache; installing it from the registry`);
-      run('npm', [...install, '--prefer-offline'], project);
-    }
+    project = newProject('quick-start', [tarball(), `three@${threeVersion}`]);
     expect(JSON.parse(readFileSync(join(project, 'node_modules/three/package.json'), 'utf8')).version).toBe(threeVersion);
   });
 
@@ -221,6 +240,63 @@ test("the packed library in a new vite project: the README's Quick start shows t
     } finally {
       await appPage.close();
     }
+  } finally {
+    await server.close();
+  }
+});
+
+/**
+ * The react-three-fiber example (examples/react-three-fiber/) as its users build it: in a new
+ * project with React, react-dom, @react-three/fiber, three and the packed library, built by vite
+ * with no plugin (its own transform compiles the JSX), served as plain files. The versions: the
+ * newest of each whose peer ranges accept one another and three ${threeVersion} (fiber 9 wants
+ * React 19, below 19.4). With UPDATE_THUMBNAILS=1 its picture becomes the gallery's thumbnail
+ * (examples/thumbnails/react-three-fiber.png, the size of the others).
+ */
+const R3F_PACKAGES = ['react@19.3.1', 'react-dom@19.3.1', '@react-three/fiber@9.8.2'];
+
+test('the packed library in a new vite project with react-three-fiber: the example draws a sea', async ({ page }) => {
+  test.setTimeout(180_000);
+  // The guide shows this very file (docs/embedding.md, "With react-three-fiber").
+  const source = readFileSync(join(repo, 'examples/react-three-fiber/main.jsx'), 'utf8');
+  const guide = readFileSync(join(repo, 'docs/embedding.md'), 'utf8');
+  expect(guide, 'the example in docs/embedding.md as it is in examples/react-three-fiber/main.jsx').toContain(
+    `<!-- example: examples/react-three-fiber/main.jsx -->\n\`\`\`jsx\n${source}\`\`\`\n`,
+  );
+  let project = '';
+  await test.step('install React, react-three-fiber, three and the tarball into a new project', () => {
+    project = newProject('react-three-fiber', [tarball(), `three@${threeVersion}`, ...R3F_PACKAGES]);
+  });
+  await test.step('build examples/react-three-fiber/ with vite', () => {
+    for (const file of ['index.html', 'main.jsx']) copyFileSync(join(repo, 'examples/react-three-fiber', file), join(project, file));
+    run(join(repo, 'node_modules/.bin/vite'), ['build', project, '--logLevel', 'error'], project);
+  });
+  const site = join(project, 'dist');
+  const code = listFiles(site).filter((path) => path.endsWith('.js')).map((path) => readFileSync(join(site, path), 'utf8')).join('\n');
+  expect(code, 'the ocean built into the page').toContain('horizonDistanceFor');
+  expect(missingSourceMaps(site), "source maps named in the build but not in it").toEqual([]);
+
+  const server = await serveDirectory(site);
+  try {
+    await page.setViewportSize({ width: 320, height: 180 });
+    const problems = watchProblems(page);
+    await page.goto(`${server.url}/`);
+    await page.waitForFunction(() => document.querySelector('canvas') !== null);
+    // r3f draws every animation frame; the sea appears once the Ocean is made (in an effect) and drawn.
+    let picture = await screenshot(page);
+    await expect
+      .poll(async () => {
+        picture = await screenshot(page);
+        return meanColour(picture, 0, Math.round(picture.height / 10))[2];
+      }, { timeout: 60_000, message: 'a bright sky at the top' })
+      .toBeGreaterThan(120);
+    const { height } = picture;
+    const sky = meanColour(picture, 0, Math.round(height / 10));
+    const sea = meanColour(picture, Math.round((height * 3) / 4), height);
+    expect(sea[2], 'the sea is blue').toBeGreaterThan(sea[0] + 10);
+    expect(sky[0] + sky[1] + sky[2], 'the sky brighter than the sea').toBeGreaterThan(sea[0] + sea[1] + sea[2] + 30);
+    expect(problems, 'errors on the react-three-fiber page').toEqual([]);
+    if (process.env.UPDATE_THUMBNAILS) await page.locator('canvas').first().screenshot({ path: join(repo, 'examples/thumbnails/react-three-fiber.png') });
   } finally {
     await server.close();
   }
