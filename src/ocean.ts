@@ -228,6 +228,7 @@ export class Ocean extends Object3D<OceanEventMap> {
       this.simulation.localWaves?.cameraMoved(viewerPosition.x, viewerPosition.z);
     }
     this.simulation.update(timeSeconds);
+    this.surface.fitDrawingBuffer(this.renderer);
     this.currentTime = timeSeconds;
     if (!queryCodeWarm) this.warmUpQueries();
     const running = this.simulation.path;

@@ -72,6 +72,18 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
    * height if needed and centres the rings under `camera` (placeRings).
    */
   override onBeforeRender(renderer: WebGLRenderer, _scene: Scene, camera: Camera): void {
+    this.fitDrawingBuffer(renderer);
+    this.placeRings(camera);
+  }
+
+  /**
+   * Gives the grid as many cells a ring as `renderer`'s drawing buffer asks for. Called before the
+   * render (Ocean.update): three.js takes a mesh's geometry for a draw before its onBeforeRender,
+   * so a grid replaced there is drawn only from the next frame, and the frame that replaced it drew
+   * the old one (a first frame at 960×540 showed no sea). onBeforeRender calls it too, for a
+   * surface drawn without an Ocean's update and for a drawing buffer resized in between.
+   */
+  fitDrawingBuffer(renderer: WebGLRenderer): void {
     renderer.getDrawingBufferSize(this.viewport);
     const cells = cellsPerRingForViewport(this.viewport.y, this.fewestCells);
     if (cells !== this.cellsPerRing) {
@@ -79,7 +91,6 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
       this.geometry = createHorizonGridGeometry(cells);
       this.cellsPerRing = cells;
     }
-    this.placeRings(camera);
   }
 
   /** Height above the sea of the camera of the last render (0 before the first). */

@@ -102,6 +102,8 @@ const harness = {
   DisposedError,
   Color,
   Vector3,
+  Scene,
+  PerspectiveCamera,
   setup,
   view,
   setUniformEnvironment,
