@@ -223,7 +223,10 @@ export class Ocean extends Object3D<OceanEventMap> {
   update(timeSeconds: number, camera?: Object3D): void {
     this.checkAlive('update');
     if (camera !== undefined) {
-      if (!(camera instanceof Object3D)) throw new ParameterError('update(t, camera)', camera, 'a three.js camera (an Object3D) the local waves follow, or nothing');
+      // Duck-typed, as three.js does: a camera from another copy of three counts too.
+      if ((camera as { isObject3D?: unknown } | null)?.isObject3D !== true) {
+        throw new ParameterError('update(t, camera)', camera, 'a three.js camera (an Object3D) the local waves follow, or nothing');
+      }
       camera.getWorldPosition(viewerPosition);
       this.simulation.localWaves?.cameraMoved(viewerPosition.x, viewerPosition.z);
     }
