@@ -673,3 +673,33 @@ test("an Ocean's first frame draws the sea: the grid the drawing buffer asks for
   expect(result.differing).toBe(0);
   expect(result.spread).toBeGreaterThan(5);
 });
+
+test("update(t, camera): the local waves' grid follows the camera given, stays without one, and a bad camera is refused naming it", async ({ page }) => {
+  await openOcean(page, 160, 90);
+  const result = await page.evaluate(() => {
+    const { Ocean, ParameterError, PerspectiveCamera, renderer } = window.ocean;
+    const ocean = new Ocean(renderer, { resolution: 16, worker: false });
+    const waves = ocean.localWaves!;
+    const camera = new PerspectiveCamera();
+    const centre = () => waves.frame.origin.map((o) => o + waves.frame.size / 2);
+    camera.position.set(300.4, 5, -120.2);
+    ocean.update(1, camera);
+    ocean.update(1.1, camera); // the grid moves at the update that steps after the target changed
+    const followed = centre();
+    ocean.update(1.2);
+    const withoutCamera = centre();
+    let error = '';
+    try {
+      ocean.update(1.3, { position: [0, 0, 0] } as never);
+    } catch (e) {
+      error = `${e instanceof ParameterError}: ${(e as Error).message}`;
+    }
+    ocean.dispose();
+    return { followed, withoutCamera, error, cell: waves.grid.cellSize };
+  });
+  // Centred under the camera to within a texel of the grid (it moves in whole texels).
+  expect(Math.abs(result.followed[0] - 300.4)).toBeLessThanOrEqual(result.cell);
+  expect(Math.abs(result.followed[1] + 120.2)).toBeLessThanOrEqual(result.cell);
+  expect(result.withoutCamera).toEqual(result.followed);
+  expect(result.error).toMatch(/^true: update\(t, camera\) must be a three\.js camera \(an Object3D\) the local waves follow, or nothing; got /);
+});
