@@ -62,9 +62,13 @@ crateBody.position.y = 0.5 - crateBody.restingDraft;
 crateBody.pressOn(ocean.localWaves);
 let lastTime: number | null = null;
 
-/** Moves the crate by the time since the last frame (at most 0.25 s: a hidden tab does not throw it). */
+/**
+ * Moves the crate by the time since the last frame, so that it keeps up with the waves however slow
+ * the frames (the body substeps by itself); at most 2 s, so a tab hidden for a minute does not make
+ * one frame integrate the whole minute.
+ */
 function floatCrate(t: number): void {
-  if (lastTime !== null && t > lastTime) crateBody.step(Math.min(t - lastTime, 0.25), ocean);
+  if (lastTime !== null && t > lastTime) crateBody.step(Math.min(t - lastTime, 2), ocean);
   lastTime = t;
   crate.position.copy(crateBody.position);
   crate.quaternion.copy(crateBody.orientation);
