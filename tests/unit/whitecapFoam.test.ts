@@ -5,10 +5,22 @@
  */
 import { describe, expect, it } from 'vitest';
 import { CpuWaveFields } from '../../src/fft/cpuWaveFields';
-import { CpuFoamField, foamCreationRate, foamSchedule, foldingDegree, FOAM_J_FULL, FOAM_J_START, nearestTexels, WARM_UP_STEPS } from '../../src/layers/foamModel';
+import {
+  calibrateFoam,
+  CpuFoamField,
+  erfc,
+  foamCreationRate,
+  foamSchedule,
+  foldingDegree,
+  jacobianCovariance,
+  nearestTexels,
+  NO_FOAM,
+  WARM_UP_STEPS,
+  whitecapFraction,
+} from '../../src/layers/foamModel';
 import { validateParameters, type SimulationParameters } from '../../src/parameters/parameters';
 import { createCascadeSpectra } from '../../src/spectrum/initialSpectrum';
-import { beaufortPreset } from '../../src/spectrum/presets';
+import { beaufortPreset, SEA_PRESETS } from '../../src/spectrum/presets';
 
 /** The sea's cascades in JS and the foam over its largest patch, advanced as whitecapFoam.ts does. */
 function seaWithFoam(parameters: Partial<SimulationParameters>) {
@@ -17,16 +29,19 @@ function seaWithFoam(parameters: Partial<SimulationParameters>) {
   const cascades = spectra.map((spectrum) => ({ fields: new CpuWaveFields(spectrum), size: spectrum.patchSize, resolution: spectrum.resolution }));
   const largest = spectra[spectra.length - 1];
   const foam = new CpuFoamField(largest.patchSize, largest.resolution);
+  // What OceanSimulation.foamCalibration gives.
+  const calibration = calibrateFoam(jacobianCovariance(spectra), p.choppiness, p.windSpeed);
   let lastTime = NaN;
   return {
     foam,
+    calibration,
     advance(t: number): void {
       const { clear, steps } = foamSchedule(lastTime, t, p.foamPersistence);
       lastTime = t;
       if (clear) foam.clear();
       for (const { time, dt } of steps) {
         for (const cascade of cascades) cascade.fields.update(time);
-        foam.step(cascades, p.choppiness, p.foamAmount * foamCreationRate(p.windSpeed), p.foamPersistence, dt);
+        foam.step(cascades, p.choppiness, calibration, foamCreationRate(calibration, p.foamAmount, p.foamPersistence), p.foamPersistence, dt);
       }
     },
   };
@@ -34,37 +49,89 @@ function seaWithFoam(parameters: Partial<SimulationParameters>) {
 
 const mean = (values: Float32Array) => values.reduce((sum, v) => sum + v, 0) / values.length;
 
-/** Monahan & O'Muircheartaigh (1980), "Optimal power-law description of oceanic whitecap coverage dependence on wind speed", J. Phys. Oceanogr. 10:2094–2099: whitecap fraction W(U10). */
+/**
+ * Monahan & O'Muircheartaigh (1980), "Optimal power-law description of oceanic whitecap coverage
+ * dependence on wind speed", J. Phys. Oceanogr. 10:2094–2099, eq. 5: whitecap fraction W(U10),
+ * written out here apart from the model's whitecapFraction.
+ */
 const monahan = (windSpeed: number) => 3.84e-6 * windSpeed ** 3.41;
 
-/** Mean coverage over 2 s after a warm-up to t = 20 s, sampled every 0.4 s with steps of 0.1 s. */
-function measuredCoverage(parameters: Partial<SimulationParameters>): number {
+/**
+ * Mean coverage over `seconds` after a warm-up to t = 20 s, sampled every 0.4 s with steps of 0.1 s
+ * (the JS foam, as whitecapFoam.ts advances it).
+ */
+function measuredCoverage(parameters: Partial<SimulationParameters>, seconds = 2): number {
   const sea = seaWithFoam(parameters);
   sea.advance(20);
-  let sum = 0;
-  for (let k = 1; k <= 20; k++) {
+  let [sum, samples] = [0, 0];
+  for (let k = 1; k <= Math.round(seconds / 0.1); k++) {
     sea.advance(20 + k * 0.1);
-    if (k % 4 === 0) sum += mean(sea.foam.coverage);
+    if (k % 4 === 0) [sum, samples] = [sum + mean(sea.foam.coverage), samples + 1];
   }
-  return sum / 5;
+  return sum / samples;
 }
 
+/** Rows of a Markdown table. */
+const table = (head: string[], rows: (string | number)[][]) =>
+  [`| ${head.join(' | ')} |`, `|${head.map(() => '---').join('|')}|`, ...rows.map((r) => `| ${r.join(' | ')} |`)].join('\n');
+const percent = (w: number) => (100 * w).toPrecision(3);
+
 describe('whitecap coverage against Monahan & O’Muircheartaigh (1980)', () => {
-  it('is within a factor of 2 of W = 3.84e-6·U10^3.41 from 4 to 20 m/s, and grows with the wind', () => {
-    const rows = [4, 6, 8, 10, 12, 15, 20].map((windSpeed) => {
-      const coverage = measuredCoverage({ windSpeed });
-      return { windSpeed, coverage, monahan: monahan(windSpeed), ratio: coverage / monahan(windSpeed) };
+  it('is within a factor of 2 of W = 3.84e-6·U10^3.41 on every preset (N = 128)', () => {
+    const seas: [string, Partial<SimulationParameters>][] = [
+      ...Object.entries(SEA_PRESETS),
+      ...[3, 4, 5, 6, 7, 8, 9, 10, 11, 12].map((force): [string, Partial<SimulationParameters>] => [`Beaufort ${force}`, beaufortPreset(force)]),
+    ];
+    const rows = seas.map(([name, preset]) => {
+      const windSpeed = preset.windSpeed!;
+      const coverage = measuredCoverage({ ...preset, resolution: 128 }, 4);
+      return { name, windSpeed, cascades: preset.patchSizes!.length, coverage, monahan: monahan(windSpeed) };
     });
     console.log(
-      ['| U10 (m/s) | measured W (%) | Monahan W (%) | ratio |', '|---|---|---|---|']
-        .concat(rows.map((r) => `| ${r.windSpeed} | ${(100 * r.coverage).toPrecision(3)} | ${(100 * r.monahan).toPrecision(3)} | ${r.ratio.toFixed(2)} |`))
-        .join('\n'),
+      table(
+        ['preset', 'U10 (m/s)', 'cascades', 'measured W (%)', 'Monahan W (%)', 'ratio'],
+        rows.map((r) => [r.name, r.windSpeed, r.cascades, percent(r.coverage), percent(r.monahan), r.windSpeed > 3.3 ? (r.coverage / r.monahan).toFixed(2) : '– (onset: none)']),
+      ),
     );
+    for (const row of rows) {
+      // Force 2 and below (the calm preset, 3 m/s): none, by the onset rule (WMO: crests do not break).
+      if (row.windSpeed <= 3.3) expect(row.coverage, row.name).toBe(0);
+      else {
+        expect(row.coverage / row.monahan, row.name).toBeGreaterThan(0.5);
+        expect(row.coverage / row.monahan, row.name).toBeLessThan(2);
+      }
+    }
+  }, 60_000);
+
+  it('is within a factor of 2 of W from 4 to 25 m/s on the default sea, and grows with the wind', () => {
+    const rows = [4, 6, 8, 10, 12, 15, 20, 25].map((windSpeed) => {
+      const coverage = measuredCoverage({ windSpeed, resolution: 128 }, 4);
+      return { windSpeed, coverage, monahan: monahan(windSpeed), ratio: coverage / monahan(windSpeed) };
+    });
+    console.log(table(['U10 (m/s)', 'measured W (%)', 'Monahan W (%)', 'ratio'], rows.map((r) => [r.windSpeed, percent(r.coverage), percent(r.monahan), r.ratio.toFixed(2)])));
     for (const row of rows) {
       expect(row.ratio, `U10 = ${row.windSpeed} m/s`).toBeGreaterThan(0.5);
       expect(row.ratio, `U10 = ${row.windSpeed} m/s`).toBeLessThan(2);
     }
     rows.slice(1).forEach((row, i) => expect(row.coverage).toBeGreaterThan(rows[i].coverage));
+  }, 60_000);
+
+  it('is the same within ±20 % at every quality level’s grid and patch layout (12 m/s, seed 5)', () => {
+    // The grids of src/timing/adaptiveQuality.ts' QUALITY_STEPS (simulationAtQuality: N at most
+    // the level's, the largest maxCascades patches), and two layouts more: N = 512, and 4 cascades.
+    const defaults = [13.7, 79.3, 457];
+    const layouts: [string, Partial<SimulationParameters>, number][] = [
+      ['high (N 256, 3 cascades)', { resolution: 256, patchSizes: defaults }, 2],
+      ['N 512, 3 cascades', { resolution: 512, patchSizes: defaults }, 1.2],
+      ['4 cascades (2.37 m added), N 256', { resolution: 256, patchSizes: [2.37, ...defaults] }, 2],
+      ['medium (N 128, 3 cascades)', { resolution: 128, patchSizes: defaults }, 4],
+      ['low (N 64, 2 cascades)', { resolution: 64, patchSizes: defaults.slice(1) }, 20],
+      ['lowest (N 32, 2 cascades)', { resolution: 32, patchSizes: defaults.slice(1) }, 40],
+    ];
+    const rows = layouts.map(([name, grid, seconds]) => ({ name, coverage: measuredCoverage({ windSpeed: 12, seed: 5, ...grid }, seconds) }));
+    const high = rows[0].coverage;
+    console.log(table(['grid', 'measured W (%)', 'Monahan W (%)', '÷ high'], rows.map((r) => [r.name, percent(r.coverage), percent(monahan(12)), (r.coverage / high).toFixed(2)])));
+    for (const row of rows) expect(Math.abs(row.coverage / high - 1), row.name).toBeLessThan(0.2);
   }, 60_000);
 
   it('is none in a calm: Beaufort 0 to 2 make no foam at all (WMO: crests do not break below force 3)', () => {
@@ -74,8 +141,12 @@ describe('whitecap coverage against Monahan & O’Muircheartaigh (1980)', () => 
       sea.advance(20.5);
       expect(sea.foam.coverage.every((v) => v === 0), `force ${force}`).toBe(true);
     }
-    expect(foamCreationRate(3.3)).toBe(0);
-    expect(foamCreationRate(3.4)).toBeGreaterThan(0);
+    // The onset rule: W = 0 up to 3.3 m/s (the top of force 2), Monahan's law above.
+    expect(whitecapFraction(3.3)).toBe(0);
+    expect(whitecapFraction(3.4)).toBeCloseTo(monahan(3.4), 12);
+    const covariance = jacobianCovariance(createCascadeSpectra(validateParameters({ windSpeed: 3.3, resolution: 64 })));
+    expect(calibrateFoam(covariance, 1, 3.3)).toEqual(NO_FOAM);
+    expect(calibrateFoam(covariance, 1, 3.4).foamPerFolding).toBeGreaterThan(0);
   });
 
   it('is none with foamAmount 0 or choppiness 0 (no fold without horizontal displacement)', () => {
@@ -89,20 +160,44 @@ describe('whitecap coverage against Monahan & O’Muircheartaigh (1980)', () => 
 
 describe('the foam model', () => {
   it('makes foam only below J_START and at the full rate from J_FULL down', () => {
-    expect(foldingDegree(FOAM_J_START)).toBe(0);
-    expect(foldingDegree(1)).toBe(0);
-    expect(foldingDegree(FOAM_J_FULL)).toBe(1);
-    expect(foldingDegree(-3)).toBe(1);
-    expect(foldingDegree((FOAM_J_START + FOAM_J_FULL) / 2)).toBeCloseTo(0.5, 12);
+    const [start, full] = [0.6, 0.1];
+    expect(foldingDegree(start, start, full)).toBe(0);
+    expect(foldingDegree(1, start, full)).toBe(0);
+    expect(foldingDegree(full, start, full)).toBe(1);
+    expect(foldingDegree(-3, start, full)).toBe(1);
+    expect(foldingDegree((start + full) / 2, start, full)).toBeCloseTo(0.5, 12);
   });
 
   it('decays as e^(−t/τ) where no new foam is made', () => {
     const field = new CpuFoamField(100, 4);
     field.coverage.fill(0.8);
     const flat = { fields: { displacement: new Float32Array(64), derivatives: new Float32Array(64) }, size: 100, resolution: 4 };
-    for (let k = 0; k < 30; k++) field.step([flat], 1, 60, 3, 0.1);
+    for (let k = 0; k < 30; k++) field.step([flat], 1, { jacobianStart: 0.5, jacobianFull: 0, foamPerFolding: 180 }, 60, 3, 0.1);
     // 3 s at τ = 3 s: e^{−1}.
     for (const v of field.coverage) expect(v).toBeCloseTo(0.8 * Math.exp(-1), 6);
+  });
+
+  it('computes erfc to 1.2e-7 (Abramowitz & Stegun 1964, Table 7.1: erf 0.5, 1, 2)', () => {
+    expect(erfc(0)).toBeCloseTo(1, 7);
+    expect(erfc(0.5)).toBeCloseTo(1 - 0.5204998778, 7);
+    expect(erfc(1)).toBeCloseTo(1 - 0.8427007929, 7);
+    expect(erfc(2)).toBeCloseTo(1 - 0.9953222650, 7);
+    expect(erfc(-1)).toBeCloseTo(1 + 0.8427007929, 7);
+  });
+
+  it('makes no foam without choppiness or without slopes, and calibrates J_START, J_FULL and R·τ by the wind', () => {
+    const zero = { aa: 0, bb: 0, cc: 0, ab: 0, ac: 0, bc: 0 };
+    expect(calibrateFoam(zero, 1, 20)).toEqual(NO_FOAM);
+    const covariance = jacobianCovariance(createCascadeSpectra(validateParameters({ windSpeed: 12, resolution: 64 })));
+    expect(calibrateFoam(covariance, 0, 20)).toEqual(NO_FOAM);
+    const [gentle, strong] = [calibrateFoam(covariance, 1, 6), calibrateFoam(covariance, 1, 20)];
+    // More whitecaps on the same slopes: a threshold nearer 1 (more of the surface makes foam).
+    expect(strong.jacobianStart).toBeGreaterThan(gentle.jacobianStart);
+    for (const c of [gentle, strong]) {
+      expect(c.jacobianFull).toBeLessThan(c.jacobianStart);
+      expect(c.jacobianStart).toBeLessThan(1);
+      expect(c.foamPerFolding).toBeGreaterThan(0);
+    }
   });
 
   it('picks each cascade’s nearest texel in float32 arithmetic, wrapping at the patch', () => {
