@@ -12,7 +12,10 @@
  *         §4.6: J < 1 where the surface is squeezed, J < 0 where it folds over itself):
  *         J = (1 + λ·ΣDx,x)(1 + λ·ΣDz,z) − (λ·ΣDx,z)²;
  *   C(J)  how near the surface is to folding: 0 above J_START, 1 at or below J_FULL, linear between;
- *   R     the foam made per second at C = 1.
+ *   R     the foam made per second at C = 1;
+ *   τ     the persistence: whitecap foam decays over seconds (Callaghan et al. 2012, "Observed
+ *         variation in the decay time of oceanic whitecap foam", J. Geophys. Res. 117: e-folding
+ *         times of a few seconds).
  * The simulated Jacobian says WHERE foam is made; the sea's statistics say HOW MUCH. Averaged over
  * the surface and over time, the equation (without the clamp) has the steady state
  *     E[F] = R·τ·E[C(J)],
@@ -25,14 +28,14 @@
  * amplitudes h̃0, so jointly Gaussian with a covariance that the cascades' own modes give). The
  * amount then does not depend on the grid N, the number of cascades or their patch sizes: a coarse
  * grid that resolves fewer slopes gets a threshold J_START nearer 1, a fine one a lower one.
- * J_START is the quantile of J at probability FOAM_ACTIVE_FRACTION·W (foam is made on a few times
- * the area it covers, the active crests), J_FULL the one at a quarter of that.
+ * J_START is the quantile of J at probability FOAM_ACTIVE_FRACTION·W, J_FULL the one at a quarter
+ * of that: foam is made on twice the area it covers, the crests that are squeezed most. These two
+ * shares are choices of look, not physics: they set how dense the foam is where it is (R·τ comes
+ * out near 1, so the densest patches are nearly white and F ≤ 1 seldom clips), not how much there
+ * is, which the calibration fixes.
  * No crest breaks below Beaufort force 3 (WMO: at force 2 "crests have a glassy appearance and do
  * not break"; at force 3 "crests begin to break"), that is at winds up to 3.3 m/s, the top of force
  * 2: there R = 0.
- *   τ     the persistence: whitecap foam decays over seconds (Callaghan et al. 2012, "Observed
- *         variation in the decay time of oceanic whitecap foam", J. Geophys. Res. 117: e-folding
- *         times of a few seconds).
  * shaders/foam/whitecapFoam.frag is the same model on the GPU.
  */
 import { detExp, detPow } from '../spectrum/deterministicMath';
