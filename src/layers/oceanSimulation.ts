@@ -81,7 +81,7 @@ export class OceanSimulation {
   private readonly useWorker: boolean;
   private lastTime = NaN;
   /** The cascades' Jacobian statistics (foamModel.ts), made once per set of spectra. */
-  private covariance: { spectra: readonly InitialSpectrum[]; value: JacobianCovariance } | null = null;
+  private covariance: { cascades: readonly FftCascade[]; spectra: readonly InitialSpectrum[]; value: JacobianCovariance } | null = null;
   /** The foam's calibration for the choppiness and wind it was made for (calibrateFoam). */
   private calibration: { covariance: JacobianCovariance; choppiness: number; windSpeed: number; value: FoamCalibration } | null = null;
   /**
@@ -233,9 +233,11 @@ export class OceanSimulation {
    * Layers added with addLayer join the Jacobian but not these statistics.
    */
   get foamCalibration(): FoamCalibration {
-    const spectra = this.spectra;
-    if (this.covariance === null || this.covariance.spectra.length !== spectra.length || this.covariance.spectra.some((s, i) => s !== spectra[i])) {
-      this.covariance = { spectra, value: jacobianCovariance(spectra) };
+    // Per frame this only compares the cascades' array (replaced on every rebuild): no allocation.
+    if (this.covariance === null || this.covariance.cascades !== this.currentCascades) {
+      const spectra = this.spectra;
+      const same = this.covariance !== null && this.covariance.spectra.length === spectra.length && this.covariance.spectra.every((s, i) => s === spectra[i]);
+      this.covariance = { cascades: this.currentCascades, spectra, value: same ? this.covariance!.value : jacobianCovariance(spectra) };
     }
     const covariance = this.covariance.value;
     const { choppiness, windSpeed } = this.currentParameters;
