@@ -18,6 +18,8 @@ import {
 } from '../../src/layers/foamModel';
 import { validateParameters } from '../../src/parameters/parameters';
 import { createCascadeSpectra } from '../../src/spectrum/initialSpectrum';
+import type { WebGLRenderer } from 'three';
+import { OceanSimulation } from '../../src/layers/oceanSimulation';
 import { beaufortPreset } from '../../src/spectrum/presets';
 import { mean, seaWithFoam } from './seaWithFoam';
 
@@ -93,6 +95,26 @@ describe('the foam model', () => {
       expect(c.jacobianStart).toBeLessThan(1);
       expect(c.foamPerFolding).toBeGreaterThan(0);
     }
+  });
+
+  it('is calibrated once per sea, choppiness and wind by OceanSimulation (JS path), not per frame', () => {
+    // A stand-in renderer: the JS path without workers or local waves asks it only for extensions.
+    const renderer = { extensions: { has: () => false } } as unknown as WebGLRenderer;
+    const simulation = new OceanSimulation(renderer, { windSpeed: 12, resolution: 64 }, { path: 'js', worker: false, localWaves: false });
+    const first = simulation.foamCalibration;
+    expect(first).toEqual(calibrateFoam(jacobianCovariance(simulation.spectra), 1, 12));
+    simulation.update(20);
+    simulation.update(20.1);
+    expect(simulation.foamCalibration).toBe(first);
+    expect(mean(simulation.foam.coverageOnCpu())).toBeGreaterThan(0);
+    simulation.setParameters({ choppiness: 1.2 });
+    const steeper = simulation.foamCalibration;
+    expect(steeper).not.toBe(first);
+    simulation.pathPreference = 'js'; // a rebuild with the same spectra
+    expect(simulation.foamCalibration).toBe(steeper);
+    simulation.setParameters({ windSpeed: 3 });
+    expect(simulation.foamCalibration).toEqual(NO_FOAM);
+    simulation.dispose();
   });
 
   it('picks each cascade’s nearest texel in float32 arithmetic, wrapping at the patch', () => {
