@@ -3,6 +3,7 @@
 //   J = (1 + λ·ΣDx,x)(1 + λ·ΣDz,z) − (λ·ΣDx,z)²   over every cascade (Tessendorf 2001 §4.6)
 //   C = clamp((J_START − J) / (J_START − J_FULL), 0, 1)
 //   F ← min(1, F·decay + gain·C),   decay = e^{−Δt/τ}, gain = R·τ·(1 − decay)
+// J_START, J_FULL and R are the sea's, from its Jacobian statistics (calibrateFoam in foamModel.ts).
 // Each cascade is read at its texel nearest to the foam texel's point, index
 // floor(i·texelScale + ½) mod N, in float32 as nearestTexels() in foamModel.ts computes it.
 // LAYER_COUNT is a define; the loop is unrolled (see shaders/surface/waveLayers.glsl why).
@@ -12,8 +13,8 @@ uniform highp sampler2D tLayerDerivatives[LAYER_COUNT];   // (∂h/∂x, ∂h/�
 uniform float layerTexelScale[LAYER_COUNT];  // the layer's texels per foam texel
 uniform int layerResolution[LAYER_COUNT];
 uniform float choppiness;
-uniform float jacobianStart;  // FOAM_J_START
-uniform float jacobianFull;   // FOAM_J_FULL
+uniform float jacobianStart;  // J_START of the sea (foamModel.ts' calibrateFoam)
+uniform float jacobianFull;   // J_FULL of the sea
 uniform float decay;
 uniform float gain;
 

@@ -30,6 +30,7 @@ import { FftCascade, type FftBackend } from './fftCascade';
 import { isSoftwareRenderer } from './gpuLocalWaves';
 import { LOCAL_WAVES_OPTION_KEYS, LocalWaves, type LocalWavesOptions } from './localWaves';
 import { orderLayers, type WaveLayer } from './waveLayer';
+import { calibrateFoam, jacobianCovariance, type FoamCalibration, type JacobianCovariance } from './foamModel';
 import { WhitecapFoam } from './whitecapFoam';
 
 /** Which implementation computes the fields. */
@@ -79,6 +80,10 @@ export class OceanSimulation {
   private preference: PathPreference;
   private readonly useWorker: boolean;
   private lastTime = NaN;
+  /** The cascades' Jacobian statistics (foamModel.ts), made once per set of spectra. */
+  private covariance: { cascades: readonly FftCascade[]; spectra: readonly InitialSpectrum[]; value: JacobianCovariance } | null = null;
+  /** The foam's calibration for the choppiness and wind it was made for (calibrateFoam). */
+  private calibration: { covariance: JacobianCovariance; choppiness: number; windSpeed: number; value: FoamCalibration } | null = null;
   /**
    * What the last rebuild replaced (cascades, foam), freed after the next update: by then their
    * successors have drawn with the same shaders, which three.js then reuses instead of deleting
@@ -217,9 +222,30 @@ export class OceanSimulation {
     this.notUpdatedYet.clear();
     this.madeSinceUpdate.clear();
     this.lastTime = t;
-    const { choppiness, windSpeed, foamAmount, foamPersistence } = this.currentParameters;
-    this.currentFoam!.update(t, { choppiness, windSpeed, amount: foamAmount, persistence: foamPersistence });
+    const { choppiness, foamAmount, foamPersistence } = this.currentParameters;
+    this.currentFoam!.update(t, { choppiness, calibration: this.foamCalibration, amount: foamAmount, persistence: foamPersistence });
     this.disposeRetired();
+  }
+
+  /**
+   * J_START, J_FULL and R·τ of the whitecap foam for this sea (foamModel.ts' calibrateFoam): from
+   * the cascades' modes, the choppiness and the wind; made again only when one of them changed.
+   * Layers added with addLayer join the Jacobian but not these statistics.
+   */
+  get foamCalibration(): FoamCalibration {
+    // Per frame this only compares the cascades' array (replaced on every rebuild): no allocation.
+    if (this.covariance === null || this.covariance.cascades !== this.currentCascades) {
+      const spectra = this.spectra;
+      const same = this.covariance !== null && this.covariance.spectra.length === spectra.length && this.covariance.spectra.every((s, i) => s === spectra[i]);
+      this.covariance = { cascades: this.currentCascades, spectra, value: same ? this.covariance!.value : jacobianCovariance(spectra) };
+    }
+    const covariance = this.covariance.value;
+    const { choppiness, windSpeed } = this.currentParameters;
+    const cached = this.calibration;
+    if (cached === null || cached.covariance !== covariance || cached.choppiness !== choppiness || cached.windSpeed !== windSpeed) {
+      this.calibration = { covariance, choppiness, windSpeed, value: calibrateFoam(covariance, choppiness, windSpeed) };
+    }
+    return this.calibration!.value;
   }
 
   /** Frees the cascades, the local waves and the foam; the layers added stay the caller's. */

@@ -35,23 +35,18 @@ import {
 } from 'three';
 import { FullscreenPass, fullscreenMaterial, periodicFieldTarget, runPasses } from '../fft/fullscreenPass';
 import { shaderSource, withLayerCount } from '../shaderSource';
-import {
-  CpuFoamField,
-  FOAM_J_FULL,
-  FOAM_J_START,
-  foamCreationRate,
-  foamSchedule,
-  foamStep,
-  type CascadeOnCpu,
-} from './foamModel';
+import { CpuFoamField, foamCreationRate, foamSchedule, foamStep, type CascadeOnCpu, type FoamCalibration } from './foamModel';
 import type { LayerFrame, WaveLayer } from './waveLayer';
 
 /** What the foam depends on besides the layers. */
 export interface FoamSettings {
   /** λ of the choppy map whose Jacobian makes foam. */
   choppiness: number;
-  /** U10, m/s: no foam below Beaufort 3 (foamModel.ts). */
-  windSpeed: number;
+  /**
+   * J_START, J_FULL and R·τ of the sea (foamModel.ts' calibrateFoam: from the layers' Jacobian
+   * statistics, the choppiness and the wind; no foam below Beaufort 3).
+   */
+  calibration: FoamCalibration;
   /** Multiplies the foam made; 1 is the physical amount, 0 none. */
   amount: number;
   /** τ, s. */
@@ -87,7 +82,7 @@ export class WhitecapFoam {
    * the GPU path recomputes the layers at the warm-up's times, ending at t.
    */
   update(t: number, settings: FoamSettings): void {
-    const rate = settings.amount * foamCreationRate(settings.windSpeed);
+    const rate = foamCreationRate(settings.calibration, settings.amount, settings.persistence);
     const { clear, steps } = foamSchedule(this.lastTime, t, settings.persistence);
     this.lastTime = t;
     if (clear) {
@@ -98,7 +93,7 @@ export class WhitecapFoam {
     this.empty = false;
     for (const { time, dt } of steps) {
       // A warm-up step recomputes the layers at its time; a step to t uses them as they are.
-      this.producer.step(this.layers, clear ? time : null, settings.choppiness, rate, settings.persistence, dt, t);
+      this.producer.step(this.layers, clear ? time : null, settings.choppiness, settings.calibration, rate, settings.persistence, dt, t);
     }
   }
 
@@ -138,19 +133,19 @@ class GpuFoam {
       layerTexelScale: { value: layers.map((layer) => (frame.size * layer.frame.resolution) / (m * layer.frame.size)) },
       layerResolution: { value: layers.map((layer) => layer.frame.resolution) },
       choppiness: { value: 1 },
-      jacobianStart: { value: FOAM_J_START },
-      jacobianFull: { value: FOAM_J_FULL },
+      jacobianStart: { value: 0 },
+      jacobianFull: { value: -1 },
       decay: { value: 1 },
       gain: { value: 0 },
     }, { LAYER_COUNT: layers.length });
   }
 
   clear(): void {
-    this.draw(1, 0, 0);
+    this.draw(1, { jacobianStart: 0, jacobianFull: -1 }, 0, 0);
   }
 
   /** One step; at `time` the layers are first recomputed (warm-up), null: they are current. */
-  step(layers: readonly WaveLayer[], time: number | null, choppiness: number, rate: number, persistence: number, dt: number): void {
+  step(layers: readonly WaveLayer[], time: number | null, choppiness: number, calibration: FoamCalibration, rate: number, persistence: number, dt: number): void {
     if (time !== null) for (const layer of layers) layer.update(time, 0);
     const { decay, gain } = foamStep(rate, persistence, dt);
     // A layer may show another texture after an update (a ping-pong): the pass reads those shown now.
@@ -159,7 +154,7 @@ class GpuFoam {
       u.tLayerDisplacement.value[i] = layer.textures.displacement.value;
       u.tLayerDerivatives.value[i] = layer.textures.derivatives.value;
     });
-    this.draw(choppiness, decay, gain);
+    this.draw(choppiness, calibration, decay, gain);
   }
 
   coverageOnCpu(): Float32Array {
@@ -171,11 +166,13 @@ class GpuFoam {
   }
 
   /** The pass, from the target shown to the other one, which is then shown. */
-  private draw(choppiness: number, decay: number, gain: number): void {
+  private draw(choppiness: number, { jacobianStart, jacobianFull }: Pick<FoamCalibration, 'jacobianStart' | 'jacobianFull'>, decay: number, gain: number): void {
     const [read, write] = this.texture.value === this.targets[0].texture ? this.targets : [this.targets[1], this.targets[0]];
     const u = this.material.uniforms;
     u.tPreviousFoam.value = read.texture;
     u.choppiness.value = choppiness;
+    u.jacobianStart.value = jacobianStart;
+    u.jacobianFull.value = jacobianFull;
     u.decay.value = decay;
     u.gain.value = gain;
     runPasses(this.renderer, () => {
@@ -227,13 +224,13 @@ class JsFoam {
    * One step; with `time` from the layers' fields computed at that time, else from those shown (a
    * layer that keeps its fields on the GPU only is read back at `now`).
    */
-  step(layers: readonly WaveLayer[], time: number | null, choppiness: number, rate: number, persistence: number, dt: number, now: number): void {
+  step(layers: readonly WaveLayer[], time: number | null, choppiness: number, calibration: FoamCalibration, rate: number, persistence: number, dt: number, now: number): void {
     const onCpu: CascadeOnCpu[] = layers.map((layer) => ({
       fields: time === null ? (layer.shownFieldsOnCpu() ?? layer.fieldsOnCpu(now)) : layer.fieldsOnCpu(time),
       size: layer.frame.size,
       resolution: layer.frame.resolution,
     }));
-    this.field.step(onCpu, choppiness, rate, persistence, dt);
+    this.field.step(onCpu, choppiness, calibration, rate, persistence, dt);
     this.dataTexture.needsUpdate = true;
   }
 

@@ -273,6 +273,8 @@ export interface SpectralMoments {
   m0: number;
   /** ωp, the argmax of S(ω), rad/s; 0 when there are no waves. */
   peakFrequency: number;
+  /** ∫k(ω)²·S(ω) dω, the variance of the slope of the modelled surface (with its small-wave cutoff). */
+  slopeVariance: number;
 }
 
 /** Step in ln ω: 0.002 puts 35 samples within one σ = 0.07 of a JONSWAP peak. */
@@ -289,24 +291,30 @@ export function spectralMoments(p: SeaStateParameters, phillipsPatchSize?: numbe
   const peaks: number[] = [];
   if (p.windSpeed > 0) peaks.push(p.spectrum === 'phillips' ? GRAVITY / p.windSpeed : windSeaPeakFrequency(p));
   if (p.spectrum !== 'phillips' && p.swellHeight > 0) peaks.push((2 * Math.PI) / p.swellPeriod);
-  if (peaks.length === 0) return { m0: 0, peakFrequency: 0 };
+  if (peaks.length === 0) return { m0: 0, peakFrequency: 0, slopeVariance: 0 };
   const spectrumAt = (t: number) => frequencySpectrum(detExp(t), p, phillipsPatchSize);
   const start = detLog(0.2 * Math.min(...peaks));
   const end = detLog(200 * Math.max(...peaks));
   const intervals = 2 * Math.ceil((end - start) / (2 * LOG_FREQUENCY_STEP));
   const h = (end - start) / intervals;
   let sum = 0;
+  let slopeSum = 0;
   let best = 0;
   let bestValue = 0;
   for (let i = 0; i <= intervals; i++) {
     const t = start + i * h;
     const value = spectrumAt(t);
-    sum += (i === 0 || i === intervals ? 1 : i % 2 === 1 ? 4 : 2) * value * detExp(t);
+    const weight = (i === 0 || i === intervals ? 1 : i % 2 === 1 ? 4 : 2) * value * detExp(t);
+    sum += weight;
+    if (weight > 0) {
+      const k = waveNumberFromFrequency(detExp(t), p.depth);
+      slopeSum += weight * k * k;
+    }
     if (value > bestValue) [best, bestValue] = [i, value];
   }
-  if (!(bestValue > 0)) return { m0: 0, peakFrequency: 0 };
+  if (!(bestValue > 0)) return { m0: 0, peakFrequency: 0, slopeVariance: 0 };
   const peak = goldenSectionMaximum(spectrumAt, start + (best - 1) * h, start + (best + 1) * h);
-  return { m0: (sum * h) / 3, peakFrequency: detExp(peak) };
+  return { m0: (sum * h) / 3, peakFrequency: detExp(peak), slopeVariance: (slopeSum * h) / 3 };
 }
 
 /** The argmax of f on [a, b], f unimodal there, to 3e-13 of b − a (60 golden-section steps). */
@@ -331,18 +339,90 @@ function goldenSectionMaximum(f: (t: number) => number, a: number, b: number): n
   return (a + b) / 2;
 }
 
+// ————— The slopes of the waves shorter than the small-wave cutoff —————
+
+/** Elfouhaily et al.'s gravity-capillary wave number k_m = 370 rad/m and its phase speed c_m = 0.23 m/s. */
+const CAPILLARY_PEAK = 370;
+const CAPILLARY_PEAK_SPEED = 0.23;
+
+/**
+ * u*, m/s, from U10 by Wu (1982), "Wind-stress coefficients over sea surface from breeze to
+ * hurricane", J. Geophys. Res. 87(C12): 9704–9706: C_D = (0.8 + 0.065·U10)·10⁻³, u* = √C_D·U10.
+ */
+export function frictionVelocity(windSpeed: number): number {
+  return Math.sqrt((0.8 + 0.065 * windSpeed) * 1e-3) * windSpeed;
+}
+
+/**
+ * The omnidirectional curvature spectrum B(k) = k³·S(k) of Elfouhaily, Chapron, Katsaros &
+ * Vandemark (1997), "A unified directional spectrum for long and short wind-driven waves",
+ * J. Geophys. Res. 102(C7): 15781–15796, eqs. 32–44 (deep water): B = B_l + B_h with
+ *   B_l = ½·α_p·(c_p/c)·F_p,  α_p = 6·10⁻³·√Ω,
+ *   F_p = L_PM·J_p·exp(−(Ω/√10)·(√(k/k_p) − 1)),  L_PM = exp(−(5/4)(k_p/k)²),  J_p = γ^Γ,
+ *   γ = 1.7 (0.84 ≤ Ω < 1), 1.7 + 6·log10 Ω (1 ≤ Ω ≤ 5),  Γ = exp(−(√(k/k_p) − 1)²/(2σ²)),
+ *   σ = 0.08·(1 + 4·Ω⁻³);
+ *   B_h = ½·α_m·(c_m/c)·F_m,  F_m = L_PM·J_p·exp(−¼(k/k_m − 1)²),
+ *   α_m = 10⁻²·(1 + ln(u* / c_m)) for u* ≤ c_m, 10⁻²·(1 + 3·ln(u* / c_m)) above;
+ *   c(k) = √((g/k)·(1 + (k/k_m)²)),  k_p = g·(Ω/U10)²  (Ω = U10/c_p, the inverse wave age).
+ */
+export function elfouhailyCurvature(k: number, windSpeed: number, inverseWaveAge: number): number {
+  const omega = Math.min(5, Math.max(0.84, inverseWaveAge));
+  const peak = (GRAVITY * omega * omega) / (windSpeed * windSpeed);
+  const peakSpeed = Math.sqrt(GRAVITY / peak);
+  const speed = Math.sqrt((GRAVITY / k) * (1 + (k * k) / (CAPILLARY_PEAK * CAPILLARY_PEAK)));
+  const gamma = omega < 1 ? 1.7 : 1.7 + (6 * detLog(omega)) / detLog(10);
+  const sigma = 0.08 * (1 + 4 / (omega * omega * omega));
+  const root = Math.sqrt(k / peak) - 1;
+  const shape = detExp((-1.25 * peak * peak) / (k * k)) * detPow(gamma, detExp((-root * root) / (2 * sigma * sigma)));
+  const long = 0.5 * 6e-3 * Math.sqrt(omega) * (peakSpeed / speed) * shape * detExp((-omega / Math.sqrt(10)) * root);
+  const uStar = frictionVelocity(windSpeed);
+  const ratio = detLog(uStar / CAPILLARY_PEAK_SPEED);
+  const alphaM = 1e-2 * (uStar <= CAPILLARY_PEAK_SPEED ? 1 + ratio : 1 + 3 * ratio);
+  const short = 0.5 * alphaM * (CAPILLARY_PEAK_SPEED / speed) * shape * detExp(-0.25 * (k / CAPILLARY_PEAK - 1) * (k / CAPILLARY_PEAK - 1));
+  return long + short;
+}
+
+/**
+ * The slope variance of the waves the small-wave cutoff ℓ takes out of the model: the share
+ * 1 − exp(−k²ℓ²) of Elfouhaily et al.'s spectrum (elfouhailyCurvature), ∫(1 − e^{−k²ℓ²})·B(k)/k dk,
+ * by Simpson's rule in ln k from k = 0.01/ℓ (where the share is 10⁻⁴) to 30·k_m (where
+ * exp(−¼(k/k_m − 1)²) < 10⁻⁹³), steps of 0.01. 0 without wind or without a cutoff (then the model
+ * keeps every wave up to 200 peak frequencies: see spectralMoments).
+ */
+export function unresolvedSlopeVariance(windSpeed: number, peakFrequency: number, cutoff: number): number {
+  if (!(windSpeed > 0 && peakFrequency > 0 && cutoff > 0)) return 0;
+  const inverseWaveAge = (windSpeed * peakFrequency) / GRAVITY; // U10/c_p, c_p = g/ωp in deep water
+  const [start, end] = [detLog(0.01 / cutoff), detLog(30 * CAPILLARY_PEAK)];
+  if (!(end > start)) return 0;
+  const intervals = 2 * Math.ceil((end - start) / 0.02);
+  const h = (end - start) / intervals;
+  let sum = 0;
+  for (let i = 0; i <= intervals; i++) {
+    const k = detExp(start + i * h);
+    const share = -detExpm1(-k * k * cutoff * cutoff);
+    sum += (i === 0 || i === intervals ? 1 : i % 2 === 1 ? 4 : 2) * share * elfouhailyCurvature(k, windSpeed, inverseWaveAge);
+  }
+  return (sum * h) / 3;
+}
+
 /**
  * Hs = 4·√m0 and Tp = 2π/ωp of the sea state that these parameters describe (DEFAULT_PARAMETERS
- * for every one not given; Tp = 0 when there are no waves):
+ * for every one not given; Tp = 0 when there are no waves), and the mean square slope of the whole
+ * surface: the model spectrum's ∫k²·S dω (with its small-wave cutoff ℓ) plus the slopes of the
+ * waves the cutoff removes, from Elfouhaily et al.'s (1997) gravity-capillary spectrum
+ * (unresolvedSlopeVariance). The model's own tail ends at ℓ (1 cm by default), well short of the
+ * capillary waves that carry about half of the slope that sun glitter shows (Cox & Munk 1954):
  *   seaState({ spectrum: 'jonswap', windSpeed: 17, fetch: 300 })
  * A bad or unknown option throws a ParameterError naming it (validateParameters). Phillips' Ψ
  * depends on the largest patch (patchSizes), as in the simulation.
  */
-export function seaState(options: Partial<SimulationParameters> = {}): { significantWaveHeight: number; peakPeriod: number } {
+export function seaState(options: Partial<SimulationParameters> = {}): { significantWaveHeight: number; peakPeriod: number; meanSquareSlope: number } {
   const parameters = validateParameters(options);
-  const { m0, peakFrequency } = spectralMoments(parameters, parameters.patchSizes[parameters.patchSizes.length - 1]);
+  const { m0, peakFrequency, slopeVariance } = spectralMoments(parameters, parameters.patchSizes[parameters.patchSizes.length - 1]);
+  const windPeak = parameters.windSpeed > 0 ? (parameters.spectrum === 'phillips' ? GRAVITY / parameters.windSpeed : windSeaPeakFrequency(parameters)) : 0;
   return {
     significantWaveHeight: 4 * Math.sqrt(m0),
     peakPeriod: peakFrequency > 0 ? (2 * Math.PI) / peakFrequency : 0,
+    meanSquareSlope: slopeVariance + unresolvedSlopeVariance(parameters.windSpeed, windPeak, parameters.smallWaveCutoff),
   };
 }

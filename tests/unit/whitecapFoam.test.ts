@@ -4,69 +4,33 @@
  * O'Muircheartaigh's law, none in a calm, its decay, frame-rate independence and determinism.
  */
 import { describe, expect, it } from 'vitest';
-import { CpuWaveFields } from '../../src/fft/cpuWaveFields';
-import { CpuFoamField, foamCreationRate, foamSchedule, foldingDegree, FOAM_J_FULL, FOAM_J_START, nearestTexels, WARM_UP_STEPS } from '../../src/layers/foamModel';
-import { validateParameters, type SimulationParameters } from '../../src/parameters/parameters';
+import {
+  calibrateFoam,
+  CpuFoamField,
+  erfc,
+  foamSchedule,
+  foldingDegree,
+  jacobianCovariance,
+  nearestTexels,
+  NO_FOAM,
+  WARM_UP_STEPS,
+  whitecapFraction,
+} from '../../src/layers/foamModel';
+import { validateParameters } from '../../src/parameters/parameters';
 import { createCascadeSpectra } from '../../src/spectrum/initialSpectrum';
+import type { WebGLRenderer } from 'three';
+import { OceanSimulation } from '../../src/layers/oceanSimulation';
 import { beaufortPreset } from '../../src/spectrum/presets';
+import { mean, seaWithFoam } from './seaWithFoam';
 
-/** The sea's cascades in JS and the foam over its largest patch, advanced as whitecapFoam.ts does. */
-function seaWithFoam(parameters: Partial<SimulationParameters>) {
-  const p = validateParameters(parameters);
-  const spectra = createCascadeSpectra(p);
-  const cascades = spectra.map((spectrum) => ({ fields: new CpuWaveFields(spectrum), size: spectrum.patchSize, resolution: spectrum.resolution }));
-  const largest = spectra[spectra.length - 1];
-  const foam = new CpuFoamField(largest.patchSize, largest.resolution);
-  let lastTime = NaN;
-  return {
-    foam,
-    advance(t: number): void {
-      const { clear, steps } = foamSchedule(lastTime, t, p.foamPersistence);
-      lastTime = t;
-      if (clear) foam.clear();
-      for (const { time, dt } of steps) {
-        for (const cascade of cascades) cascade.fields.update(time);
-        foam.step(cascades, p.choppiness, p.foamAmount * foamCreationRate(p.windSpeed), p.foamPersistence, dt);
-      }
-    },
-  };
-}
 
-const mean = (values: Float32Array) => values.reduce((sum, v) => sum + v, 0) / values.length;
-
-/** Monahan & O'Muircheartaigh (1980), "Optimal power-law description of oceanic whitecap coverage dependence on wind speed", J. Phys. Oceanogr. 10:2094–2099: whitecap fraction W(U10). */
+/**
+ * Monahan & O'Muircheartaigh (1980), J. Phys. Oceanogr. 10:2094–2099, eq. 5: whitecap fraction
+ * W(U10) (the law checks are in whitecapCoverage.test.ts).
+ */
 const monahan = (windSpeed: number) => 3.84e-6 * windSpeed ** 3.41;
 
-/** Mean coverage over 2 s after a warm-up to t = 20 s, sampled every 0.4 s with steps of 0.1 s. */
-function measuredCoverage(parameters: Partial<SimulationParameters>): number {
-  const sea = seaWithFoam(parameters);
-  sea.advance(20);
-  let sum = 0;
-  for (let k = 1; k <= 20; k++) {
-    sea.advance(20 + k * 0.1);
-    if (k % 4 === 0) sum += mean(sea.foam.coverage);
-  }
-  return sum / 5;
-}
-
-describe('whitecap coverage against Monahan & O’Muircheartaigh (1980)', () => {
-  it('is within a factor of 2 of W = 3.84e-6·U10^3.41 from 4 to 20 m/s, and grows with the wind', () => {
-    const rows = [4, 6, 8, 10, 12, 15, 20].map((windSpeed) => {
-      const coverage = measuredCoverage({ windSpeed });
-      return { windSpeed, coverage, monahan: monahan(windSpeed), ratio: coverage / monahan(windSpeed) };
-    });
-    console.log(
-      ['| U10 (m/s) | measured W (%) | Monahan W (%) | ratio |', '|---|---|---|---|']
-        .concat(rows.map((r) => `| ${r.windSpeed} | ${(100 * r.coverage).toPrecision(3)} | ${(100 * r.monahan).toPrecision(3)} | ${r.ratio.toFixed(2)} |`))
-        .join('\n'),
-    );
-    for (const row of rows) {
-      expect(row.ratio, `U10 = ${row.windSpeed} m/s`).toBeGreaterThan(0.5);
-      expect(row.ratio, `U10 = ${row.windSpeed} m/s`).toBeLessThan(2);
-    }
-    rows.slice(1).forEach((row, i) => expect(row.coverage).toBeGreaterThan(rows[i].coverage));
-  }, 60_000);
-
+describe('whitecap foam in a calm and without folds', () => {
   it('is none in a calm: Beaufort 0 to 2 make no foam at all (WMO: crests do not break below force 3)', () => {
     for (const force of [0, 1, 2]) {
       const sea = seaWithFoam({ ...beaufortPreset(force), resolution: 64 });
@@ -74,8 +38,12 @@ describe('whitecap coverage against Monahan & O’Muircheartaigh (1980)', () => 
       sea.advance(20.5);
       expect(sea.foam.coverage.every((v) => v === 0), `force ${force}`).toBe(true);
     }
-    expect(foamCreationRate(3.3)).toBe(0);
-    expect(foamCreationRate(3.4)).toBeGreaterThan(0);
+    // The onset rule: W = 0 up to 3.3 m/s (the top of force 2), Monahan's law above.
+    expect(whitecapFraction(3.3)).toBe(0);
+    expect(whitecapFraction(3.4)).toBeCloseTo(monahan(3.4), 12);
+    const covariance = jacobianCovariance(createCascadeSpectra(validateParameters({ windSpeed: 3.3, resolution: 64 })));
+    expect(calibrateFoam(covariance, 1, 3.3)).toEqual(NO_FOAM);
+    expect(calibrateFoam(covariance, 1, 3.4).foamPerFolding).toBeGreaterThan(0);
   });
 
   it('is none with foamAmount 0 or choppiness 0 (no fold without horizontal displacement)', () => {
@@ -89,20 +57,64 @@ describe('whitecap coverage against Monahan & O’Muircheartaigh (1980)', () => 
 
 describe('the foam model', () => {
   it('makes foam only below J_START and at the full rate from J_FULL down', () => {
-    expect(foldingDegree(FOAM_J_START)).toBe(0);
-    expect(foldingDegree(1)).toBe(0);
-    expect(foldingDegree(FOAM_J_FULL)).toBe(1);
-    expect(foldingDegree(-3)).toBe(1);
-    expect(foldingDegree((FOAM_J_START + FOAM_J_FULL) / 2)).toBeCloseTo(0.5, 12);
+    const [start, full] = [0.6, 0.1];
+    expect(foldingDegree(start, start, full)).toBe(0);
+    expect(foldingDegree(1, start, full)).toBe(0);
+    expect(foldingDegree(full, start, full)).toBe(1);
+    expect(foldingDegree(-3, start, full)).toBe(1);
+    expect(foldingDegree((start + full) / 2, start, full)).toBeCloseTo(0.5, 12);
   });
 
   it('decays as e^(−t/τ) where no new foam is made', () => {
     const field = new CpuFoamField(100, 4);
     field.coverage.fill(0.8);
     const flat = { fields: { displacement: new Float32Array(64), derivatives: new Float32Array(64) }, size: 100, resolution: 4 };
-    for (let k = 0; k < 30; k++) field.step([flat], 1, 60, 3, 0.1);
+    for (let k = 0; k < 30; k++) field.step([flat], 1, { jacobianStart: 0.5, jacobianFull: 0, foamPerFolding: 180 }, 60, 3, 0.1);
     // 3 s at τ = 3 s: e^{−1}.
     for (const v of field.coverage) expect(v).toBeCloseTo(0.8 * Math.exp(-1), 6);
+  });
+
+  it('computes erfc to 1.2e-7 (Abramowitz & Stegun 1964, Table 7.1: erf 0.5, 1, 2)', () => {
+    expect(erfc(0)).toBeCloseTo(1, 7);
+    expect(erfc(0.5)).toBeCloseTo(1 - 0.5204998778, 7);
+    expect(erfc(1)).toBeCloseTo(1 - 0.8427007929, 7);
+    expect(erfc(2)).toBeCloseTo(1 - 0.9953222650, 7);
+    expect(erfc(-1)).toBeCloseTo(1 + 0.8427007929, 7);
+  });
+
+  it('makes no foam without choppiness or without slopes, and calibrates J_START, J_FULL and R·τ by the wind', () => {
+    const zero = { aa: 0, bb: 0, cc: 0, ab: 0, ac: 0, bc: 0 };
+    expect(calibrateFoam(zero, 1, 20)).toEqual(NO_FOAM);
+    const covariance = jacobianCovariance(createCascadeSpectra(validateParameters({ windSpeed: 12, resolution: 64 })));
+    expect(calibrateFoam(covariance, 0, 20)).toEqual(NO_FOAM);
+    const [gentle, strong] = [calibrateFoam(covariance, 1, 6), calibrateFoam(covariance, 1, 20)];
+    // More whitecaps on the same slopes: a threshold nearer 1 (more of the surface makes foam).
+    expect(strong.jacobianStart).toBeGreaterThan(gentle.jacobianStart);
+    for (const c of [gentle, strong]) {
+      expect(c.jacobianFull).toBeLessThan(c.jacobianStart);
+      expect(c.jacobianStart).toBeLessThan(1);
+      expect(c.foamPerFolding).toBeGreaterThan(0);
+    }
+  });
+
+  it('is calibrated once per sea, choppiness and wind by OceanSimulation (JS path), not per frame', () => {
+    // A stand-in renderer: the JS path without workers or local waves asks it only for extensions.
+    const renderer = { extensions: { has: () => false } } as unknown as WebGLRenderer;
+    const simulation = new OceanSimulation(renderer, { windSpeed: 12, resolution: 64 }, { path: 'js', worker: false, localWaves: false });
+    const first = simulation.foamCalibration;
+    expect(first).toEqual(calibrateFoam(jacobianCovariance(simulation.spectra), 1, 12));
+    simulation.update(20);
+    simulation.update(20.1);
+    expect(simulation.foamCalibration).toBe(first);
+    expect(mean(simulation.foam.coverageOnCpu())).toBeGreaterThan(0);
+    simulation.setParameters({ choppiness: 1.2 });
+    const steeper = simulation.foamCalibration;
+    expect(steeper).not.toBe(first);
+    simulation.pathPreference = 'js'; // a rebuild with the same spectra
+    expect(simulation.foamCalibration).toBe(steeper);
+    simulation.setParameters({ windSpeed: 3 });
+    expect(simulation.foamCalibration).toEqual(NO_FOAM);
+    simulation.dispose();
   });
 
   it('picks each cascade’s nearest texel in float32 arithmetic, wrapping at the patch', () => {
