@@ -6,7 +6,7 @@
  */
 export { Ocean, DisposedError, type OceanOptions, type OceanPath, type OceanEventMap, type SunPosition } from './ocean';
 export { UnsupportedError } from './parameters/options';
-export { OceanSimulation, DEFAULT_SIMULATION_OPTIONS, type SimulationOptions, type SimulationPath, type PathPreference } from './layers/oceanSimulation';
+export { OceanSimulation, DEFAULT_SIMULATION_OPTIONS, PATH_PREFERENCES, type SimulationOptions, type SimulationPath, type PathPreference } from './layers/oceanSimulation';
 export {
   DEFAULT_PARAMETERS,
   ParameterError,

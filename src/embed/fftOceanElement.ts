@@ -69,13 +69,12 @@ import { DEFAULT_QUALITY, QUALITY_OPTIONS } from '../parameters/qualityOptions';
 import { Boat } from '../objects/boat';
 import { SunLight } from '../objects/sunLight';
 import { SimulationClock, wrapLongTime } from '../timing/simulationClock';
-import { describeValue, formatOptionText, optionKey, parseOptionText, quoteText, type OptionRule } from '../parameters/options';
+import { describeValue, formatOptionText, kebabCase, optionRoutes, parseOptionText, quoteText, type OptionRule } from '../parameters/options';
+import { DEFAULT_RUN, RUN_OPTIONS } from '../parameters/runOptions';
 import { DEFAULT_SHADING, DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ShadingOptions, type SunOptions } from '../parameters/sceneOptions';
 import type { PathPreference } from '../layers/oceanSimulation';
 import { CLICKED_STONE, seaPointUnder } from '../render/seaPointer';
 import { DEFAULT_PARAMETERS, parseDecimal, SIMULATION_OPTIONS, validateParameters, type SimulationParameters } from '../parameters/parameters';
-
-const PATHS: readonly PathPreference[] = ['auto', 'gpu', 'js'];
 
 /** The parts of the settings that attributes set from an option table. */
 type Group = 'simulation' | 'sun' | 'shading';
@@ -91,25 +90,18 @@ const GROUP_DEFAULTS: Readonly<Record<Group, Readonly<Record<string, unknown>>>>
 };
 
 /** Attributes that map onto options: each option's name, and each alias, in kebab case. */
-const OPTION_ATTRIBUTES: ReadonlyMap<string, { group: Group; name: string }> = new Map(
-  (Object.keys(TABLES) as Group[]).flatMap((group) =>
-    Object.entries(TABLES[group])
-      .flatMap(([key, rule]) => [key, ...(rule.aliases ?? [])])
-      .map((name) => [name.replace(/[A-Z]/g, (c) => `-${c.toLowerCase()}`), { group, name }] as const),
-  ),
-);
+const OPTION_ATTRIBUTES = optionRoutes(TABLES, kebabCase);
+
+/**
+ * The element's own settings that a table's rule reads, as the app's URL reads them: path and
+ * time-scale (parameters/runOptions.ts), quality and target-fps (parameters/qualityOptions.ts).
+ */
+const OWN_TABLES = { run: RUN_OPTIONS, quality: QUALITY_OPTIONS } as const;
+const OWN_ATTRIBUTES = optionRoutes<keyof typeof OWN_TABLES>(OWN_TABLES, kebabCase);
+type OwnKey = 'path' | 'timeScale' | 'quality' | 'targetFps';
 
 /** Every attribute the element reads. */
-export const FFT_OCEAN_ATTRIBUTES = [
-  ...OPTION_ATTRIBUTES.keys(),
-  'path',
-  'time-scale',
-  'paused',
-  'camera-height',
-  'boat',
-  'quality',
-  'target-fps',
-] as const;
+export const FFT_OCEAN_ATTRIBUTES = [...OPTION_ATTRIBUTES.keys(), ...OWN_ATTRIBUTES.keys(), 'paused', 'camera-height', 'boat'] as const;
 export type FftOceanAttribute = (typeof FFT_OCEAN_ATTRIBUTES)[number];
 
 /** The element's own attributes (beside the options), as its settings hold them. */
@@ -138,20 +130,13 @@ interface Settings extends ElementSettings {
 }
 
 export const ELEMENT_DEFAULTS: Readonly<ElementSettings> = {
-  path: 'auto',
-  timeScale: 1,
+  path: DEFAULT_RUN.path,
+  timeScale: DEFAULT_RUN.timeScale,
   paused: false,
   cameraHeight: 8,
   boat: false,
   ...DEFAULT_QUALITY,
 };
-
-/**
- * The fastest time-scale, either way: at 1000 the default sea's 200 s repeat period passes in a
- * fifth of a second, and frames show unrelated seas. Far beyond it a frame's step overflows to
- * Infinity (time-scale 1e308), and the time with it.
- */
-const MAX_TIME_SCALE = 1000;
 
 /** Within this many px of the viewport an element creates its renderer and ocean. */
 const NEAR_MARGIN = 200;
@@ -363,30 +348,31 @@ export class FftOceanElement extends ElementBase {
       console.warn(`<fft-ocean>: ignoring ${name}=${quoteText(raw ?? '')}: ${reason}; keeping ${formatOptionText(kept)}`);
     };
     const option = OPTION_ATTRIBUTES.get(name);
+    const own = OWN_ATTRIBUTES.get(name);
     if (option) {
-      const key = optionKey(TABLES[option.group], option.name);
+      const key = option.key;
       try {
         this.applyOption(option.group, key, option.name, raw);
       } catch (error) {
         reject(errorMessage(error), this.optionSetting(option.group, key));
         return;
       }
-    } else if (name === 'path') {
-      const value = (raw === null ? ELEMENT_DEFAULTS.path : raw.trim()) as PathPreference;
-      if (!PATHS.includes(value)) {
-        reject(`it must be one of ${PATHS.join(', ')}`, s.path);
+    } else if (own) {
+      // The URL's rule and message, under the attribute's name.
+      const key = own.key as OwnKey;
+      try {
+        const value = raw === null ? ELEMENT_DEFAULTS[key] : parseOptionText(OWN_TABLES[own.group] as Readonly<Record<string, OptionRule>>, own.name, raw);
+        Object.assign(s, { [key]: value });
+      } catch (error) {
+        reject(errorMessage(error), s[key]);
         return;
       }
-      s.path = value;
       const ocean = this.live?.ocean;
-      if (ocean && ocean.simulation.pathPreference !== value) ocean.simulation.pathPreference = value;
-    } else if (name === 'time-scale') {
-      const value = raw === null ? ELEMENT_DEFAULTS.timeScale : parseDecimal(raw);
-      if (!(Math.abs(value) <= MAX_TIME_SCALE)) {
-        reject(`it must be a number of simulated seconds per second from -${MAX_TIME_SCALE} to ${MAX_TIME_SCALE}`, s.timeScale);
-        return;
+      if (key === 'path' && ocean && ocean.simulation.pathPreference !== s.path) ocean.simulation.pathPreference = s.path;
+      if (key === 'quality' || key === 'targetFps') {
+        this.adaptiveQuality = new AdaptiveQuality(s.quality, s.targetFps);
+        if (this.live) this.applyQuality(this.live);
       }
-      s.timeScale = value;
     } else if (name === 'camera-height') {
       const value = raw === null ? ELEMENT_DEFAULTS.cameraHeight : parseDecimal(raw);
       if (!Number.isFinite(value) || value <= 0 || value > 10000) {
@@ -403,18 +389,6 @@ export class FftOceanElement extends ElementBase {
     } else if (name === 'boat') {
       s.boat = booleanAttribute(raw);
       if (this.live) this.showBoat(this.live);
-    } else if (name === 'quality' || name === 'target-fps') {
-      // The URL's rule and message (parameters/qualityOptions.ts), under the attribute's name.
-      const key = name === 'quality' ? 'quality' : 'targetFps';
-      try {
-        const value = raw === null ? ELEMENT_DEFAULTS[key] : parseOptionText(QUALITY_OPTIONS, key, raw);
-        Object.assign(s, { [key]: value });
-      } catch (error) {
-        reject(errorMessage(error), s[key]);
-        return;
-      }
-      this.adaptiveQuality = new AdaptiveQuality(s.quality, s.targetFps);
-      if (this.live) this.applyQuality(this.live);
     }
     this.invalidate();
   }
