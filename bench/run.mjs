@@ -519,7 +519,7 @@ async function compareBenchmark(browser) {
  * FRAME_SIZE: the median real time between frames (requestAnimationFrame), what users see.
  */
 async function appBenchmarks(browser, server, port, results) {
-  const { QUALITY_LEVELS } = await server.ssrLoadModule('/src/timing/adaptiveQuality.ts');
+  const { QUALITY_LEVELS } = await server.ssrLoadModule('/src/runtime/adaptiveQuality.ts');
   const appPage = await browser.newPage({ viewport: FRAME_SIZE });
   appPage.on('pageerror', (error) => log(`app page error: ${error.message}`));
   try {

@@ -36,7 +36,7 @@ import { Buoys } from '../src/objects/buoys';
 import { FlyControls } from '../src/app/flyControls';
 import { Inspector } from '../src/app/inspector';
 import { SunLight } from '../src/objects/sunLight';
-import { wrapLongTime } from '../src/timing/simulationClock';
+import { wrapLongTime } from '../src/runtime/simulationClock';
 import {
   defaultState,
   DEFAULT_STATE,
@@ -50,7 +50,7 @@ import { formatOptionText, kebabCase, nearestName, optionRoutes, parseDecimal, P
 import { PATH_PREFERENCES } from '../src/layers/oceanSimulation';
 import { SIMULATION_OPTIONS, validateParameters } from '../src/parameters/parameters';
 import { SHADING_OPTIONS, SUN_OPTIONS } from '../src/parameters/sceneOptions';
-import { QUALITY_SETTINGS } from '../src/timing/adaptiveQuality';
+import { QUALITY_SETTINGS } from '../src/runtime/adaptiveQuality';
 
 declare global {
   interface Window {

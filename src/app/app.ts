@@ -12,11 +12,11 @@
 import { Scene } from 'three';
 import { ParameterError } from '../parameters/options';
 import { CLICKED_STONE, seaPointUnder } from '../render/seaPointer';
-import { SimulationClock, wrapLongTime } from '../timing/simulationClock';
-import { AdaptiveQuality } from '../timing/adaptiveQuality';
+import { SimulationClock, wrapLongTime } from '../runtime/simulationClock';
+import { AdaptiveQuality } from '../runtime/adaptiveQuality';
 import { validateParameters } from '../parameters/parameters';
 import { SceneOutput } from '../render/sceneOutput';
-import { applyQualityStep } from '../timing/applyQuality';
+import { applyQualityStep } from '../runtime/applyQuality';
 import { Boat, centreAhead } from '../objects/boat';
 import { Buoys } from '../objects/buoys';
 import { createAppCamera, createAppOcean, createAppRenderer, loadAppSkybox, prepareAppFrame } from './appView';

@@ -7,7 +7,8 @@
 import { ACESFilmicToneMapping, PerspectiveCamera, WebGLRenderer, type WebGLRendererParameters } from 'three';
 import { Ocean, type OceanOptions } from '../ocean';
 import { ParameterError } from '../parameters/options';
-import { QUALITY_LEVELS, QUALITY_STEPS, simulationAtQuality, type QualityStep } from '../timing/adaptiveQuality';
+import { QUALITY_LEVELS, QUALITY_STEPS, simulationAtQuality, type QualityStep } from '../runtime/adaptiveQuality';
+import { fitFarPlane } from '../runtime/farPlane';
 import { skyboxFaceUrls } from '../render/skyEnvironment';
 import { simulationParameters, type AppState } from './urlState';
 
@@ -93,11 +94,5 @@ export function loadAppSkybox(ocean: Ocean, skybox: string, trustedOrigins = tru
  */
 export function prepareAppFrame(ocean: Ocean, camera: PerspectiveCamera, t: number): void {
   ocean.update(t, camera);
-  fitFarPlane(ocean, camera);
-}
-
-/** Moves the far plane out to the horizon the sea reaches from the camera's height. */
-function fitFarPlane(ocean: Ocean, camera: PerspectiveCamera): void {
-  camera.far = Math.max(1e4, 1.5 * ocean.horizonDistanceFor(camera.position.y));
-  camera.updateProjectionMatrix();
+  fitFarPlane(camera, ocean);
 }

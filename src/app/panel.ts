@@ -16,7 +16,7 @@ import { beaufortPreset, SEA_PRESETS } from '../spectrum/presets';
 import { MIN_TARGET_FPS } from '../parameters/qualityOptions';
 import { PATH_PREFERENCES } from '../layers/oceanSimulation';
 import { assignState, cloneState, urlRounded, type AppState, type Rgb } from './urlState';
-import { QUALITY_SETTINGS, type QualitySetting } from '../timing/adaptiveQuality';
+import { QUALITY_SETTINGS, type QualitySetting } from '../runtime/adaptiveQuality';
 
 /** The presets the panel offers: the named sea states, then Beaufort forces 0–12. */
 export const PANEL_PRESETS: Readonly<Record<string, Partial<SimulationParameters>>> = Object.freeze({

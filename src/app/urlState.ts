@@ -42,7 +42,7 @@ import {
   type ShadingMode,
 } from '../parameters/sceneOptions';
 import { clampPitch, MIN_HEIGHT, wrapYaw } from './flyControls';
-import type { QualitySetting } from '../timing/adaptiveQuality';
+import type { QualitySetting } from '../runtime/adaptiveQuality';
 import { DEFAULT_QUALITY, QUALITY_OPTIONS } from '../parameters/qualityOptions';
 
 import type { PathPreference } from '../layers/oceanSimulation';

@@ -22,7 +22,7 @@
  *   boat (boolean)                            a boat circling ahead of the view, leaving a wake on
  *                                             the local waves (src/objects/boat.ts)
  *   quality (auto, high, medium, low, lowest) 'auto' lowers and raises the quality level (render
- *                                             scale, MSAA, grid, cascades: timing/adaptiveQuality.ts)
+ *                                             scale, MSAA, grid, cascades: runtime/adaptiveQuality.ts)
  *                                             to hold target-fps; a level stays fixed
  *   target-fps (default 30)                   the frame rate 'auto' holds
  * A click or tap on the sea drops a stone there: rings spread on the local waves. When the quality
@@ -63,12 +63,13 @@
 import { ACESFilmicToneMapping, PerspectiveCamera, Scene, Vector2, WebGLRenderer } from 'three';
 import { Ocean } from '../ocean';
 import { SceneOutput } from '../render/sceneOutput';
-import { AdaptiveQuality, simulationAtQuality, type QualitySetting } from '../timing/adaptiveQuality';
-import { applyQualityStep } from '../timing/applyQuality';
+import { AdaptiveQuality, simulationAtQuality, type QualitySetting } from '../runtime/adaptiveQuality';
+import { applyQualityStep } from '../runtime/applyQuality';
+import { fitFarPlane } from '../runtime/farPlane';
 import { DEFAULT_QUALITY, QUALITY_OPTIONS } from '../parameters/qualityOptions';
 import { Boat } from '../objects/boat';
 import { SunLight } from '../objects/sunLight';
-import { SimulationClock, wrapLongTime } from '../timing/simulationClock';
+import { SimulationClock, wrapLongTime } from '../runtime/simulationClock';
 import { describeValue, formatOptionText, kebabCase, optionRoutes, parseOptionText, quoteText, type OptionRule } from '../parameters/options';
 import { DEFAULT_RUN, RUN_OPTIONS } from '../parameters/runOptions';
 import { DEFAULT_SHADING, DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ShadingOptions, type SunOptions } from '../parameters/sceneOptions';
@@ -292,7 +293,7 @@ export class FftOceanElement extends ElementBase {
   }
 
   /**
-   * The adaptive quality in force (timing/adaptiveQuality.ts): its setting, its level and step,
+   * The adaptive quality in force (runtime/adaptiveQuality.ts): its setting, its level and step,
    * and the median frame time that chose it.
    */
   get quality(): AdaptiveQuality {
@@ -699,9 +700,7 @@ export class FftOceanElement extends ElementBase {
     ocean.update(t, camera);
     live.boat?.boat.update();
     live.boat?.light.update();
-    // The far plane must reach the horizon.
-    camera.far = Math.max(1e4, 1.5 * ocean.horizonDistanceFor(camera.position.y));
-    camera.updateProjectionMatrix();
+    fitFarPlane(camera, ocean); // the far plane must reach the horizon
     live.output.render(scene, camera);
     this.framesDrawn++;
     if (this.framesDrawn === 1) this.dispatchEvent(new CustomEvent('fft-ocean-ready'));
