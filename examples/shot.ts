@@ -29,7 +29,7 @@
  * the query or the skybox was bad, 'failure' otherwise, e.g. without WebGL 2).
  */
 import { Scene } from 'three';
-import { createAppCamera, createAppOcean, createAppRenderer, loadAppSkybox, prepareAppFrame, startingQuality } from '../src/app/appView';
+import { createAppCamera, createAppOcean, createAppRenderer, loadAppSkybox, startingQuality } from '../src/app/appView';
 import { SceneOutput } from '../src/render/sceneOutput';
 import { Boat, centreAhead } from '../src/objects/boat';
 import { Buoys } from '../src/objects/buoys';
@@ -37,6 +37,7 @@ import { FlyControls } from '../src/app/flyControls';
 import { Inspector } from '../src/app/inspector';
 import { SunLight } from '../src/objects/sunLight';
 import { wrapLongTime } from '../src/runtime/simulationClock';
+import { FrameLoop } from '../src/runtime/frameLoop';
 import {
   defaultState,
   DEFAULT_STATE,
@@ -50,7 +51,7 @@ import { formatOptionText, kebabCase, nearestName, optionRoutes, parseDecimal, P
 import { PATH_PREFERENCES } from '../src/layers/oceanSimulation';
 import { SIMULATION_OPTIONS, validateParameters } from '../src/parameters/parameters';
 import { SHADING_OPTIONS, SUN_OPTIONS } from '../src/parameters/sceneOptions';
-import { QUALITY_SETTINGS } from '../src/runtime/adaptiveQuality';
+import { AdaptiveQuality, QUALITY_SETTINGS } from '../src/runtime/adaptiveQuality';
 
 declare global {
   interface Window {
@@ -328,14 +329,21 @@ async function start(): Promise<void> {
   const inspector = state.inspector ? new Inspector(ocean, document.body) : null;
 
   const pixel = new Uint8Array(4);
+  // The app's frame loop, drawing the times asked for (its clock and adaptive quality stay unused).
+  const loop = new FrameLoop(new AdaptiveQuality(state.quality, state.targetFps), { t: state.t });
   window.renderFrame = async (t: number) => {
     if (typeof t !== 'number' || !Number.isFinite(t)) throw new Error(`renderFrame: t must be a finite number, got ${t}`);
-    // As the app's frame loop.
-    prepareAppFrame(ocean, camera, t);
-    buoys?.update(t);
-    boat?.update();
-    sunLight.update();
-    output.render(scene, camera);
+    loop.time.t = t;
+    loop.draw(
+      { ocean, scene, camera, output },
+      {
+        beforeRender: (drawn) => {
+          buoys?.update(drawn);
+          boat?.update();
+          sunLight.update();
+        },
+      },
+    );
     inspector?.render(renderer);
     // A one-pixel readback waits for the GPU to finish the frame (gl.finish does not, in Chromium).
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);

@@ -65,11 +65,10 @@ import { Ocean } from '../ocean';
 import { SceneOutput } from '../render/sceneOutput';
 import { AdaptiveQuality, simulationAtQuality, type QualitySetting } from '../runtime/adaptiveQuality';
 import { applyQualityStep } from '../runtime/applyQuality';
-import { fitFarPlane } from '../runtime/farPlane';
 import { DEFAULT_QUALITY, QUALITY_OPTIONS } from '../parameters/qualityOptions';
 import { Boat } from '../objects/boat';
 import { SunLight } from '../objects/sunLight';
-import { SimulationClock, wrapLongTime } from '../runtime/simulationClock';
+import { FrameLoop } from '../runtime/frameLoop';
 import { describeValue, formatOptionText, kebabCase, optionRoutes, parseOptionText, quoteText, type OptionRule } from '../parameters/options';
 import { DEFAULT_RUN, RUN_OPTIONS } from '../parameters/runOptions';
 import { DEFAULT_SHADING, DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ShadingOptions, type SunOptions } from '../parameters/sceneOptions';
@@ -221,14 +220,15 @@ export class FftOceanElement extends ElementBase {
   private readonly root: ShadowRoot;
   private live: Live | null = null;
   private message: HTMLElement | null = null;
-  private simulatedTime = 0;
-  /** Real frame time × time-scale per animated frame; restarted whenever drawing stops or pauses. */
-  private readonly clock = new SimulationClock();
+  /**
+   * The frame loop (runtime/frameLoop.ts): its clock, restarted whenever drawing stops or pauses,
+   * its adaptive quality (the quality and target-fps attributes; kept while the element has no
+   * context) and the simulated time shown.
+   */
+  private readonly loop = new FrameLoop(new AdaptiveQuality(ELEMENT_DEFAULTS.quality, ELEMENT_DEFAULTS.targetFps), { t: 0 });
   private frameRequest = 0;
   private needsDraw = true;
   private framesDrawn = 0;
-  /** The quality level in force (the quality and target-fps attributes); kept while the element has no context. */
-  private adaptiveQuality = new AdaptiveQuality(ELEMENT_DEFAULTS.quality, ELEMENT_DEFAULTS.targetFps);
   private readonly onVisibilityChange = () => this.activityChanged();
   /** The observers of the viewport and of the NEAR_MARGIN and FAR_MARGIN bands while the element is on the page (else empty). */
   private proximityObservers: IntersectionObserver[] = [];
@@ -280,7 +280,7 @@ export class FftOceanElement extends ElementBase {
 
   /** Simulated seconds shown; settable (any finite number) to jump to a moment. */
   get time(): number {
-    return this.simulatedTime;
+    return this.loop.time.t;
   }
 
   set time(seconds: number) {
@@ -288,7 +288,7 @@ export class FftOceanElement extends ElementBase {
       console.warn(`<fft-ocean>: ignoring time = ${describeValue(seconds)}: it must be a finite number of seconds`);
       return;
     }
-    this.simulatedTime = seconds;
+    this.loop.time.t = seconds;
     this.invalidate();
   }
 
@@ -297,7 +297,7 @@ export class FftOceanElement extends ElementBase {
    * and the median frame time that chose it.
    */
   get quality(): AdaptiveQuality {
-    return this.adaptiveQuality;
+    return this.loop.quality;
   }
 
   /** Frames drawn since the element was created (for diagnostics and tests). */
@@ -371,7 +371,7 @@ export class FftOceanElement extends ElementBase {
       const ocean = this.live?.ocean;
       if (key === 'path' && ocean && ocean.simulation.pathPreference !== s.path) ocean.simulation.pathPreference = s.path;
       if (key === 'quality' || key === 'targetFps') {
-        this.adaptiveQuality = new AdaptiveQuality(s.quality, s.targetFps);
+        this.loop.quality = new AdaptiveQuality(s.quality, s.targetFps);
         if (this.live) this.applyQuality(this.live);
       }
     } else if (name === 'camera-height') {
@@ -385,7 +385,7 @@ export class FftOceanElement extends ElementBase {
       const paused = booleanAttribute(raw);
       if (paused !== s.paused) {
         s.paused = paused;
-        this.clock.restart();
+        this.loop.restart();
       }
     } else if (name === 'boat') {
       s.boat = booleanAttribute(raw);
@@ -413,7 +413,7 @@ export class FftOceanElement extends ElementBase {
       const asked = validateParameters(next); // throws a ParameterError naming the rule
       // The grid and the cascades run within the quality level's.
       if (key === 'resolution' || key === 'patchSizes') {
-        if (this.live) applyQualityStep(this.live, asked, this.adaptiveQuality.step);
+        if (this.live) applyQualityStep(this.live, asked, this.loop.quality.step);
       } else {
         ocean?.setParameters({ [key]: this.optionSetting(group, key, next) });
       }
@@ -498,7 +498,7 @@ export class FftOceanElement extends ElementBase {
     try {
       ocean = new Ocean(renderer, {
         ...s.simulation,
-        ...simulationAtQuality(validateParameters(s.simulation), this.adaptiveQuality.step),
+        ...simulationAtQuality(validateParameters(s.simulation), this.loop.quality.step),
         ...s.sun,
         ...s.shading,
         path: s.path,
@@ -560,7 +560,7 @@ export class FftOceanElement extends ElementBase {
     this.applyQuality(live);
     FftOceanElement.contextHolders.add(this);
     this.showBoat(live);
-    this.clock.restart();
+    this.loop.restart();
     this.resize();
     resizeObserver.observe(this);
   }
@@ -585,13 +585,13 @@ export class FftOceanElement extends ElementBase {
     }
     this.message?.remove();
     this.message = null;
-    this.clock.restart();
+    this.loop.restart();
     this.needsDraw = true;
   }
 
   /** Puts the quality level in force: pixel ratio, MSAA, grid and cascades (applyQuality.ts). */
   private applyQuality(live: Live): void {
-    applyQualityStep(live, validateParameters(this.settings.simulation), this.adaptiveQuality.step);
+    applyQualityStep(live, validateParameters(this.settings.simulation), this.loop.quality.step);
   }
 
   /** Puts the boat (and its light) in the scene, or takes it out and frees it, as `show` says. */
@@ -632,7 +632,7 @@ export class FftOceanElement extends ElementBase {
 
   /** Something changed that affects whether frames are drawn. */
   private activityChanged(): void {
-    this.clock.restart(); // the time that passed while inactive is not simulated
+    this.loop.restart(); // the time that passed while inactive is not simulated
     this.invalidate();
   }
 
@@ -650,16 +650,14 @@ export class FftOceanElement extends ElementBase {
     this.frameRequest = 0;
     const live = this.live;
     if (!live || !this.isActive()) {
-      this.clock.restart();
+      this.loop.restart();
       return;
     }
     const animating = !this.settings.paused;
-    // Kept within what a double resolves (wrapLongTime): the same sea, and time that still moves.
-    if (animating) this.simulatedTime = wrapLongTime(this.simulatedTime, live.ocean.repeatPeriod) + this.clock.advance(now, this.settings.timeScale);
     // Only frames drawn one after another tell how fast they come (paused, frames come on changes).
-    if (animating && this.adaptiveQuality.frame(this.clock.realStep)) {
+    if (animating && this.loop.advance(now, this.settings.timeScale)) {
       this.applyQuality(live);
-      const { level, medianFrameMs } = this.adaptiveQuality;
+      const { level, medianFrameMs } = this.loop.quality;
       this.dispatchEvent(new CustomEvent('fft-ocean-quality-change', { detail: { level, medianFrameMs } }));
     }
     if (animating || this.needsDraw) {
@@ -691,17 +689,16 @@ export class FftOceanElement extends ElementBase {
   }
 
   private draw(live: Live): void {
-    const { scene, camera, ocean } = live;
     this.needsDraw = false;
-    // The time as a double resolves it (the same sea): a time set far ahead (time = 1e300) would
-    // otherwise put the drifting view out where the surface's coordinates overflow.
-    const t = wrapLongTime(this.simulatedTime, ocean.repeatPeriod);
-    placeCamera(camera, t, this.settings.cameraHeight, this.optionSetting('sun', 'sunAzimuth') as number);
-    ocean.update(t, camera);
-    live.boat?.boat.update();
-    live.boat?.light.update();
-    fitFarPlane(camera, ocean); // the far plane must reach the horizon
-    live.output.render(scene, camera);
+    const sunAzimuth = this.optionSetting('sun', 'sunAzimuth') as number;
+    // The time wrapped as a double resolves it, the sea updated for the drifting view, the far plane, the render.
+    this.loop.draw(live, {
+      placeCamera: (t) => placeCamera(live.camera, t, this.settings.cameraHeight, sunAzimuth),
+      beforeRender: () => {
+        live.boat?.boat.update();
+        live.boat?.light.update();
+      },
+    });
     this.framesDrawn++;
     if (this.framesDrawn === 1) this.dispatchEvent(new CustomEvent('fft-ocean-ready'));
   }

@@ -1,6 +1,6 @@
 /**
  * The camera's far plane, out to the horizon the sea reaches: the one rule the app, <fft-ocean>,
- * the shot CLI and the examples use.
+ * the shot CLI and the examples use (the first three through the frame loop, frameLoop.ts).
  */
 import type { PerspectiveCamera } from 'three';
 import type { Ocean } from '../ocean';
