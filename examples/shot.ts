@@ -29,28 +29,29 @@
  * the query or the skybox was bad, 'failure' otherwise, e.g. without WebGL 2).
  */
 import { Scene } from 'three';
-import { createAppCamera, createAppOcean, createAppRenderer, loadAppSkybox, prepareAppFrame, startingQuality } from '../src/app/appView';
+import { createAppCamera, createAppOcean, createAppRenderer, loadAppSkybox, startingQuality } from '../src/app/appView';
 import { SceneOutput } from '../src/render/sceneOutput';
 import { Boat, centreAhead } from '../src/objects/boat';
 import { Buoys } from '../src/objects/buoys';
 import { FlyControls } from '../src/app/flyControls';
 import { Inspector } from '../src/app/inspector';
 import { SunLight } from '../src/objects/sunLight';
-import { wrapLongTime } from '../src/timing/simulationClock';
+import { wrapLongTime } from '../src/runtime/simulationClock';
+import { FrameLoop } from '../src/runtime/frameLoop';
 import {
   defaultState,
   DEFAULT_STATE,
   parseState,
   parseValue,
-  PATH_PREFERENCES,
   roundTime,
   simulationParameters,
   type AppState,
 } from '../src/app/urlState';
-import { formatOptionText, nearestName, parseDecimal, ParameterError, parseOptionText, type OptionRule } from '../src/parameters/options';
+import { formatOptionText, kebabCase, nearestName, optionRoutes, parseDecimal, ParameterError, parseOptionText, type OptionRule } from '../src/parameters/options';
+import { PATH_PREFERENCES } from '../src/layers/oceanSimulation';
 import { SIMULATION_OPTIONS, validateParameters } from '../src/parameters/parameters';
 import { SHADING_OPTIONS, SUN_OPTIONS } from '../src/parameters/sceneOptions';
-import { QUALITY_SETTINGS } from '../src/timing/adaptiveQuality';
+import { AdaptiveQuality, QUALITY_SETTINGS } from '../src/runtime/adaptiveQuality';
 
 declare global {
   interface Window {
@@ -80,21 +81,15 @@ interface ShotOption {
   flag?: boolean;
 }
 
-const kebab = (name: string) => name.replace(/[A-Z]/g, (c) => `-${c.toLowerCase()}`);
-
 /** Every scene option by its CLI name, in the order --help lists them. */
 const OPTIONS = new Map<string, ShotOption>();
 /** Other names the CLI takes: older ones, and the tables' aliases in kebab-case (--scatter-colour). */
 const ALIASES: Record<string, string> = { wind: 'wind-speed' };
-function addTable(table: Table, stateKeyOf: (key: string) => keyof AppState = (key) => key as keyof AppState): void {
-  for (const [key, rule] of Object.entries(table)) {
-    OPTIONS.set(kebab(key), { table, key, stateKey: stateKeyOf(key) });
-    for (const alias of rule.aliases ?? []) ALIASES[kebab(alias)] = kebab(key);
-  }
+const TABLES: Readonly<Record<string, Table>> = { simulation: SIMULATION_OPTIONS, sun: SUN_OPTIONS, shading: SHADING_OPTIONS };
+for (const [name, { group, key }] of optionRoutes(TABLES, kebabCase)) {
+  if (name !== kebabCase(key)) ALIASES[name] = kebabCase(key);
+  else OPTIONS.set(name, { table: TABLES[group], key, stateKey: (key === 'shadingMode' ? 'mode' : key) as keyof AppState });
 }
-addTable(SIMULATION_OPTIONS);
-addTable(SUN_OPTIONS);
-addTable(SHADING_OPTIONS, (key) => (key === 'shadingMode' ? 'mode' : (key as keyof AppState)));
 OPTIONS.set('path', { stateKey: 'path', placeholder: PATH_PREFERENCES.join('|'), help: 'where the FFT runs: on the GPU, in JS, or auto (GPU if it can)' });
 OPTIONS.set('skybox', {
   stateKey: 'skybox',
@@ -174,7 +169,7 @@ function stateFromOptions(query: URLSearchParams): AppState {
     validateParameters(simulationParameters(state));
   } catch (error) {
     if (!(error instanceof ParameterError)) throw error;
-    const name = kebab(error.parameter);
+    const name = kebabCase(error.parameter);
     const message = error.message.startsWith(error.parameter) ? `--${name}${error.message.slice(error.parameter.length)}` : error.message;
     throw new UsageError(`${message} (with the options given)`);
   }
@@ -334,14 +329,21 @@ async function start(): Promise<void> {
   const inspector = state.inspector ? new Inspector(ocean, document.body) : null;
 
   const pixel = new Uint8Array(4);
+  // The app's frame loop, drawing the times asked for (its clock and adaptive quality stay unused).
+  const loop = new FrameLoop(new AdaptiveQuality(state.quality, state.targetFps), { t: state.t });
   window.renderFrame = async (t: number) => {
     if (typeof t !== 'number' || !Number.isFinite(t)) throw new Error(`renderFrame: t must be a finite number, got ${t}`);
-    // As the app's frame loop.
-    prepareAppFrame(ocean, camera, t);
-    buoys?.update(t);
-    boat?.update();
-    sunLight.update();
-    output.render(scene, camera);
+    loop.time.t = t;
+    loop.draw(
+      { ocean, scene, camera, output },
+      {
+        beforeRender: (drawn) => {
+          buoys?.update(drawn);
+          boat?.update();
+          sunLight.update();
+        },
+      },
+    );
     inspector?.render(renderer);
     // A one-pixel readback waits for the GPU to finish the frame (gl.finish does not, in Chromium).
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);

@@ -19,7 +19,7 @@ import {
   WebGLRenderer,
 } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import { FloatingBody, Ocean } from '../src/index';
+import { FloatingBody, fitFarPlane, Ocean } from '../src/index';
 
 const query = new URLSearchParams(location.search);
 const fixedTime = query.has('t') ? Number(query.get('t')) : null;
@@ -98,8 +98,7 @@ renderer.setAnimationLoop(() => {
   floatCrate(t);
   controls.update();
   // The far plane must reach the surface's far edge (it moves with the camera's height).
-  camera.far = Math.max(1e4, 1.5 * ocean.horizonDistanceFor(camera.position.y));
-  camera.updateProjectionMatrix();
+  fitFarPlane(camera, ocean);
   renderer.render(scene, camera);
   frames++;
 });

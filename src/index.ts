@@ -6,7 +6,7 @@
  */
 export { Ocean, DisposedError, type OceanOptions, type OceanPath, type OceanEventMap, type SunPosition } from './ocean';
 export { UnsupportedError } from './parameters/options';
-export { OceanSimulation, DEFAULT_SIMULATION_OPTIONS, type SimulationOptions, type SimulationPath, type PathPreference } from './layers/oceanSimulation';
+export { OceanSimulation, DEFAULT_SIMULATION_OPTIONS, PATH_PREFERENCES, type SimulationOptions, type SimulationPath, type PathPreference } from './layers/oceanSimulation';
 export {
   DEFAULT_PARAMETERS,
   ParameterError,
@@ -67,7 +67,8 @@ export type { OptionTable, OptionRule, OptionType } from './parameters/options';
 export type { LocalWaveGrid } from './layers/localWaveModel';
 export type { SkyBackground } from './render/skyBackground';
 export type { SceneOutput } from './render/sceneOutput';
-export type { AdaptiveQuality, QualityLevel, QualitySetting, QualityStep } from './timing/adaptiveQuality';
+export { farPlaneFor, fitFarPlane } from './runtime/farPlane';
+export type { AdaptiveQuality, QualityLevel, QualitySetting, QualityStep } from './runtime/adaptiveQuality';
 export type { SeaStateSummary, WritableNumbers } from './ocean';
 export type { WaveNumberSpectrum, SpectrumOrigin } from './spectrum/initialSpectrum';
 export type { SeaStateParameters } from './spectrum/seaState';

@@ -20,7 +20,7 @@ const APP_WARMUP_SECONDS = 5;
  */
 export async function browser(context) {
   const { browser, server, port, results } = context;
-  const { QUALITY_LEVELS } = await server.ssrLoadModule('/src/timing/adaptiveQuality.ts');
+  const { QUALITY_LEVELS } = await server.ssrLoadModule('/src/runtime/adaptiveQuality.ts');
   const appPage = await browser.newPage({ viewport: FRAME_SIZE });
   appPage.on('pageerror', (error) => log(`app page error: ${error.message}`));
   try {

@@ -5,21 +5,22 @@
  * (statusOverlay.ts). ?inspector=1 (or the panel) adds the
  * inspector's tiles along the bottom.
  *
- * Time: the simulation advances by the real frame time × time scale (SimulationClock, shared with
- * <fft-ocean>), so the sea moves at its real speed however slow the frames; a hidden tab or a
- * stall longer than a second does not make it jump; paused keeps t fixed.
+ * Frames: the frame loop shared with <fft-ocean> (src/runtime/frameLoop.ts) advances the time by the
+ * real frame time × time scale (SimulationClock), so the sea moves at its real speed however slow
+ * the frames (a hidden tab or a stall longer than a second does not make it jump; paused keeps t
+ * fixed), measures the frame for the adaptive quality, and updates, fits the far plane and renders.
  */
 import { Scene } from 'three';
 import { ParameterError } from '../parameters/options';
 import { CLICKED_STONE, seaPointUnder } from '../render/seaPointer';
-import { SimulationClock, wrapLongTime } from '../timing/simulationClock';
-import { AdaptiveQuality } from '../timing/adaptiveQuality';
+import { FrameLoop } from '../runtime/frameLoop';
+import { AdaptiveQuality } from '../runtime/adaptiveQuality';
 import { validateParameters } from '../parameters/parameters';
 import { SceneOutput } from '../render/sceneOutput';
-import { applyQualityStep } from '../timing/applyQuality';
+import { applyQualityStep } from '../runtime/applyQuality';
 import { Boat, centreAhead } from '../objects/boat';
 import { Buoys } from '../objects/buoys';
-import { createAppCamera, createAppOcean, createAppRenderer, loadAppSkybox, prepareAppFrame } from './appView';
+import { createAppCamera, createAppOcean, createAppRenderer, loadAppSkybox } from './appView';
 import { CONTROLS_HELP, FlyControls } from './flyControls';
 import { Inspector } from './inspector';
 import { SunLight } from '../objects/sunLight';
@@ -46,10 +47,12 @@ const ocean = createAppOcean(renderer, state);
 // Adaptive quality (adaptiveQuality.ts): the render scale, MSAA, grid and cascades that hold the
 // frame rate. The scene goes to the canvas through `output`, which multisamples when the level says.
 const output = new SceneOutput(renderer);
-let quality = new AdaptiveQuality(state.quality, state.targetFps);
+// The frame loop (runtime/frameLoop.ts): the clock, the adaptive quality in force, and the time it
+// keeps in state.t.
+const loop = new FrameLoop(new AdaptiveQuality(state.quality, state.targetFps), state);
 /** Puts the quality level in force: the pixel ratio, MSAA, and the grid and cascades the ocean runs. */
 function applyQuality(asked = simulationParameters(state)): void {
-  applyQualityStep({ renderer, output, ocean, pixelRatio: devicePixelRatio }, asked, quality.step);
+  applyQualityStep({ renderer, output, ocean, pixelRatio: devicePixelRatio }, asked, loop.quality.step);
 }
 applyQuality();
 const sunLight = new SunLight(ocean);
@@ -151,7 +154,7 @@ function apply(changes: Partial<AppState>): void {
   const { resolution, patchSizes, ...rest } = simulation;
   if (Object.keys(rest).length > 0) ocean.setParameters(rest);
   const newQuality = changes.quality !== undefined || changes.targetFps !== undefined;
-  if (newQuality) quality = new AdaptiveQuality(changes.quality ?? state.quality, changes.targetFps ?? state.targetFps);
+  if (newQuality) loop.quality = new AdaptiveQuality(changes.quality ?? state.quality, changes.targetFps ?? state.targetFps);
   if (newQuality || resolution !== undefined || patchSizes !== undefined) applyQuality(asked);
   const shading = {
     ior: changes.ior,
@@ -255,24 +258,27 @@ function readCanvas(): { width: number; height: number; data: Uint8Array } {
 }
 
 const averager = new TimingAverager(500);
-const clock = new SimulationClock();
 let lastStatus = 0;
-document.addEventListener('visibilitychange', () => clock.restart()); // the first frame back advances nothing
+document.addEventListener('visibilitychange', () => loop.restart()); // the first frame back advances nothing
 
 renderer.setAnimationLoop((now: number) => {
-  // Kept within what a double resolves (wrapLongTime): the same sea, and time that still moves.
-  const step = clock.advance(now, state.paused ? 0 : state.timeScale);
-  if (step !== 0) state.t = wrapLongTime(state.t, ocean.repeatPeriod) + step;
-  controls.update(clock.realStep);
-  if (quality.frame(clock.realStep)) applyQuality();
+  if (loop.advance(now, state.paused ? 0 : state.timeScale)) applyQuality();
+  controls.update(loop.clock.realStep);
 
   const start = performance.now();
-  prepareAppFrame(ocean, camera, state.t); // the sea at t, the eye above the crest, the far plane
-  buoys?.update(state.t);
-  boat?.update();
-  sunLight.update();
-  const simulated = performance.now();
-  output.render(scene, camera);
+  let simulated = start;
+  // The sea at t (the eye may be on either side of the surface), the far plane, the render.
+  loop.draw(
+    { ocean, scene, camera, output },
+    {
+      beforeRender: (t) => {
+        buoys?.update(t);
+        boat?.update();
+        sunLight.update();
+        simulated = performance.now();
+      },
+    },
+  );
   inspector?.render(renderer);
   const rendered = performance.now();
   if (pendingCaptures.length > 0) {
@@ -283,8 +289,9 @@ renderer.setAnimationLoop((now: number) => {
 
   averager.add(rendered, simulated - start, rendered - simulated);
   if (rendered - lastStatus > 250) {
-    const time = { t: state.t, paused: state.paused, timeScale: state.timeScale, ratio: clock.timeRatio };
+    const time = { t: state.t, paused: state.paused, timeScale: state.timeScale, ratio: loop.clock.timeRatio };
     const { pathReason, pathPreference } = ocean.simulation;
+    const { quality } = loop;
     const qualityStatus = {
       level: quality.level,
       auto: quality.setting === 'auto',
@@ -319,7 +326,7 @@ const oceanApp = {
   output,
   /** The adaptive quality in force (adaptiveQuality.ts). */
   get quality(): AdaptiveQuality {
-    return quality;
+    return loop.quality;
   },
   get inspector(): Inspector | null {
     return inspector;

@@ -1,13 +1,14 @@
 /**
  * How the app draws its scene, shared by the app (app.ts) and `npm run shot` (examples/shot.ts), so
  * that a shot of an app link draws the very pixels the app's canvas shows: the renderer's settings,
- * the camera's lens, the ocean built from an AppState, and what happens before every render.
+ * the camera's lens, the ocean built from an AppState (what happens every frame is the frame loop's,
+ * src/runtime/frameLoop.ts, which they share too).
  * No DOM beyond what three.js needs; no side effects on import.
  */
 import { ACESFilmicToneMapping, PerspectiveCamera, WebGLRenderer, type WebGLRendererParameters } from 'three';
 import { Ocean, type OceanOptions } from '../ocean';
 import { ParameterError } from '../parameters/options';
-import { QUALITY_LEVELS, QUALITY_STEPS, simulationAtQuality, type QualityStep } from '../timing/adaptiveQuality';
+import { QUALITY_LEVELS, QUALITY_STEPS, simulationAtQuality, type QualityStep } from '../runtime/adaptiveQuality';
 import { skyboxFaceUrls } from '../render/skyEnvironment';
 import { simulationParameters, type AppState } from './urlState';
 
@@ -22,7 +23,7 @@ export function createAppRenderer(parameters: WebGLRendererParameters = {}): Web
   return renderer;
 }
 
-/** The app's camera: 55° vertical field of view, near plane 0.5 m; prepareAppFrame moves the far plane. */
+/** The app's camera: 55° vertical field of view, near plane 0.5 m; the frame loop moves the far plane (runtime/farPlane.ts). */
 export function createAppCamera(aspect = 1): PerspectiveCamera {
   return new PerspectiveCamera(55, aspect, 0.5, 1e5);
 }
@@ -85,19 +86,4 @@ export function loadAppSkybox(ocean: Ocean, skybox: string, trustedOrigins = tru
     return Promise.reject(new ParameterError('skybox', skybox, allowed));
   }
   return ocean.sky.loadFaces(skyboxFaceUrls(base));
-}
-
-/**
- * Before each render: the sea at time `t` and the far plane out to the horizon. The eye may be on
- * either side of the surface, or cross it: the sea draws itself from below too.
- */
-export function prepareAppFrame(ocean: Ocean, camera: PerspectiveCamera, t: number): void {
-  ocean.update(t, camera);
-  fitFarPlane(ocean, camera);
-}
-
-/** Moves the far plane out to the horizon the sea reaches from the camera's height. */
-function fitFarPlane(ocean: Ocean, camera: PerspectiveCamera): void {
-  camera.far = Math.max(1e4, 1.5 * ocean.horizonDistanceFor(camera.position.y));
-  camera.updateProjectionMatrix();
 }

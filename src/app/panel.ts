@@ -14,8 +14,9 @@ import { colorToLinear, SHADING_MODES } from '../parameters/sceneOptions';
 import { ParameterError, SPECTRUM_MODELS, SPREADING_MODELS, type SimulationParameters } from '../parameters/parameters';
 import { beaufortPreset, SEA_PRESETS } from '../spectrum/presets';
 import { MIN_TARGET_FPS } from '../parameters/qualityOptions';
-import { assignState, cloneState, PATH_PREFERENCES, urlRounded, type AppState, type Rgb } from './urlState';
-import { QUALITY_SETTINGS, type QualitySetting } from '../timing/adaptiveQuality';
+import { PATH_PREFERENCES } from '../layers/oceanSimulation';
+import { assignState, cloneState, urlRounded, type AppState, type Rgb } from './urlState';
+import { QUALITY_SETTINGS, type QualitySetting } from '../runtime/adaptiveQuality';
 
 /** The presets the panel offers: the named sea states, then Beaufort forces 0–12. */
 export const PANEL_PRESETS: Readonly<Record<string, Partial<SimulationParameters>>> = Object.freeze({
@@ -110,7 +111,7 @@ export class Panel {
     this.bind(sim.add(state, 'seed').name('seed').step(1), 'seed');
     const seedActions = { newSeed: () => this.change('seed', Math.floor(Math.random() * 2 ** 32)) };
     this.register('newSeed', sim.add(seedActions, 'newSeed').name('new seed'));
-    this.bind(sim.add(state, 'path', PATH_PREFERENCES as string[]).name('FFT path'), 'path');
+    this.bind(sim.add(state, 'path', [...PATH_PREFERENCES]).name('FFT path'), 'path');
     this.register('running', sim.add(this.running, 'path').name('running').disable());
 
     const look = gui.addFolder('Sun & shading');

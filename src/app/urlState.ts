@@ -15,7 +15,7 @@
  *                                                               British spellings, are read too
  *   mode       shading mode (full, fresnel, reflection, refraction, caustics, height)
  *   wireframe  1/0        inspector  1/0        path  auto/gpu/js        buoys  1/0   boat  1/0
- *   timeScale  ≥ 0        paused     1/0        t     simulation time in seconds
+ *   timeScale  -1000…1000 paused     1/0        t     simulation time in seconds
  *   quality    auto/high/medium/low/lowest (adaptiveQuality.ts)      targetFps  frames per second 'auto' holds
  *   cam        x,y,z,yawDeg,pitchDeg (metres, degrees; see flyControls.ts)
  *   skybox     "generated" (the analytic sky), or the folder URL of six faces px.png … nz.png
@@ -42,11 +42,11 @@ import {
   type ShadingMode,
 } from '../parameters/sceneOptions';
 import { clampPitch, MIN_HEIGHT, wrapYaw } from './flyControls';
-import type { QualitySetting } from '../timing/adaptiveQuality';
+import type { QualitySetting } from '../runtime/adaptiveQuality';
 import { DEFAULT_QUALITY, QUALITY_OPTIONS } from '../parameters/qualityOptions';
 
-export type PathPreference = 'auto' | 'gpu' | 'js';
-export const PATH_PREFERENCES: readonly PathPreference[] = ['auto', 'gpu', 'js'];
+import type { PathPreference } from '../layers/oceanSimulation';
+import { DEFAULT_RUN, RUN_OPTIONS } from '../parameters/runOptions';
 export type { Rgb };
 
 export interface AppState extends SimulationParameters {
@@ -92,16 +92,13 @@ export const DEFAULT_STATE: Readonly<AppState> = Object.freeze({
   inspector: false,
   buoys: false,
   boat: false,
-  path: 'auto' as PathPreference,
+  ...DEFAULT_RUN,
   ...DEFAULT_QUALITY,
-  timeScale: 1,
   paused: false,
   t: 0,
   cam: [0, 12, 0, -53.13, -6.84] as AppState['cam'],
   skybox: 'generated',
 });
-
-export const MAX_TIME_SCALE = 10;
 
 /** A fresh, mutable copy of the defaults (arrays copied too). */
 export function defaultState(): AppState {
@@ -270,7 +267,8 @@ export function parseValue<K extends keyof AppState>(key: K, text: string): { va
     case 'mode':
       return fromTable(SHADING_OPTIONS, 'shadingMode');
     case 'path':
-      return (PATH_PREFERENCES as readonly string[]).includes(text) ? ok(text) : bad(PATH_PREFERENCES.join(', '));
+    case 'timeScale':
+      return fromTable(RUN_OPTIONS, key);
     case 'quality':
     case 'targetFps':
       return fromTable(QUALITY_OPTIONS, key);
@@ -281,10 +279,6 @@ export function parseValue<K extends keyof AppState>(key: K, text: string): { va
     case 'paused': {
       const v = parseFlag(text);
       return v === null ? bad('1 or 0') : ok(v);
-    }
-    case 'timeScale': {
-      const v = parseNumber(text);
-      return Number.isFinite(v) && v >= 0 && v <= MAX_TIME_SCALE ? ok(v) : bad(`a number from 0 to ${MAX_TIME_SCALE}`);
     }
     case 't': {
       const v = parseNumber(text);

@@ -22,7 +22,7 @@
  *   boat (boolean)                            a boat circling ahead of the view, leaving a wake on
  *                                             the local waves (src/objects/boat.ts)
  *   quality (auto, high, medium, low, lowest) 'auto' lowers and raises the quality level (render
- *                                             scale, MSAA, grid, cascades: timing/adaptiveQuality.ts)
+ *                                             scale, MSAA, grid, cascades: runtime/adaptiveQuality.ts)
  *                                             to hold target-fps; a level stays fixed
  *   target-fps (default 30)                   the frame rate 'auto' holds
  * A click or tap on the sea drops a stone there: rings spread on the local waves. When the quality
@@ -63,19 +63,18 @@
 import { ACESFilmicToneMapping, PerspectiveCamera, Scene, Vector2, WebGLRenderer } from 'three';
 import { Ocean } from '../ocean';
 import { SceneOutput } from '../render/sceneOutput';
-import { AdaptiveQuality, simulationAtQuality, type QualitySetting } from '../timing/adaptiveQuality';
-import { applyQualityStep } from '../timing/applyQuality';
+import { AdaptiveQuality, simulationAtQuality, type QualitySetting } from '../runtime/adaptiveQuality';
+import { applyQualityStep } from '../runtime/applyQuality';
 import { DEFAULT_QUALITY, QUALITY_OPTIONS } from '../parameters/qualityOptions';
 import { Boat } from '../objects/boat';
 import { SunLight } from '../objects/sunLight';
-import { SimulationClock, wrapLongTime } from '../timing/simulationClock';
-import { describeValue, formatOptionText, optionKey, parseOptionText, quoteText, type OptionRule } from '../parameters/options';
+import { FrameLoop } from '../runtime/frameLoop';
+import { describeValue, formatOptionText, kebabCase, optionRoutes, parseOptionText, quoteText, type OptionRule } from '../parameters/options';
+import { DEFAULT_RUN, RUN_OPTIONS } from '../parameters/runOptions';
 import { DEFAULT_SHADING, DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ShadingOptions, type SunOptions } from '../parameters/sceneOptions';
 import type { PathPreference } from '../layers/oceanSimulation';
 import { CLICKED_STONE, seaPointUnder } from '../render/seaPointer';
 import { DEFAULT_PARAMETERS, parseDecimal, SIMULATION_OPTIONS, validateParameters, type SimulationParameters } from '../parameters/parameters';
-
-const PATHS: readonly PathPreference[] = ['auto', 'gpu', 'js'];
 
 /** The parts of the settings that attributes set from an option table. */
 type Group = 'simulation' | 'sun' | 'shading';
@@ -91,25 +90,18 @@ const GROUP_DEFAULTS: Readonly<Record<Group, Readonly<Record<string, unknown>>>>
 };
 
 /** Attributes that map onto options: each option's name, and each alias, in kebab case. */
-const OPTION_ATTRIBUTES: ReadonlyMap<string, { group: Group; name: string }> = new Map(
-  (Object.keys(TABLES) as Group[]).flatMap((group) =>
-    Object.entries(TABLES[group])
-      .flatMap(([key, rule]) => [key, ...(rule.aliases ?? [])])
-      .map((name) => [name.replace(/[A-Z]/g, (c) => `-${c.toLowerCase()}`), { group, name }] as const),
-  ),
-);
+const OPTION_ATTRIBUTES = optionRoutes(TABLES, kebabCase);
+
+/**
+ * The element's own settings that a table's rule reads, as the app's URL reads them: path and
+ * time-scale (parameters/runOptions.ts), quality and target-fps (parameters/qualityOptions.ts).
+ */
+const OWN_TABLES = { run: RUN_OPTIONS, quality: QUALITY_OPTIONS } as const;
+const OWN_ATTRIBUTES = optionRoutes<keyof typeof OWN_TABLES>(OWN_TABLES, kebabCase);
+type OwnKey = 'path' | 'timeScale' | 'quality' | 'targetFps';
 
 /** Every attribute the element reads. */
-export const FFT_OCEAN_ATTRIBUTES = [
-  ...OPTION_ATTRIBUTES.keys(),
-  'path',
-  'time-scale',
-  'paused',
-  'camera-height',
-  'boat',
-  'quality',
-  'target-fps',
-] as const;
+export const FFT_OCEAN_ATTRIBUTES = [...OPTION_ATTRIBUTES.keys(), ...OWN_ATTRIBUTES.keys(), 'paused', 'camera-height', 'boat'] as const;
 export type FftOceanAttribute = (typeof FFT_OCEAN_ATTRIBUTES)[number];
 
 /** The element's own attributes (beside the options), as its settings hold them. */
@@ -138,20 +130,13 @@ interface Settings extends ElementSettings {
 }
 
 export const ELEMENT_DEFAULTS: Readonly<ElementSettings> = {
-  path: 'auto',
-  timeScale: 1,
+  path: DEFAULT_RUN.path,
+  timeScale: DEFAULT_RUN.timeScale,
   paused: false,
   cameraHeight: 8,
   boat: false,
   ...DEFAULT_QUALITY,
 };
-
-/**
- * The fastest time-scale, either way: at 1000 the default sea's 200 s repeat period passes in a
- * fifth of a second, and frames show unrelated seas. Far beyond it a frame's step overflows to
- * Infinity (time-scale 1e308), and the time with it.
- */
-const MAX_TIME_SCALE = 1000;
 
 /** Within this many px of the viewport an element creates its renderer and ocean. */
 const NEAR_MARGIN = 200;
@@ -235,14 +220,15 @@ export class FftOceanElement extends ElementBase {
   private readonly root: ShadowRoot;
   private live: Live | null = null;
   private message: HTMLElement | null = null;
-  private simulatedTime = 0;
-  /** Real frame time × time-scale per animated frame; restarted whenever drawing stops or pauses. */
-  private readonly clock = new SimulationClock();
+  /**
+   * The frame loop (runtime/frameLoop.ts): its clock, restarted whenever drawing stops or pauses,
+   * its adaptive quality (the quality and target-fps attributes; kept while the element has no
+   * context) and the simulated time shown.
+   */
+  private readonly loop = new FrameLoop(new AdaptiveQuality(ELEMENT_DEFAULTS.quality, ELEMENT_DEFAULTS.targetFps), { t: 0 });
   private frameRequest = 0;
   private needsDraw = true;
   private framesDrawn = 0;
-  /** The quality level in force (the quality and target-fps attributes); kept while the element has no context. */
-  private adaptiveQuality = new AdaptiveQuality(ELEMENT_DEFAULTS.quality, ELEMENT_DEFAULTS.targetFps);
   private readonly onVisibilityChange = () => this.activityChanged();
   /** The observers of the viewport and of the NEAR_MARGIN and FAR_MARGIN bands while the element is on the page (else empty). */
   private proximityObservers: IntersectionObserver[] = [];
@@ -294,7 +280,7 @@ export class FftOceanElement extends ElementBase {
 
   /** Simulated seconds shown; settable (any finite number) to jump to a moment. */
   get time(): number {
-    return this.simulatedTime;
+    return this.loop.time.t;
   }
 
   set time(seconds: number) {
@@ -302,16 +288,16 @@ export class FftOceanElement extends ElementBase {
       console.warn(`<fft-ocean>: ignoring time = ${describeValue(seconds)}: it must be a finite number of seconds`);
       return;
     }
-    this.simulatedTime = seconds;
+    this.loop.time.t = seconds;
     this.invalidate();
   }
 
   /**
-   * The adaptive quality in force (timing/adaptiveQuality.ts): its setting, its level and step,
+   * The adaptive quality in force (runtime/adaptiveQuality.ts): its setting, its level and step,
    * and the median frame time that chose it.
    */
   get quality(): AdaptiveQuality {
-    return this.adaptiveQuality;
+    return this.loop.quality;
   }
 
   /** Frames drawn since the element was created (for diagnostics and tests). */
@@ -363,30 +349,31 @@ export class FftOceanElement extends ElementBase {
       console.warn(`<fft-ocean>: ignoring ${name}=${quoteText(raw ?? '')}: ${reason}; keeping ${formatOptionText(kept)}`);
     };
     const option = OPTION_ATTRIBUTES.get(name);
+    const own = OWN_ATTRIBUTES.get(name);
     if (option) {
-      const key = optionKey(TABLES[option.group], option.name);
+      const key = option.key;
       try {
         this.applyOption(option.group, key, option.name, raw);
       } catch (error) {
         reject(errorMessage(error), this.optionSetting(option.group, key));
         return;
       }
-    } else if (name === 'path') {
-      const value = (raw === null ? ELEMENT_DEFAULTS.path : raw.trim()) as PathPreference;
-      if (!PATHS.includes(value)) {
-        reject(`it must be one of ${PATHS.join(', ')}`, s.path);
+    } else if (own) {
+      // The URL's rule and message, under the attribute's name.
+      const key = own.key as OwnKey;
+      try {
+        const value = raw === null ? ELEMENT_DEFAULTS[key] : parseOptionText(OWN_TABLES[own.group] as Readonly<Record<string, OptionRule>>, own.name, raw);
+        Object.assign(s, { [key]: value });
+      } catch (error) {
+        reject(errorMessage(error), s[key]);
         return;
       }
-      s.path = value;
       const ocean = this.live?.ocean;
-      if (ocean && ocean.simulation.pathPreference !== value) ocean.simulation.pathPreference = value;
-    } else if (name === 'time-scale') {
-      const value = raw === null ? ELEMENT_DEFAULTS.timeScale : parseDecimal(raw);
-      if (!(Math.abs(value) <= MAX_TIME_SCALE)) {
-        reject(`it must be a number of simulated seconds per second from -${MAX_TIME_SCALE} to ${MAX_TIME_SCALE}`, s.timeScale);
-        return;
+      if (key === 'path' && ocean && ocean.simulation.pathPreference !== s.path) ocean.simulation.pathPreference = s.path;
+      if (key === 'quality' || key === 'targetFps') {
+        this.loop.quality = new AdaptiveQuality(s.quality, s.targetFps);
+        if (this.live) this.applyQuality(this.live);
       }
-      s.timeScale = value;
     } else if (name === 'camera-height') {
       const value = raw === null ? ELEMENT_DEFAULTS.cameraHeight : parseDecimal(raw);
       if (!Number.isFinite(value) || value <= 0 || value > 10000) {
@@ -398,23 +385,11 @@ export class FftOceanElement extends ElementBase {
       const paused = booleanAttribute(raw);
       if (paused !== s.paused) {
         s.paused = paused;
-        this.clock.restart();
+        this.loop.restart();
       }
     } else if (name === 'boat') {
       s.boat = booleanAttribute(raw);
       if (this.live) this.showBoat(this.live);
-    } else if (name === 'quality' || name === 'target-fps') {
-      // The URL's rule and message (parameters/qualityOptions.ts), under the attribute's name.
-      const key = name === 'quality' ? 'quality' : 'targetFps';
-      try {
-        const value = raw === null ? ELEMENT_DEFAULTS[key] : parseOptionText(QUALITY_OPTIONS, key, raw);
-        Object.assign(s, { [key]: value });
-      } catch (error) {
-        reject(errorMessage(error), s[key]);
-        return;
-      }
-      this.adaptiveQuality = new AdaptiveQuality(s.quality, s.targetFps);
-      if (this.live) this.applyQuality(this.live);
     }
     this.invalidate();
   }
@@ -438,7 +413,7 @@ export class FftOceanElement extends ElementBase {
       const asked = validateParameters(next); // throws a ParameterError naming the rule
       // The grid and the cascades run within the quality level's.
       if (key === 'resolution' || key === 'patchSizes') {
-        if (this.live) applyQualityStep(this.live, asked, this.adaptiveQuality.step);
+        if (this.live) applyQualityStep(this.live, asked, this.loop.quality.step);
       } else {
         ocean?.setParameters({ [key]: this.optionSetting(group, key, next) });
       }
@@ -523,7 +498,7 @@ export class FftOceanElement extends ElementBase {
     try {
       ocean = new Ocean(renderer, {
         ...s.simulation,
-        ...simulationAtQuality(validateParameters(s.simulation), this.adaptiveQuality.step),
+        ...simulationAtQuality(validateParameters(s.simulation), this.loop.quality.step),
         ...s.sun,
         ...s.shading,
         path: s.path,
@@ -585,7 +560,7 @@ export class FftOceanElement extends ElementBase {
     this.applyQuality(live);
     FftOceanElement.contextHolders.add(this);
     this.showBoat(live);
-    this.clock.restart();
+    this.loop.restart();
     this.resize();
     resizeObserver.observe(this);
   }
@@ -610,13 +585,13 @@ export class FftOceanElement extends ElementBase {
     }
     this.message?.remove();
     this.message = null;
-    this.clock.restart();
+    this.loop.restart();
     this.needsDraw = true;
   }
 
   /** Puts the quality level in force: pixel ratio, MSAA, grid and cascades (applyQuality.ts). */
   private applyQuality(live: Live): void {
-    applyQualityStep(live, validateParameters(this.settings.simulation), this.adaptiveQuality.step);
+    applyQualityStep(live, validateParameters(this.settings.simulation), this.loop.quality.step);
   }
 
   /** Puts the boat (and its light) in the scene, or takes it out and frees it, as `show` says. */
@@ -657,7 +632,7 @@ export class FftOceanElement extends ElementBase {
 
   /** Something changed that affects whether frames are drawn. */
   private activityChanged(): void {
-    this.clock.restart(); // the time that passed while inactive is not simulated
+    this.loop.restart(); // the time that passed while inactive is not simulated
     this.invalidate();
   }
 
@@ -675,16 +650,14 @@ export class FftOceanElement extends ElementBase {
     this.frameRequest = 0;
     const live = this.live;
     if (!live || !this.isActive()) {
-      this.clock.restart();
+      this.loop.restart();
       return;
     }
     const animating = !this.settings.paused;
-    // Kept within what a double resolves (wrapLongTime): the same sea, and time that still moves.
-    if (animating) this.simulatedTime = wrapLongTime(this.simulatedTime, live.ocean.repeatPeriod) + this.clock.advance(now, this.settings.timeScale);
     // Only frames drawn one after another tell how fast they come (paused, frames come on changes).
-    if (animating && this.adaptiveQuality.frame(this.clock.realStep)) {
+    if (animating && this.loop.advance(now, this.settings.timeScale)) {
       this.applyQuality(live);
-      const { level, medianFrameMs } = this.adaptiveQuality;
+      const { level, medianFrameMs } = this.loop.quality;
       this.dispatchEvent(new CustomEvent('fft-ocean-quality-change', { detail: { level, medianFrameMs } }));
     }
     if (animating || this.needsDraw) {
@@ -716,19 +689,16 @@ export class FftOceanElement extends ElementBase {
   }
 
   private draw(live: Live): void {
-    const { scene, camera, ocean } = live;
     this.needsDraw = false;
-    // The time as a double resolves it (the same sea): a time set far ahead (time = 1e300) would
-    // otherwise put the drifting view out where the surface's coordinates overflow.
-    const t = wrapLongTime(this.simulatedTime, ocean.repeatPeriod);
-    placeCamera(camera, t, this.settings.cameraHeight, this.optionSetting('sun', 'sunAzimuth') as number);
-    ocean.update(t, camera);
-    live.boat?.boat.update();
-    live.boat?.light.update();
-    // The far plane must reach the horizon.
-    camera.far = Math.max(1e4, 1.5 * ocean.horizonDistanceFor(camera.position.y));
-    camera.updateProjectionMatrix();
-    live.output.render(scene, camera);
+    const sunAzimuth = this.optionSetting('sun', 'sunAzimuth') as number;
+    // The time wrapped as a double resolves it, the sea updated for the drifting view, the far plane, the render.
+    this.loop.draw(live, {
+      placeCamera: (t) => placeCamera(live.camera, t, this.settings.cameraHeight, sunAzimuth),
+      beforeRender: () => {
+        live.boat?.boat.update();
+        live.boat?.light.update();
+      },
+    });
     this.framesDrawn++;
     if (this.framesDrawn === 1) this.dispatchEvent(new CustomEvent('fft-ocean-ready'));
   }

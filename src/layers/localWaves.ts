@@ -24,6 +24,7 @@ import { checkOptionNames, DisposedError, ParameterError } from '../parameters/o
 import { localWaveFields, type LocalWaveFields } from './localWaveFields';
 import { MAX_IMPULSES_PER_STEP, type HeightImpulse, type LocalWaveGrid } from './localWaveModel';
 import { heightAt } from './surfaceQuery';
+import type { PathPreference } from './oceanSimulation';
 import type { LayerFieldsOnCpu, LayerFrame, LayerQueryFields, WaveLayer } from './waveLayer';
 
 /** The longest step taken as a step; a longer dt (a hidden tab, a jump) clears the waves. */
@@ -46,7 +47,7 @@ export interface LocalWavesOptions {
    * it renders in software (SwiftShader, llvmpipe), where the JS solver is several times faster.
    * @defaultValue 'auto'
    */
-  path?: 'auto' | 'gpu' | 'js';
+  path?: PathPreference;
 }
 
 /** The names of LocalWavesOptions, DropOptions, HullShape and HullPose: any other is a misspelling. */

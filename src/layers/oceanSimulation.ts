@@ -35,7 +35,20 @@ import { WhitecapFoam } from './whitecapFoam';
 
 /** Which implementation computes the fields. */
 export type SimulationPath = 'gpu-rgba32f' | 'gpu-rgba16f' | 'js' | 'js-worker';
-export type PathPreference = 'auto' | 'gpu' | 'js';
+/**
+ * The simulation paths a caller may ask for, the one list of them: the Ocean's path option, the
+ * local waves' path, the app's URL and panel, <fft-ocean>'s path attribute and the shot CLI all
+ * read this.
+ */
+export const PATH_PREFERENCES = ['auto', 'gpu', 'js'] as const;
+export type PathPreference = (typeof PATH_PREFERENCES)[number];
+/** PATH_PREFERENCES as messages list them: "'auto', 'gpu' or 'js'". */
+export const PATH_PREFERENCES_TEXT = `${PATH_PREFERENCES.slice(0, -1).map((p) => `'${p}'`).join(', ')} or '${PATH_PREFERENCES[PATH_PREFERENCES.length - 1]}'`;
+
+/** Whether `value` is one of PATH_PREFERENCES. */
+export function isPathPreference(value: unknown): value is PathPreference {
+  return (PATH_PREFERENCES as readonly unknown[]).includes(value);
+}
 
 export interface SimulationOptions {
   /** 'auto': GPU when float render targets exist (RGBA32F, else RGBA16F), else JS. @defaultValue 'auto' */
@@ -106,7 +119,7 @@ export class OceanSimulation {
     this.useWorker = options.worker ?? (defaults.worker && typeof Worker !== 'undefined');
     this.localWaveOptions = checkLocalWaves(options.localWaves ?? defaults.localWaves);
     const localPath = this.localWaveOptions?.path ?? 'auto';
-    if (localPath !== 'auto' && localPath !== 'gpu' && localPath !== 'js') throw new ParameterError('localWaves.path', localPath, "'auto', 'gpu' or 'js'");
+    if (!isPathPreference(localPath)) throw new ParameterError('localWaves.path', localPath, PATH_PREFERENCES_TEXT);
     this.rebuild(true);
   }
 
@@ -398,8 +411,8 @@ function checkWaveLayer(layer: WaveLayer): void {
 }
 
 function checkPreference(preference: PathPreference): PathPreference {
-  if (preference !== 'auto' && preference !== 'gpu' && preference !== 'js') {
-    throw new ParameterError('path', preference, "'auto', 'gpu' or 'js'");
+  if (!isPathPreference(preference)) {
+    throw new ParameterError('path', preference, PATH_PREFERENCES_TEXT);
   }
   return preference;
 }

@@ -108,6 +108,46 @@ export function describeValue(value: unknown, nested = false): string {
   return Array.isArray(value) ? `[${shown.join(', ')}]` : `{${shown.join(', ')}}`;
 }
 
+/**
+ * An option's name as element attributes and CLI flags write it (kebab case): windSpeed is
+ * wind-speed. The one conversion of names between the constructor and URL (camel case) and
+ * attributes and flags: every shell goes through it (and camelCase back).
+ */
+export function kebabCase(name: string): string {
+  return name.replace(/[A-Z]/g, (c) => `-${c.toLowerCase()}`);
+}
+
+/** A kebab-case name back in camel case, as the option tables key it: wind-speed is windSpeed. */
+export function camelCase(name: string): string {
+  return name.replace(/-([a-z])/g, (_, c: string) => c.toUpperCase());
+}
+
+/** Where an option's name leads: the table (group) it is in, its key there, and the name as the table spells it (the key or an alias). */
+export interface OptionRoute<G extends string = string> {
+  group: G;
+  key: string;
+  name: string;
+}
+
+/**
+ * The option router: every option of `tables` (named by group) under each name it is taken by,
+ * its key and each alias, written by `spell` (kebabCase for attributes and CLI flags; as they are
+ * for the constructor and the URL). A shell looks a name up here and hands the value to the
+ * table's rule (parseOptionText, checkOption) with the route's group, key and name.
+ */
+export function optionRoutes<G extends string>(
+  tables: Readonly<Record<G, Readonly<Record<string, OptionRule>>>>,
+  spell: (name: string) => string = (name) => name,
+): ReadonlyMap<string, OptionRoute<G>> {
+  const routes = new Map<string, OptionRoute<G>>();
+  for (const group of Object.keys(tables) as G[]) {
+    for (const [key, rule] of Object.entries(tables[group])) {
+      for (const name of [key, ...(rule.aliases ?? [])]) routes.set(spell(name), { group, key, name });
+    }
+  }
+  return routes;
+}
+
 /** The aliases of `table`'s options, each mapped to the key it is another name for. */
 export function optionAliases<T>(table: OptionTable<T>): Readonly<Record<string, keyof T & string>> {
   const aliases: Record<string, keyof T & string> = {};

@@ -1,10 +1,10 @@
 /**
- * The adaptive quality's settings (timing/adaptiveQuality.ts): their defaults, ranges and checks,
+ * The adaptive quality's settings (runtime/adaptiveQuality.ts): their defaults, ranges and checks,
  * for the app's URL and panel and <fft-ocean>'s attributes, which so read them by one rule and
  * say the same of a bad value.
  */
 import { between, oneOf, type OptionTable } from './options';
-import { DEFAULT_TARGET_FPS, QUALITY_SETTINGS, type QualitySetting } from '../timing/adaptiveQuality';
+import { DEFAULT_TARGET_FPS, QUALITY_SETTINGS, type QualitySetting } from '../runtime/adaptiveQuality';
 
 export interface QualityOptions {
   /** 'auto' adapts the quality level to hold targetFps; a level (high, medium, low, lowest) stays fixed. @defaultValue 'auto' */

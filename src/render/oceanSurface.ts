@@ -52,7 +52,7 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
   /**
    * The fewest cells on a side of each ring of the grid: the grid follows the drawing buffer's
    * height (about a cell per 10 pixels) down to this many. A power of two from 16 to 128.
-   * The quality level 'lowest' sets 16 (timing/applyQuality.ts): its picture is a few hundred
+   * The quality level 'lowest' sets 16 (runtime/applyQuality.ts): its picture is a few hundred
    * pixels high, and under a software renderer a quarter of the vertices saves a third of its frame.
    * @defaultValue 32
    */

@@ -1,6 +1,6 @@
 /**
  * Draws a scene onto the renderer's canvas with or without multisampling (4× MSAA), switchable
- * from one frame to the next, for the quality levels (timing/adaptiveQuality.ts).
+ * from one frame to the next, for the quality levels (runtime/adaptiveQuality.ts).
  *
  * A canvas's own antialiasing is fixed when its WebGL context is made (the `antialias` attribute),
  * so the renderer is made without it, and MSAA, when on, goes through a multisampled render target

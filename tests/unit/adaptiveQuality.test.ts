@@ -8,7 +8,7 @@ import {
   STAY_SECONDS,
   WINDOW_SECONDS,
   type QualityLevel,
-} from '../../src/timing/adaptiveQuality';
+} from '../../src/runtime/adaptiveQuality';
 
 /**
  * Runs `seconds` of frames whose length is frameSeconds(level) (a device model), and returns the

@@ -8,7 +8,7 @@
 import { readFileSync, writeFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { ELEMENT_DEFAULTS, FFT_OCEAN_ATTRIBUTES } from '../../src/embed/fftOceanElement';
-import type { OptionRule } from '../../src/parameters/options';
+import { kebabCase, type OptionRule } from '../../src/parameters/options';
 import { DEFAULT_PARAMETERS, SIMULATION_OPTIONS } from '../../src/parameters/parameters';
 import { DEFAULT_SHADING, DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS } from '../../src/parameters/sceneOptions';
 // From the package's entry point, as a user reads them.
@@ -76,7 +76,7 @@ function valueOf(text: string): unknown {
   return Number(text);
 }
 
-const kebab = (name: string) => name.replace(/[A-Z]/g, (c) => `-${c.toLowerCase()}`);
+
 const cell = (text: string) => text.replace(/\|/g, '\\|');
 
 interface TableSource {
@@ -107,7 +107,7 @@ function optionTables(): string {
     for (const [key, rule] of Object.entries(rules)) {
       const names = [key, ...(rule.aliases ?? [])];
       lines.push(
-        `| ${names.map((n) => `\`${n}\``).join(', ')} | ${names.map((n) => `\`${kebab(n)}\``).join(', ')} | \`${literal(defaults[key])}\` | ${rule.unit || '–'} | ${cell(rule.allowed)} | ${cell(docs.get(key)!.text)} |`,
+        `| ${names.map((n) => `\`${n}\``).join(', ')} | ${names.map((n) => `\`${kebabCase(n)}\``).join(', ')} | \`${literal(defaults[key])}\` | ${rule.unit || '–'} | ${cell(rule.allowed)} | ${cell(docs.get(key)!.text)} |`,
       );
     }
     lines.push('');
@@ -119,7 +119,7 @@ function optionTables(): string {
     lines.push(`| \`${key}\` | ${cell(value)} | ${cell(doc.text)} |`);
   }
   lines.push('', '**`<fft-ocean>` only** (beside the options above, in kebab case)', '', '| attribute | default | what it is |', '|:--|:--|:--|');
-  for (const [key, value] of Object.entries(ELEMENT_DEFAULTS)) lines.push(`| \`${kebab(key)}\` | \`${literal(value)}\` | ${cell(elementDocs.get(key)!.text)} |`);
+  for (const [key, value] of Object.entries(ELEMENT_DEFAULTS)) lines.push(`| \`${kebabCase(key)}\` | \`${literal(value)}\` | ${cell(elementDocs.get(key)!.text)} |`);
   return lines.join('\n');
 }
 

@@ -13,7 +13,9 @@ import { FloatingBody } from '../../src/layers/floatingBody';
 import { LocalWaves } from '../../src/layers/localWaves';
 import { OceanSimulation } from '../../src/layers/oceanSimulation';
 import { SkyEnvironment } from '../../src/render/skyEnvironment';
-import { mergeOptions, nearestName, ParameterError, parseOptionText, quoteText } from '../../src/parameters/options';
+import { camelCase, kebabCase, mergeOptions, nearestName, optionRoutes, ParameterError, parseOptionText, quoteText } from '../../src/parameters/options';
+import { RUN_OPTIONS } from '../../src/parameters/runOptions';
+import { PATH_PREFERENCES, PATH_PREFERENCES_TEXT } from '../../src/layers/oceanSimulation';
 import { validateParameters } from '../../src/parameters/parameters';
 import { colorToLinear, DEFAULT_SHADING, SHADING_OPTIONS, type Rgb } from '../../src/parameters/sceneOptions';
 
@@ -217,5 +219,34 @@ describe('quoteText', () => {
     expect(quoteText('abc')).toBe('"abc"');
     expect(quoteText('x'.repeat(40))).toBe(`"${'x'.repeat(40)}"`);
     expect(quoteText('x'.repeat(41))).toBe(`"${'x'.repeat(40)}…"`);
+  });
+});
+
+describe('the names shells write options by, and the one list of paths', () => {
+  it('converts between camel case and kebab case, both ways', () => {
+    expect(kebabCase('windSpeed')).toBe('wind-speed');
+    expect(kebabCase('scatterColour')).toBe('scatter-colour');
+    expect(kebabCase('ior')).toBe('ior');
+    for (const name of ['windSpeed', 'patchSizes', 'sunElevation', 'timeScale', 'ior']) expect(camelCase(kebabCase(name))).toBe(name);
+  });
+
+  it('routes every key and alias of the tables, as a shell spells them, to its table and key', () => {
+    const routes = optionRoutes({ shading: SHADING_OPTIONS, run: RUN_OPTIONS }, kebabCase);
+    expect(routes.get('scatter-color')).toEqual({ group: 'shading', key: 'scatterColor', name: 'scatterColor' });
+    expect(routes.get('scatter-colour')).toEqual({ group: 'shading', key: 'scatterColor', name: 'scatterColour' });
+    expect(routes.get('time-scale')).toEqual({ group: 'run', key: 'timeScale', name: 'timeScale' });
+    expect(optionRoutes({ run: RUN_OPTIONS }).get('timeScale')?.key).toBe('timeScale');
+  });
+
+  it('lists the paths once, and says them in messages from that list', () => {
+    expect(PATH_PREFERENCES).toEqual(['auto', 'gpu', 'js']);
+    expect(PATH_PREFERENCES_TEXT).toBe("'auto', 'gpu' or 'js'");
+    expect(() => parseOptionText(RUN_OPTIONS, 'path', 'webgpu')).toThrow(`path must be 'auto', 'gpu' or 'js'; got "webgpu"`);
+  });
+
+  it('time runs at most 1000 times as fast, either way', () => {
+    expect(parseOptionText(RUN_OPTIONS, 'timeScale', '-1000')).toBe(-1000);
+    expect(() => parseOptionText(RUN_OPTIONS, 'timeScale', '1001')).toThrow(ParameterError);
+    expect(() => parseOptionText(RUN_OPTIONS, 'timeScale', 'NaN')).toThrow(ParameterError);
   });
 });

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { GAP_FACTOR, LONG_GAP, LONGEST_FRAME, LONGEST_KEPT_TIME, RATIO_INTERVAL, SimulationClock, wrapLongTime } from '../../src/timing/simulationClock';
+import { GAP_FACTOR, LONG_GAP, LONGEST_FRAME, LONGEST_KEPT_TIME, RATIO_INTERVAL, SimulationClock, wrapLongTime } from '../../src/runtime/simulationClock';
 import { seaRepeatPeriod } from '../../src/spectrum/cascadeBands';
 import { createCascadeSpectra } from '../../src/spectrum/initialSpectrum';
 import { CpuWaveFields } from '../../src/fft/cpuWaveFields';

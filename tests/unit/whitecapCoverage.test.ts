@@ -76,7 +76,7 @@ describe('whitecap coverage against Monahan & O’Muircheartaigh (1980)', () => 
   }, 60_000);
 
   it('is the same within ±20 % at every quality level’s grid and patch layout (12 m/s, seed 5)', () => {
-    // The grids of src/timing/adaptiveQuality.ts' QUALITY_STEPS (simulationAtQuality: N at most
+    // The grids of src/runtime/adaptiveQuality.ts' QUALITY_STEPS (simulationAtQuality: N at most
     // the level's, the largest maxCascades patches), and two layouts more: N = 512, and 4 cascades.
     const defaults = [13.7, 79.3, 457];
     const layouts: [string, Partial<SimulationParameters>, number][] = [

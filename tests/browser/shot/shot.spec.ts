@@ -184,7 +184,7 @@ test('a bad value or an unknown option comes back from the page: exit code 2, na
     [['--absorption', '0.4,0.1'], '--absorption must be three numbers'],
     [['--scatter-color', 'seaweed'], '--scatter-color must be a colour: a THREE.Color, a hex number'],
     [['--scater-colour', '#fff'], 'unknown option --scater-colour; did you mean --scatter-color?'],
-    [['--path', 'cuda'], '--path must be auto, gpu, js; got "cuda"'],
+    [['--path', 'cuda'], `--path must be 'auto', 'gpu' or 'js'; got "cuda"`],
     [['--wind', '5', '--wind-speed', '6'], '--wind-speed is given twice (also as --wind)'],
     [['--query', 'windSpeed=99&cam=1,2'], 'windSpeed must be a speed in m/s from 0 to 60; got "99"; cam must be five numbers'],
     [['--query', 'wind=5'], 'wind: unknown URL parameter'],
