@@ -61,6 +61,16 @@ export class WhitecapFoam {
   private lastTime = NaN;
   /** True while the field is all zero (cleared, and no foam made since). */
   private empty = true;
+  /** The canvas whose restored context the GPU foam listens for, or null (the JS path's survives). */
+  private readonly canvas: EventTarget | null;
+  /**
+   * A restored WebGL context has lost the GPU foam's history (its render targets' contents), which
+   * the frames cannot make again by themselves: the next update rebuilds it as after a jump in time
+   * (the warm-up), so the same time shows the same foam.
+   */
+  private readonly onContextRestored = (): void => {
+    this.lastTime = NaN;
+  };
 
   /** `layers`: the sea's periodic layers, in the contract's order (orderLayers): the largest last. */
   constructor(
@@ -75,6 +85,9 @@ export class WhitecapFoam {
     this.frame = { size: largest.size, origin: [0, 0], periodic: true, resolution: largest.resolution };
     this.producer = gpuType === null ? new JsFoam(renderer, this.frame) : new GpuFoam(renderer, layers, this.frame, gpuType);
     this.texture = this.producer.texture;
+    // Removed in dispose(); guarded for canvas-like objects without listeners, as the sky is.
+    this.canvas = gpuType === null ? null : (renderer.domElement as EventTarget | undefined) ?? null;
+    this.canvas?.addEventListener?.('webglcontextrestored', this.onContextRestored);
   }
 
   /**
@@ -103,6 +116,7 @@ export class WhitecapFoam {
   }
 
   dispose(): void {
+    this.canvas?.removeEventListener?.('webglcontextrestored', this.onContextRestored);
     this.producer.dispose();
   }
 }

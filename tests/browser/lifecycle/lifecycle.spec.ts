@@ -138,7 +138,7 @@ test('removing <fft-ocean> frees its renderer, context, canvas and listeners; pu
   });
   expect(running.memory.textures).toBeGreaterThan(0);
   expect(await listeners(page, 'document', 'visibilitychange')).toBe(documentListeners + 1);
-  expect(await listeners(page, 'window.removed.canvas', 'webglcontextrestored')).toBe(3); // three.js, the sky, the element
+  expect(await listeners(page, 'window.removed.canvas', 'webglcontextrestored')).toBe(4); // three.js, the sky, the GPU foam, the element
 
   const removed = await page.evaluate(async () => {
     const { el, renderer, canvas, gl } = window.removed;
