@@ -21,12 +21,11 @@ import type { LocalWaves } from './layers/localWaves';
 import type { WaveLayer } from './layers/waveLayer';
 import { checkThreeRelease, checkWebGLRenderer } from './fft/threeInternals';
 import { heightAt, normalAt, velocityAt } from './layers/surfaceQuery';
+import { surfaceHeightAt, surfaceHeightsAt, surfaceNormalAt, surfaceVectorsAt, surfaceVelocityAt, warmUpQueries } from './oceanQueries';
+import { SeaStatistics } from './oceanStatistics';
 import { checkOptionNames, DisposedError, isOptionsObject, optionAliases } from './parameters/options';
 import { ParameterError, SIMULATION_OPTIONS, type SimulationParameters } from './parameters/parameters';
 import { DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ShadingChanges, type ShadingOptions } from './parameters/sceneOptions';
-import type { InitialSpectrum } from './spectrum/initialSpectrum';
-import { spectralMoments } from './spectrum/seaState';
-import { seaRepeatPeriod } from './spectrum/cascadeBands';
 
 export interface OceanOptions extends Partial<SimulationParameters>, OceanShadingOptions, SimulationOptions {
   /** Sun elevation above the horizon in degrees, [-90, 90]. @defaultValue 30 */
@@ -75,14 +74,8 @@ const SUN_POSITION_KEYS: readonly string[] = ['elevation', 'azimuth', 'direction
 /** What the batch queries write into. */
 export type WritableNumbers = { length: number; [index: number]: number };
 
-/** The batch queries' one vector, reused (nothing is allocated per point). */
-const scratch = { x: 0, y: 0, z: 0 };
-
 /** Where update's camera is in the world, reused. */
 const viewerPosition = new Vector3();
-
-/** Whether an Ocean of this page has run the queries once (Ocean.warmUpQueries). */
-let queryCodeWarm = false;
 
 /** Significant wave height (m) and peak period (s) of a sea state. */
 export interface SeaStateSummary {
@@ -116,9 +109,8 @@ export class Ocean extends Object3D<OceanEventMap> {
   /** The running path at the last update, to tell when it changes (the pathchange event). */
   private runningPath: SimulationPath | null = null;
   private disposed = false;
-  private rms: { spectra: readonly InitialSpectrum[]; value: number } | null = null;
-  private summary: { parameters: Readonly<SimulationParameters>; value: SeaStateSummary } | null = null;
-  private period: { parameters: Readonly<SimulationParameters>; value: number } | null = null;
+  /** heightRms, seaState and repeatPeriod, each computed once per set of spectra or parameters. */
+  private readonly statistics = new SeaStatistics(() => this.simulation);
 
   constructor(
     private readonly renderer: WebGLRenderer,
@@ -190,13 +182,7 @@ export class Ocean extends Object3D<OceanEventMap> {
    */
   get heightRms(): number {
     this.checkAlive('heightRms');
-    const cascades = this.simulation.cascades;
-    if (this.rms?.spectra.length !== cascades.length || this.rms.spectra.some((spectrum, i) => spectrum !== cascades[i].spectrum)) {
-      let sum = 0;
-      for (const { spectrum } of cascades) for (const a of spectrum.amplitudes) sum += a * a;
-      this.rms = { spectra: cascades.map((cascade) => cascade.spectrum), value: Math.sqrt(sum) };
-    }
-    return this.rms.value;
+    return this.statistics.heightRms;
   }
 
   /**
@@ -206,13 +192,7 @@ export class Ocean extends Object3D<OceanEventMap> {
    */
   get seaState(): SeaStateSummary {
     this.checkAlive('seaState');
-    const parameters = this.simulation.parameters;
-    if (this.summary?.parameters !== parameters) {
-      const { m0, peakFrequency } = spectralMoments(parameters, parameters.patchSizes[parameters.patchSizes.length - 1]);
-      const value = { significantWaveHeight: 4 * Math.sqrt(m0), peakPeriod: peakFrequency > 0 ? (2 * Math.PI) / peakFrequency : 0 };
-      this.summary = { parameters, value };
-    }
-    return this.summary.value;
+    return this.statistics.seaState;
   }
 
   /**
@@ -233,7 +213,7 @@ export class Ocean extends Object3D<OceanEventMap> {
     this.simulation.update(timeSeconds);
     this.surface.fitDrawingBuffer(this.renderer);
     this.currentTime = timeSeconds;
-    if (!queryCodeWarm) this.warmUpQueries();
+    this.warmUpQueries();
     const running = this.simulation.path;
     if (running !== this.runningPath) {
       const first = this.runningPath === null;
@@ -253,10 +233,7 @@ export class Ocean extends Object3D<OceanEventMap> {
    */
   get repeatPeriod(): number {
     this.checkAlive('repeatPeriod');
-    // Asked every frame by the render loops: computed once per set of parameters.
-    const parameters = this.simulation.parameters;
-    if (this.period?.parameters !== parameters) this.period = { parameters, value: seaRepeatPeriod(parameters) };
-    return this.period.value;
+    return this.statistics.repeatPeriod;
   }
 
   /**
@@ -356,8 +333,7 @@ export class Ocean extends Object3D<OceanEventMap> {
    */
   heightAt(x: number, z: number): number {
     this.checkAlive('heightAt');
-    checkCoordinates('heightAt(x, z)', x, z);
-    return heightAt(this.simulation.layers, this.simulation.parameters.choppiness, this.currentTime, x, z);
+    return surfaceHeightAt('heightAt', this.simulation, this.currentTime, x, z);
   }
 
   /**
@@ -367,8 +343,7 @@ export class Ocean extends Object3D<OceanEventMap> {
    */
   normalAt(x: number, z: number, target = new Vector3()): Vector3 {
     this.checkAlive('normalAt');
-    checkCoordinates('normalAt(x, z)', x, z);
-    return normalAt(this.simulation.layers, this.simulation.parameters.choppiness, this.currentTime, x, z, target);
+    return surfaceNormalAt('normalAt', this.simulation, this.currentTime, x, z, target);
   }
 
   /**
@@ -378,8 +353,7 @@ export class Ocean extends Object3D<OceanEventMap> {
    */
   velocityAt(x: number, z: number, target = new Vector3()): Vector3 {
     this.checkAlive('velocityAt');
-    checkCoordinates('velocityAt(x, z)', x, z);
-    return velocityAt(this.simulation.layers, this.simulation.parameters.choppiness, this.currentTime, x, z, target);
+    return surfaceVelocityAt('velocityAt', this.simulation, this.currentTime, x, z, target);
   }
 
   /**
@@ -387,20 +361,20 @@ export class Ocean extends Object3D<OceanEventMap> {
    * point (and is returned). Allocates nothing.
    */
   heightsAt<T extends WritableNumbers>(xz: ArrayLike<number>, out: T): T {
-    const count = this.checkBatch('heightsAt', xz, out, 1);
-    const { layers, parameters } = this.simulation;
-    for (let p = 0; p < count; p++) out[p] = heightAt(layers, parameters.choppiness, this.currentTime, xz[2 * p], xz[2 * p + 1]);
-    return out;
+    this.checkAlive('heightsAt');
+    return surfaceHeightsAt('heightsAt', this.simulation, this.currentTime, xz, out);
   }
 
   /** normalAt for many points: three numbers (x, y, z) per point of `xz` in `out`. Allocates nothing. */
   normalsAt<T extends WritableNumbers>(xz: ArrayLike<number>, out: T): T {
-    return this.batchOfVectors('normalsAt', normalAt, xz, out);
+    this.checkAlive('normalsAt');
+    return surfaceVectorsAt('normalsAt', normalAt, this.simulation, this.currentTime, xz, out);
   }
 
   /** velocityAt for many points: three numbers (m/s) per point of `xz` in `out`. Allocates nothing. */
   velocitiesAt<T extends WritableNumbers>(xz: ArrayLike<number>, out: T): T {
-    return this.batchOfVectors('velocitiesAt', velocityAt, xz, out);
+    this.checkAlive('velocitiesAt');
+    return surfaceVectorsAt('velocitiesAt', velocityAt, this.simulation, this.currentTime, xz, out);
   }
 
   /**
@@ -418,76 +392,14 @@ export class Ocean extends Object3D<OceanEventMap> {
     this.simulation.dispose();
   }
 
-  /**
-   * Once per page, at the first update of its first Ocean, unless the app queried first: asks each
-   * query once of this sea, then has the cascades forget it (FftCascade.forgetQueries). V8 then
-   * compiles the query code and learns its types here, not in the app's first query, which would
-   * otherwise pay for that compilation (issue 10 asks for no query over 1 ms; docs/performance.md
-   * has the first heightAt as last measured). The queries read the fields
-   * the update has just made for them (fftCascade.ts): nothing is computed for them, except on the
-   * JS path without a worker, the velocities (one FFT).
-   */
+  /** Once per page, at the first update of its first Ocean: compiles the query code (oceanQueries.ts). */
   private warmUpQueries(): void {
-    queryCodeWarm = true;
-    const cascades = this.simulation.cascades;
-    if (cascades.some((cascade) => cascade.queriedYet)) return; // the app's own queries compiled it
-    const out = new Vector3();
-    this.heightAt(0, 0);
-    this.normalAt(0, 0, out);
-    this.velocityAt(0, 0, out);
-    for (const cascade of cascades) cascade.forgetQueries();
+    warmUpQueries(this);
   }
 
   private checkAlive(method: string): void {
     if (this.disposed) throw new DisposedError(`Ocean.${method}`);
   }
-
-  /** Checks a batch query's arrays (`perPoint` numbers out per point); returns the point count. */
-  private checkBatch(method: string, xz: ArrayLike<number>, out: WritableNumbers, perPoint: number): number {
-    this.checkAlive(method);
-    if (xz === null || typeof xz !== 'object' || typeof xz.length !== 'number' || xz.length % 2 !== 0) {
-      throw new ParameterError(`${method}(xz)`, xz, 'an array of x0, z0, x1, z1, … (an even length)');
-    }
-    const count = xz.length / 2;
-    if (out === null || typeof out !== 'object' || !(out.length >= perPoint * count)) {
-      throw new ParameterError(`${method}(xz, out)`, out, `an array of at least ${perPoint * count} numbers (${perPoint} per point)`);
-    }
-    for (let i = 0; i < xz.length; i++) {
-      if (!isCoordinate(xz[i])) throw new ParameterError(`${method}(xz)[${i}]`, xz[i], `a finite coordinate ${WITHIN_RANGE}`);
-    }
-    return count;
-  }
-
-  private batchOfVectors<T extends WritableNumbers>(method: string, query: typeof normalAt, xz: ArrayLike<number>, out: T): T {
-    const count = this.checkBatch(method, xz, out, 3);
-    const { layers, parameters } = this.simulation;
-    for (let p = 0; p < count; p++) {
-      query(layers, parameters.choppiness, this.currentTime, xz[2 * p], xz[2 * p + 1], scratch);
-      out[3 * p] = scratch.x;
-      out[3 * p + 1] = scratch.y;
-      out[3 * p + 2] = scratch.z;
-    }
-    return out;
-  }
-}
-
-/**
- * The farthest from the origin, in metres along x or z, that the queries are asked about. Up to
- * it a double holds a coordinate to a tenth of a millimetre, finer than the finest texel of any
- * sea (a 1 m patch at N = 1024); far beyond it the texel coordinates and the blend's phases
- * overflow to ±Infinity, and the answer would be NaN.
- */
-const MAX_COORDINATE = 1e12;
-/** MAX_COORDINATE as the errors say it. */
-const WITHIN_RANGE = 'in metres, at most 1e12 in size';
-
-function isCoordinate(value: unknown): boolean {
-  return typeof value === 'number' && Math.abs(value) <= MAX_COORDINATE;
-}
-
-/** Throws a ParameterError naming `method` unless x and z are coordinates the queries answer for. */
-function checkCoordinates(method: string, x: number, z: number): void {
-  if (!isCoordinate(x) || !isCoordinate(z)) throw new ParameterError(method, [x, z], `finite coordinates ${WITHIN_RANGE}`);
 }
 
 /**

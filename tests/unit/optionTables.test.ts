@@ -7,7 +7,7 @@
  */
 import { readFileSync, writeFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
-import { ELEMENT_DEFAULTS, FFT_OCEAN_ATTRIBUTES } from '../../src/embed/fftOceanElement';
+import { ELEMENT_DEFAULTS, FFT_OCEAN_ATTRIBUTES } from '../../src/embed/elementAttributes';
 import { kebabCase, type OptionRule } from '../../src/parameters/options';
 import { DEFAULT_PARAMETERS, SIMULATION_OPTIONS } from '../../src/parameters/parameters';
 import { DEFAULT_SHADING, DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS } from '../../src/parameters/sceneOptions';
@@ -97,7 +97,7 @@ const constructorDocs = new Map([
   ...interfaceDocs(source('src/ocean.ts'), 'OceanOptions'),
   ...interfaceDocs(source('src/layers/oceanSimulation.ts'), 'SimulationOptions'),
 ]);
-const elementDocs = interfaceDocs(source('src/embed/fftOceanElement.ts'), 'ElementSettings');
+const elementDocs = interfaceDocs(source('src/embed/elementAttributes.ts'), 'ElementSettings');
 
 /** The page's generated part: the option tables. */
 function optionTables(): string {
