@@ -20,11 +20,13 @@ import { SceneOutput } from '../render/sceneOutput';
 import { applyQualityStep } from '../runtime/applyQuality';
 import { Boat, centreAhead } from '../objects/boat';
 import { Buoys } from '../objects/buoys';
+import type { Island } from '../objects/island';
 import { createAppCamera, createAppOcean, createAppRenderer, loadAppSkybox } from './appView';
 import { CONTROLS_HELP, FlyControls } from './flyControls';
 import { Inspector } from './inspector';
 import { SunLight } from '../objects/sunLight';
 import { Panel } from './panel';
+import { islandPose, SceneObjects, startingCam } from './sceneChoice';
 import { describeSeaState, PATH_LABELS, StatusOverlay, TimingAverager } from './statusOverlay';
 import { parseState, roundTime, serializeState, simulationParameters, type AppState } from './urlState';
 
@@ -57,6 +59,10 @@ function applyQuality(asked = simulationParameters(state)): void {
 applyQuality();
 const sunLight = new SunLight(ocean);
 scene.add(ocean, sunLight);
+// The open sea or the island (sceneChoice.ts).
+const sceneObjects = new SceneObjects(scene, ocean);
+sceneObjects.show(state.scene);
+state.cam = startingCam(state);
 // A face set that fails to load (404, CORS, not an image, an untrusted origin) leaves the generated
 // sky in use, and leaves the URL: a copied link does not carry it on.
 loadAppSkybox(ocean, state.skybox)?.catch((error: Error) => {
@@ -173,6 +179,7 @@ function apply(changes: Partial<AppState>): void {
   if (changes.inspector !== undefined) showInspector(changes.inspector);
   if (changes.buoys !== undefined) showBuoys(changes.buoys);
   if (changes.boat !== undefined) showBoat(changes.boat);
+  if (changes.scene !== undefined && sceneObjects.show(changes.scene) && changes.scene === 'island') controls.pose = islandPose();
   if (changes.paused) changes.t = roundTime(state.t); // a paused t is exactly what the URL holds
   hintCaustics(changes.mode ?? state.mode, changes.sunElevation ?? state.sunElevation);
 }
@@ -274,6 +281,7 @@ renderer.setAnimationLoop((now: number) => {
       beforeRender: (t) => {
         buoys?.update(t);
         boat?.update();
+        sceneObjects.update();
         sunLight.update();
         simulated = performance.now();
       },
@@ -336,6 +344,10 @@ const oceanApp = {
   },
   get boat(): Boat | null {
     return boat;
+  },
+  /** The island, while the scene is the island (sceneChoice.ts). */
+  get island(): Island | null {
+    return sceneObjects.island;
   },
   /** Sets state values as the panel would (warnings included); false if the ocean rejected them. */
   set(changes: Partial<AppState>): boolean {
