@@ -104,6 +104,8 @@ test('?scene=island: the island stands offshore of the camera, sand on its beach
 
   // The panel: the open sea takes the island away (and out of the URL); the island brings it back
   // with the camera at its beach, from wherever it was.
+  const memory = () => page.evaluate(() => window.oceanApp.renderer.info.memory.geometries);
+  const withIsland = await memory();
   await page.evaluate(() => window.oceanApp.panel.gui.open(true));
   await page.locator('[data-key="scene"] select').selectOption({ label: 'open sea' });
   await rendered(page);
@@ -111,6 +113,7 @@ test('?scene=island: the island stands offshore of the camera, sand on its beach
     window.oceanApp.writeUrl();
     return { island: window.oceanApp.island, named: window.oceanApp.scene.getObjectByName('island') ?? null, scene: window.oceanApp.state.scene };
   });
+  const withoutIsland = await memory();
   expect(open).toEqual({ island: null, named: null, scene: 'sea' });
   expect(new URL(page.url()).searchParams.has('scene')).toBe(false);
   const [openSand] = await coloursAt(page, [sand]);
@@ -123,6 +126,12 @@ test('?scene=island: the island stands offshore of the camera, sand on its beach
   const back = await page.evaluate(() => ({ island: window.oceanApp.island !== null, position: window.oceanApp.camera.position.toArray() }));
   expect(back.island).toBe(true);
   back.position.forEach((value, i) => expect(value).toBeCloseTo(ISLAND_VIEW.position[i], 6));
+  // Its GPU geometries (terrain, posts, planks, hull, cabin) go with it, each time.
+  expect(await memory()).toBe(withIsland);
+  await page.locator('[data-key="scene"] select').selectOption({ label: 'open sea' });
+  await rendered(page);
+  expect(await memory()).toBe(withoutIsland);
+  expect(withIsland - withoutIsland).toBeGreaterThanOrEqual(5);
   expect(errors).toEqual([]);
 });
 
