@@ -200,8 +200,8 @@ export function islandSeabed(): Seabed {
  * boat and the cliff in view (the app's starting view when the island is chosen).
  */
 export const ISLAND_VIEW: { position: [number, number, number]; target: [number, number, number] } = {
-  position: [-85, 5, 300],
-  target: [-50, 4, 150],
+  position: [-75, 4, 265],
+  target: [-45, 5, 121],
 };
 
 /** One side's vertex coordinates: GRID_CELLS + 1 of them from `min` to `max`, crowded towards `focus`. */
@@ -229,7 +229,7 @@ function groundColour(x: number, z: number, h: number, slope: number, reef: numb
   out.copy(GRASS).lerp(DRY_GRASS, smoothstep(0.3, 0.9, patches) * (0.4 + 0.6 * smoothstep(10, 35, h)));
   out.lerp(SAND, smoothstep(3.2 + 1.5 * mottle, 2 + mottle, h));
   out.lerp(WET_SAND, smoothstep(1.2, 0.3, h) * smoothstep(-1.5, -0.2, h)); // the swash zone
-  const rocky = Math.max(smoothstep(0.65, 1, slope + 0.15 * (mottle - 0.5)), smoothstep(0.3, 1.2, reef));
+  const rocky = Math.max(smoothstep(0.8, 1.2, slope + 0.15 * (mottle - 0.5)), smoothstep(0.3, 1.2, reef));
   const rock = new Color().copy(ROCK).lerp(DARK_ROCK, 0.5 + 0.5 * Math.sin(h * 2.1) * mottle);
   if (reef > 0.3) rock.lerp(REEF, smoothstep(0.3, 1.2, reef));
   return out.lerp(rock, rocky);
