@@ -36,7 +36,8 @@ const ocean = new Ocean(renderer, {
   sunAzimuth: 60,
 });
 const island = new Island();
-// The sea floor under the sea: island.seabed, for the ocean's seabed (issue 25, item 3).
+// The seabed: this is the one place where the ocean is given the island's sea floor, island.seabed
+// (Ocean.setSeabed, issue 25 item 3), so that its waves shoal and break on the beach and the reef.
 scene.add(ocean, island);
 
 // The land is lit by the ocean's sun and sky (src/objects/sunLight.ts).

@@ -45,7 +45,8 @@ export class SceneObjects {
     if (choice === 'island') {
       this.current = new Island();
       this.scene.add(this.current);
-      // Here the island's seabed (this.current.seabed) is given to the ocean (issue 25, item 3).
+      // The seabed: here the ocean is given the island's sea floor, this.current.seabed (Ocean.setSeabed,
+      // issue 25 item 3); the branch below, which takes the island away, gives it back the open sea's.
     } else if (this.current) {
       this.current.removeFromParent();
       this.current.dispose();
