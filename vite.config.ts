@@ -136,6 +136,7 @@ export default defineConfig(({ mode }) => ({
               app: resolve(root, 'index.html'),
               element: resolve(root, 'examples/element.html'),
               threeScene: resolve(root, 'examples/three-scene.html'),
+              island: resolve(root, 'examples/island.html'),
               shot: resolve(root, 'examples/shot.html'),
               gallery: resolve(root, 'examples/index.html'),
             },

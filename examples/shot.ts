@@ -11,7 +11,7 @@
  *                  and SHADING_OPTIONS (src/parameters/) in kebab-case (--wind-speed, --patch-sizes,
  *                  --shading-mode …), read with parseOptionText; --wind is --wind-speed, and each
  *                  alias of the tables in kebab-case is its option (--scatter-colour); and the
- *                  app's --path, --skybox, --wireframe, --inspector, --boat, --buoys, --quality,
+ *                  app's --path, --skybox, --wireframe, --inspector, --boat, --buoys, --scene, --quality,
  *                  --cam (read as the app's URL reads them, urlState.parseValue); the app's
  *                  --target-fps, --time-scale, --paused and --t are refused, saying why (NOT_IN_A_SHOT)
  *   time           the time drawn on load, s (default 0)
@@ -44,9 +44,11 @@ import {
   parseState,
   parseValue,
   roundTime,
+  SCENES,
   simulationParameters,
   type AppState,
 } from '../src/app/urlState';
+import { SceneObjects, startingCam } from '../src/app/sceneChoice';
 import { formatOptionText, kebabCase, nearestName, optionRoutes, parseDecimal, ParameterError, parseOptionText, type OptionRule } from '../src/parameters/options';
 import { PATH_PREFERENCES } from '../src/layers/oceanSimulation';
 import { SIMULATION_OPTIONS, validateParameters } from '../src/parameters/parameters';
@@ -104,6 +106,11 @@ OPTIONS.set('buoys', {
   placeholder: '[1|0]',
   help: "the app's buoys, set down at rest ahead of the camera at the first frame's time (as the app does on load), then moved frame by frame",
   flag: true,
+});
+OPTIONS.set('scene', {
+  stateKey: 'scene',
+  placeholder: SCENES.join('|'),
+  help: "the open sea, or the app's island (a beach, a cliff, a reef, a pier, a moored boat); with the island and neither --camera nor --cam, the view from offshore of its beach",
 });
 OPTIONS.set('quality', {
   stateKey: 'quality',
@@ -294,6 +301,8 @@ async function start(): Promise<void> {
   const camera = createAppCamera(width / height);
   if (fov !== undefined) camera.fov = fov;
   camera.updateProjectionMatrix();
+  // The island's view when it is chosen without a camera, as the app starts (sceneChoice.ts).
+  state.cam = startingCam(state);
   if (lookAt) {
     camera.position.set(lookAt[0], lookAt[1], lookAt[2]);
     camera.lookAt(lookAt[3], lookAt[4], lookAt[5]);
@@ -322,9 +331,12 @@ async function start(): Promise<void> {
   // The boat as the app shows it (its wake is run up to each frame's time: localWaves.ts warmUp).
   const boat = state.boat ? new Boat(ocean, centreAhead(camera)) : null;
   if (boat) scene.add(boat);
-  // The app's light for what floats (the sea's shader uses no three.js light).
+  // The open sea or the island, as the app shows it.
+  const sceneObjects = new SceneObjects(scene, ocean);
+  sceneObjects.show(state.scene);
+  // The app's light for what floats and the island (the sea's shader uses no three.js light).
   const sunLight = new SunLight(ocean);
-  if (boat || buoys) scene.add(sunLight);
+  if (boat || buoys || sceneObjects.island) scene.add(sunLight);
   // The inspector's tiles are part of the app's canvas when it is shown.
   const inspector = state.inspector ? new Inspector(ocean, document.body) : null;
 
@@ -340,6 +352,7 @@ async function start(): Promise<void> {
         beforeRender: (drawn) => {
           buoys?.update(drawn);
           boat?.update();
+          sceneObjects.update();
           sunLight.update();
         },
       },

@@ -4,7 +4,9 @@
 // (scripts/browser.mjs) at 960×540, screenshot once it has drawn, and stored 320×180 (a 3×3 box
 // filter) as examples/thumbnails/<page>.png.
 //
-//   node scripts/make-example-thumbnails.mjs
+//   node scripts/make-example-thumbnails.mjs [name …]
+//
+// With names (island, three-scene, …) only those pages' thumbnails are made again.
 //
 // Each picture is checked: a black or flat one fails the run (exit code 1). The react-three-fiber
 // example needs React, which this repository does not install: its thumbnail is the picture of
@@ -33,6 +35,7 @@ const PAGES = [
     ready: () => customElements.whenDefined('fft-ocean').then(() => document.querySelector('#hero').frameCount >= 3),
   },
   { name: 'three-scene', path: '/examples/three-scene.html?t=6', ready: () => window.example?.frames() > 3 },
+  { name: 'island', path: '/examples/island.html?t=6', ready: () => window.islandExample?.frames() > 3 },
   {
     // Drawn a second time at the same t before the picture, as `npm run shot` (scripts/shot.mjs)
     // does: the page's first frame at a drawing-buffer height whose grid differs from the initial
@@ -44,6 +47,13 @@ const PAGES = [
     after: () => window.renderFrame(12.5),
   },
 ];
+
+const chosen = process.argv.slice(2);
+const unknown = chosen.filter((name) => !PAGES.some((page) => page.name === name));
+if (unknown.length > 0) {
+  process.stderr.write(`make-example-thumbnails: no page named ${unknown.join(', ')} (pages: ${PAGES.map((page) => page.name).join(', ')})\n`);
+  process.exit(1);
+}
 
 const log = (message) => process.stderr.write(`make-example-thumbnails: ${message}\n`);
 
@@ -91,7 +101,7 @@ const browser = await chromium.launch({ executablePath, args: BROWSER_ARGS });
 let failed = false;
 try {
   mkdirSync(OUT_DIR, { recursive: true });
-  for (const { name, path, ready, after } of PAGES) {
+  for (const { name, path, ready, after } of PAGES.filter((page) => chosen.length === 0 || chosen.includes(page.name))) {
     const page = await browser.newPage({ viewport: VIEWPORT });
     const errors = [];
     page.on('pageerror', (error) => errors.push(error.message));

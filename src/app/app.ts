@@ -27,6 +27,7 @@ import type { Buoys } from '../objects/buoys';
 import { applyChanges, hintCaustics } from './applyChanges';
 import { AppExtras } from './appExtras';
 import { AppStatus } from './appStatus';
+import type { Island } from '../objects/island';
 import { createAppCamera, createAppOcean, createAppRenderer, loadAppSkybox } from './appView';
 import { copyToClipboard } from './copyLink';
 import { CONTROLS_HELP, FlyControls } from './flyControls';
@@ -34,6 +35,7 @@ import { Inspector } from './inspector';
 import { SunLight } from '../objects/sunLight';
 import { Panel } from './panel';
 import { PixelCapture } from './pixelCapture';
+import { islandPose, SceneObjects, startingCam } from './sceneChoice';
 import { describeSeaState, PATH_LABELS, StatusOverlay } from './statusOverlay';
 import { UrlWriter } from './urlWriter';
 import { parseState, roundTime, simulationParameters, type AppState } from './urlState';
@@ -68,6 +70,10 @@ function applyQuality(asked = simulationParameters(state)): void {
 applyQuality();
 const sunLight = new SunLight(ocean);
 scene.add(ocean, sunLight);
+// The open sea or the island (sceneChoice.ts).
+const sceneObjects = new SceneObjects(scene, ocean);
+sceneObjects.show(state.scene);
+state.cam = startingCam(state);
 // A face set that fails to load (404, CORS, not an image, an untrusted origin) leaves the generated
 // sky in use, and leaves the URL: a copied link does not carry it on.
 loadAppSkybox(ocean, state.skybox)?.catch((error: Error) => {
@@ -101,6 +107,11 @@ controls.onChange = () => {
 
 hintCaustics(overlay, state.mode, state.sunElevation);
 
+/** Shows the open sea or the island; choosing the island takes the camera to its view. */
+function showScene(choice: AppState['scene']): void {
+  if (sceneObjects.show(choice) && choice === 'island') controls.pose = islandPose();
+}
+
 async function copyLink(): Promise<void> {
   urls.write();
   const url = location.href;
@@ -109,7 +120,7 @@ async function copyLink(): Promise<void> {
 
 // On a narrow screen the panel starts closed (its title bar opens it).
 const panel = new Panel(state, window.innerWidth <= 700, {
-  apply: (changes) => applyChanges({ ocean, state, loop, extras, overlay, applyQuality }, changes),
+  apply: (changes) => applyChanges({ ocean, state, loop, extras, overlay, applyQuality, showScene }, changes),
   changed: () => urls.schedule(150),
   warn: (parameter, message) => overlay.warn(parameter, message),
   clearWarning: (parameter) => overlay.clearWarning(parameter),
@@ -157,6 +168,7 @@ renderer.setAnimationLoop((now: number) => {
       beforeRender: (t) => {
         extras.buoys?.update(t);
         extras.boat?.update();
+        sceneObjects.update();
         sunLight.update();
         simulated = performance.now();
       },
@@ -197,6 +209,10 @@ const oceanApp = {
   },
   get boat(): Boat | null {
     return extras.boat;
+  },
+  /** The island, while the scene is the island (sceneChoice.ts). */
+  get island(): Island | null {
+    return sceneObjects.island;
   },
   /** Sets state values as the panel would (warnings included); false if the ocean rejected them. */
   set(changes: Partial<AppState>): boolean {

@@ -20,10 +20,12 @@ export interface ChangeTarget {
   overlay: StatusOverlay;
   /** Puts the quality level in force for the simulation `asked`. */
   applyQuality(asked: Readonly<SimulationParameters>): void;
+  /** Puts the open sea or the island in the scene (sceneChoice.ts). */
+  showScene(choice: AppState['scene']): void;
 }
 
 /** Applies changes to the scene; throws (and changes nothing) when the ocean rejects a value. */
-export function applyChanges({ ocean, state, loop, extras, overlay, applyQuality }: ChangeTarget, changes: Partial<AppState>): void {
+export function applyChanges({ ocean, state, loop, extras, overlay, applyQuality, showScene }: ChangeTarget, changes: Partial<AppState>): void {
   const has = (key: keyof AppState) => Object.hasOwn(changes, key);
   const simulation: Record<string, unknown> = Object.fromEntries(Object.entries(changes).filter(([key]) => key in ocean.parameters));
   // What is asked for must hold at every level (the grid and cascades may rise again later); the
@@ -51,6 +53,7 @@ export function applyChanges({ ocean, state, loop, extras, overlay, applyQuality
   if (changes.inspector !== undefined) extras.showInspector(changes.inspector);
   if (changes.buoys !== undefined) extras.showBuoys(changes.buoys, state.t);
   if (changes.boat !== undefined) extras.showBoat(changes.boat);
+  if (changes.scene !== undefined) showScene(changes.scene);
   if (changes.paused) changes.t = roundTime(state.t); // a paused t is exactly what the URL holds
   hintCaustics(overlay, changes.mode ?? state.mode, changes.sunElevation ?? state.sunElevation);
 }

@@ -136,6 +136,7 @@ export class Panel {
     this.bind(time.add(state, 'inspector').name('inspector tiles'), 'inspector');
     this.bind(time.add(state, 'buoys').name('buoys'), 'buoys');
     this.bind(time.add(state, 'boat').name('boat (wake)'), 'boat');
+    this.bind(time.add(state, 'scene', { 'open sea': 'sea', island: 'island' }).name('scene'), 'scene');
     this.bind(time.add(state, 'quality', QUALITY_SETTINGS as QualitySetting[]).name('quality'), 'quality');
     this.number(time, 'targetFps', "'auto' holds (fps)", MIN_TARGET_FPS, 120, 1);
     this.register('copyLink', time.add({ copyLink: () => actions.copyLink() }, 'copyLink').name('copy link'));

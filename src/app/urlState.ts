@@ -15,6 +15,7 @@
  *                                                               British spellings, are read too
  *   mode       shading mode (full, fresnel, reflection, refraction, caustics, height)
  *   wireframe  1/0        inspector  1/0        path  auto/gpu/js        buoys  1/0   boat  1/0
+ *   scene      sea (the open sea) or island (src/objects/island.ts; sceneChoice.ts)
  *   timeScale  -1000…1000 paused     1/0        t     simulation time in seconds
  *   quality    auto/high/medium/low/lowest (adaptiveQuality.ts)      targetFps  frames per second 'auto' holds
  *   cam        x,y,z,yawDeg,pitchDeg (metres, degrees; see flyControls.ts)
@@ -49,6 +50,10 @@ import type { PathPreference } from '../layers/oceanSimulation';
 import { DEFAULT_RUN, RUN_OPTIONS } from '../parameters/runOptions';
 export type { Rgb };
 
+/** What the sea is shown with (sceneChoice.ts): the open sea alone, or an island in it. */
+export const SCENES = ['sea', 'island'] as const;
+export type SceneChoice = (typeof SCENES)[number];
+
 export interface AppState extends SimulationParameters {
   sunElevation: number;
   sunAzimuth: number;
@@ -64,6 +69,8 @@ export interface AppState extends SimulationParameters {
   buoys: boolean;
   /** A boat going round a circle ahead of the camera, leaving a wake (boat.ts). */
   boat: boolean;
+  /** The open sea, or the island with its reef, pier and moored boat (sceneChoice.ts). */
+  scene: SceneChoice;
   path: PathPreference;
   /** 'auto' lowers and raises the render scale and grid to hold targetFps; a level stays fixed (adaptiveQuality.ts). */
   quality: QualitySetting;
@@ -92,6 +99,7 @@ export const DEFAULT_STATE: Readonly<AppState> = Object.freeze({
   inspector: false,
   buoys: false,
   boat: false,
+  scene: 'sea',
   ...DEFAULT_RUN,
   ...DEFAULT_QUALITY,
   paused: false,
@@ -146,6 +154,7 @@ export const URL_KEYS: readonly (keyof AppState)[] = [
   'inspector',
   'buoys',
   'boat',
+  'scene',
   'path',
   'quality',
   'targetFps',
@@ -280,6 +289,8 @@ export function parseValue<K extends keyof AppState>(key: K, text: string): { va
       const v = parseFlag(text);
       return v === null ? bad('1 or 0') : ok(v);
     }
+    case 'scene':
+      return (SCENES as readonly string[]).includes(text.trim()) ? ok(text.trim()) : bad(SCENES.map((name) => `"${name}"`).join(' or '));
     case 't': {
       const v = parseNumber(text);
       return Number.isFinite(v) ? ok(v) : bad('a finite number of seconds');

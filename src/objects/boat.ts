@@ -31,8 +31,12 @@ export function centreAhead(camera: Camera): CourseCentre {
   return () => centre;
 }
 
-export class Boat extends Group {
-  private readonly pressure: PressureSource | null;
+/**
+ * The boat's hull and cabin, its bow along +x and its waterline at y = 0, with no motion of its own:
+ * the circling Boat and the island's moored boat (island.ts) are this model. setOnWater puts it on
+ * the sea. dispose() frees its geometry and materials.
+ */
+export class BoatModel extends Group {
   private readonly hullGeometry = new BoxGeometry(HULL.length, 1.4, HULL.beam);
   private readonly cabinGeometry = new BoxGeometry(2.6, 1.2, 2);
   private readonly hullMaterial = new MeshStandardMaterial({ color: 0xf2f2ee, roughness: 0.5 });
@@ -40,10 +44,7 @@ export class Boat extends Group {
   private readonly normal = new Vector3();
   private readonly tilt = new Quaternion();
 
-  constructor(
-    private readonly ocean: Ocean,
-    private readonly centreAt: CourseCentre,
-  ) {
+  constructor() {
     super();
     this.name = 'boat';
     const hull = new Mesh(this.hullGeometry, this.hullMaterial);
@@ -52,6 +53,36 @@ export class Boat extends Group {
     cabin.position.set(-0.8, 1.3, 0);
     hull.add(cabin);
     this.add(hull);
+  }
+
+  /**
+   * Sets the boat at (x, z) on the ocean's water of its current time (call after ocean.update),
+   * heading along `heading` (radians from +x towards +z), tilted with the water's normal there.
+   */
+  setOnWater(ocean: Ocean, x: number, z: number, heading: number): void {
+    this.position.set(x, ocean.heightAt(x, z), z);
+    // Heading about y (from +x towards +z is a turn by −heading), then tilted with the water.
+    this.quaternion.setFromAxisAngle(new Vector3(0, 1, 0), -heading);
+    this.tilt.setFromUnitVectors(new Vector3(0, 1, 0), ocean.normalAt(x, z, this.normal));
+    this.quaternion.premultiply(this.tilt);
+  }
+
+  dispose(): void {
+    this.hullGeometry.dispose();
+    this.cabinGeometry.dispose();
+    this.hullMaterial.dispose();
+    this.cabinMaterial.dispose();
+  }
+}
+
+export class Boat extends BoatModel {
+  private readonly pressure: PressureSource | null;
+
+  constructor(
+    private readonly ocean: Ocean,
+    private readonly centreAt: CourseCentre,
+  ) {
+    super();
     const start = this.poseAt(ocean.time);
     // Its course is a path of time: the local waves move it themselves, and run its wake up to the
     // current time after a jump (a reload, a seek, a still from the shot CLI).
@@ -80,19 +111,12 @@ export class Boat extends Group {
   /** Sets the boat on its course and on the water at the ocean's current time (call after ocean.update). */
   update(): void {
     const { x, z, heading } = this.poseAt(this.ocean.time);
-    this.position.set(x, this.ocean.heightAt(x, z), z);
-    // Heading about y (from +x towards +z is a turn by −heading), then tilted with the water.
-    this.quaternion.setFromAxisAngle(new Vector3(0, 1, 0), -heading);
-    this.tilt.setFromUnitVectors(new Vector3(0, 1, 0), this.ocean.normalAt(x, z, this.normal));
-    this.quaternion.premultiply(this.tilt);
+    this.setOnWater(this.ocean, x, z, heading);
   }
 
   dispose(): void {
     this.pressure?.remove();
     this.ocean.localWaves?.follow(null);
-    this.hullGeometry.dispose();
-    this.cabinGeometry.dispose();
-    this.hullMaterial.dispose();
-    this.cabinMaterial.dispose();
+    super.dispose();
   }
 }

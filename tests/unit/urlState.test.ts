@@ -51,6 +51,7 @@ function changed(): AppState {
     inspector: true,
     buoys: true,
     boat: true,
+    scene: 'island',
     path: 'js',
     quality: 'low',
     targetFps: 20,
@@ -218,6 +219,14 @@ describe('invalid values', () => {
     expect(state.windSpeed).toBe(DEFAULT_PARAMETERS.windSpeed);
     expect(state.seed).toBe(9);
     expect(state.mode).toBe('height');
+  });
+
+  it('reads scene=island, and warns of an unknown scene and keeps the open sea', () => {
+    expect(parseState('scene=island').state.scene).toBe('island');
+    const { state, warnings } = parseState('scene=volcano&seed=9');
+    expect(warnings).toEqual([{ parameter: 'scene', message: 'scene must be "sea" or "island"; got "volcano" — using the default sea' }]);
+    expect(state.scene).toBe('sea');
+    expect(state.seed).toBe(9);
   });
 
   it('warns about unknown parameters and ignores them', () => {

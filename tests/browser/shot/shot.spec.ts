@@ -118,7 +118,7 @@ test('--help lists the CLI\'s options and, from the option tables, every scene o
   expect(help.stdout).toMatch(
     /\n {2}--scatter-color <#rrggbb\|r,g,b> +a colour: a THREE\.Color,[\s\S]*?\(default 0,0\.035,0\.06\);\s+--scatter-colour\s+is\s+--scatter-color/,
   );
-  for (const name of ['spectrum', 'fetch', 'patch-sizes', 'depth', 'swell-height', 'shading-mode', 'absorption', 'path', 'skybox', 'boat', 'buoys', 'quality']) {
+  for (const name of ['spectrum', 'fetch', 'patch-sizes', 'depth', 'swell-height', 'shading-mode', 'absorption', 'path', 'skybox', 'boat', 'buoys', 'scene', 'quality']) {
     expect(help.stdout).toMatch(new RegExp(`\\n  --${name} `));
   }
   expect(help.stdout).toMatch(/has no use for[\s\S]*\n {2}--target-fps +the frame rate[\s\S]*\n {2}--time-scale /);

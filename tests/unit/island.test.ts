@@ -1,0 +1,157 @@
+/**
+ * The island's ground (src/objects/island.ts): one analytic function gives the seabed the sea sees
+ * and the terrain mesh, so the two must agree at every vertex; the function has no jumps (the
+ * seabed is sampled anywhere), is negative depth on land and deep at the edge of its bounds; the
+ * beach has the 1:30 slope it is built with; the reef's rocks reach 1–3 m below the surface.
+ */
+import { describe, expect, it } from 'vitest';
+import type { BufferGeometry, Material, Mesh } from 'three';
+import { BEACH_FACING, CLIFF_FACING, HILLS, Island, ISLAND_BOUNDS, islandSeabed } from '../../src/objects/island';
+
+const { depthAt, bounds } = islandSeabed();
+const [xMin, zMin, xMax, zMax] = bounds;
+
+/** A small seeded generator (an LCG), so the sample points are the same every run. */
+function points(count: number, seed = 1): [number, number][] {
+  let state = seed;
+  const next = () => (state = (Math.imul(state, 1664525) + 1013904223) >>> 0) / 2 ** 32;
+  return Array.from({ length: count }, () => [xMin + (xMax - xMin) * next(), zMin + (zMax - zMin) * next()]);
+}
+
+/** Where the ground meets mean sea level along the ray from the centre at `angle` (bisection). */
+function waterline(angle: number): number {
+  let land = 0;
+  let sea = 400;
+  for (let i = 0; i < 60; i++) {
+    const r = (land + sea) / 2;
+    if (depthAt(r * Math.cos(angle), r * Math.sin(angle)) < 0) land = r;
+    else sea = r;
+  }
+  return land;
+}
+
+describe('islandSeabed', () => {
+  it('gives its bounds, and a copy of them each call', () => {
+    expect(bounds).toEqual(ISLAND_BOUNDS);
+    expect(xMax).toBeGreaterThan(xMin);
+    expect(zMax).toBeGreaterThan(zMin);
+    islandSeabed().bounds[0] = 0;
+    expect(islandSeabed().bounds).toEqual(ISLAND_BOUNDS);
+  });
+
+  it("is continuous: over 1 cm it changes by at most the cliff's slope × 1 cm, everywhere, across θ = ±π and at the centre", () => {
+    // The steepest ground is the cliff's face: its profile drops 36 m over a smoothstep of 13 m,
+    // at most 1.5 × 36 / 13 = 4.2 m per metre; 6 leaves room for the blend and the rocks.
+    const step = 0.01;
+    let steepest = 0;
+    for (const [x, z] of points(8000)) {
+      const d = depthAt(x, z);
+      expect(Number.isFinite(d)).toBe(true);
+      steepest = Math.max(steepest, Math.abs(depthAt(x + step, z) - d) / step, Math.abs(depthAt(x, z + step) - d) / step);
+    }
+    expect(steepest).toBeLessThan(6);
+    // atan2's branch cut (x < 0, z = 0) and the centre, where the angle means nothing.
+    for (let x = -600; x < 0; x += 7) expect(Math.abs(depthAt(x, 1e-9) - depthAt(x, -1e-9))).toBeLessThan(1e-6);
+    for (const [dx, dz] of [[1, 0], [0, 1], [-1, 0], [0, -1]]) expect(Math.abs(depthAt(1e-6 * dx, 1e-6 * dz) - depthAt(0, 0))).toBeLessThan(1e-4);
+  });
+
+  it('is negative on land (the hills, the cliff top, behind the beach) and deep water (over 40 m) all round its bounds', () => {
+    for (const [x, z, height] of HILLS) expect(depthAt(x, z)).toBeLessThan(-height / 2);
+    const cliff = waterline(CLIFF_FACING);
+    expect(depthAt((cliff - 15) * Math.cos(CLIFF_FACING), (cliff - 15) * Math.sin(CLIFF_FACING))).toBeLessThan(-15);
+    const beach = waterline(BEACH_FACING);
+    expect(depthAt((beach - 20) * Math.cos(BEACH_FACING), (beach - 20) * Math.sin(BEACH_FACING))).toBeLessThan(0);
+    let shallowestEdge = Infinity;
+    for (let i = 0; i <= 400; i++) {
+      const t = i / 400;
+      const x = xMin + t * (xMax - xMin);
+      const z = zMin + t * (zMax - zMin);
+      shallowestEdge = Math.min(shallowestEdge, depthAt(x, zMin), depthAt(x, zMax), depthAt(xMin, z), depthAt(xMax, z));
+    }
+    expect(shallowestEdge).toBeGreaterThan(40);
+  });
+
+  it('has a beach of 1:30 and a cliff that drops over 20 m within 15 m of its edge', () => {
+    const [cos, sin] = [Math.cos(BEACH_FACING), Math.sin(BEACH_FACING)];
+    const beach = waterline(BEACH_FACING);
+    // 20 to 80 m offshore, clear of the reef (its nearest rock is 110 m out and 11 m wide).
+    const slope = (depthAt((beach + 80) * cos, (beach + 80) * sin) - depthAt((beach + 20) * cos, (beach + 20) * sin)) / 60;
+    expect(slope).toBeGreaterThan((1 / 30) * 0.95);
+    expect(slope).toBeLessThan((1 / 30) * 1.05);
+    const cliff = waterline(CLIFF_FACING);
+    const [cx, cz] = [Math.cos(CLIFF_FACING), Math.sin(CLIFF_FACING)];
+    expect(depthAt((cliff + 5) * cx, (cliff + 5) * cz) - depthAt((cliff - 10) * cx, (cliff - 10) * cz)).toBeGreaterThan(20);
+  });
+
+  it('has a reef off the beach whose rocks come to 1–3 m below the surface, and nothing shallower offshore', () => {
+    const beach = waterline(BEACH_FACING);
+    let shallowest = Infinity;
+    let shallowRock = 0;
+    for (let angle = BEACH_FACING - 0.5; angle <= BEACH_FACING + 0.5; angle += 0.002) {
+      for (let r = beach + 40; r <= beach + 250; r += 0.5) {
+        const depth = depthAt(r * Math.cos(angle), r * Math.sin(angle));
+        shallowest = Math.min(shallowest, depth);
+        // Where a rock stands over a floor that deep (1:30: at least 3.4 m there), the depth is under 3 m.
+        if (r > beach + 100 && depth < 3) shallowRock++;
+      }
+    }
+    expect(shallowest).toBeGreaterThan(0.9);
+    expect(shallowest).toBeLessThan(3);
+    expect(shallowRock).toBeGreaterThan(100);
+  });
+});
+
+describe('Island', () => {
+  const island = new Island();
+  const geometry = island.terrain.geometry;
+
+  it('builds its terrain from the seabed: every vertex at −depthAt(x, z), the mesh spanning the bounds', () => {
+    const position = geometry.getAttribute('position');
+    let worst = 0;
+    for (let i = 0; i < position.count; i++) {
+      // Float32 positions: x and z are rounded by up to 3e-5 m, which the slope (< 6) turns into 2e-4 m.
+      worst = Math.max(worst, Math.abs(position.getY(i) + depthAt(position.getX(i), position.getZ(i))));
+    }
+    expect(worst).toBeLessThan(1e-3);
+    geometry.computeBoundingBox();
+    const box = geometry.boundingBox!;
+    expect([box.min.x, box.min.z, box.max.x, box.max.z]).toEqual(bounds.map((v) => Math.fround(v)));
+    expect(geometry.getAttribute('color').count).toBe(position.count);
+  });
+
+  it('has sand at the waterline of the beach and grass on the hill (vertex colours)', () => {
+    const position = geometry.getAttribute('position');
+    const colour = geometry.getAttribute('color');
+    const nearest = (x: number, z: number) => {
+      let best = 0;
+      let distance = Infinity;
+      for (let i = 0; i < position.count; i++) {
+        const d = (position.getX(i) - x) ** 2 + (position.getZ(i) - z) ** 2;
+        if (d < distance) [best, distance] = [i, d];
+      }
+      return [colour.getX(best), colour.getY(best), colour.getZ(best)];
+    };
+    const beach = waterline(BEACH_FACING) - 30;
+    const [sr, sg, sb] = nearest(beach * Math.cos(BEACH_FACING), beach * Math.sin(BEACH_FACING));
+    expect(sr).toBeGreaterThan(sb * 1.3); // sand: warm and light
+    expect(sr).toBeGreaterThan(0.35);
+    expect(sg).toBeGreaterThan(sb);
+    const [gr, gg, gb] = nearest(HILLS[1][0], HILLS[1][1]);
+    expect(gg).toBeGreaterThan(gr); // grass: green over red and blue
+    expect(gg).toBeGreaterThan(gb);
+  });
+
+  it('dispose() frees every geometry and material it made', () => {
+    const owned = new Set<BufferGeometry | Material>();
+    island.traverse((object) => {
+      const mesh = object as Mesh;
+      if (mesh.geometry) owned.add(mesh.geometry);
+      if (mesh.material) owned.add(mesh.material as Material);
+    });
+    const freed = new Set<unknown>();
+    for (const resource of owned) resource.addEventListener('dispose', () => freed.add(resource));
+    island.dispose();
+    expect(owned.size).toBeGreaterThanOrEqual(6); // terrain, posts, planks, wood, hull and cabin
+    expect(freed.size).toBe(owned.size);
+  });
+});
