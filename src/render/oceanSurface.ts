@@ -83,6 +83,7 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
     this.fitDrawingBuffer(renderer);
     this.placeRings(camera);
     if (this.material.looksIntoScene) this.refraction.capture(renderer, scene, camera, this.seaObjects);
+    else this.refraction.release();
   }
 
   /**

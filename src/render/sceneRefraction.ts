@@ -76,7 +76,7 @@ export class SceneRefraction {
     const u = this.uniforms;
     u.sceneCaptured.value = false;
     if (this.resolutionScale === 0) {
-      this.freeTarget();
+      this.release();
       return;
     }
     if (capturing) return;
@@ -111,12 +111,12 @@ export class SceneRefraction {
   }
 
   dispose(): void {
-    this.freeTarget();
+    this.release();
   }
 
   private targetOfSize(width: number, height: number): WebGLRenderTarget {
     if (this.target !== null && this.target.width === width && this.target.height === height) return this.target;
-    this.freeTarget();
+    this.release();
     // Half floats: the scene's linear radiance, above 1 where it is bright (tone mapping comes
     // after the sea's shading). A float depth texture keeps a reversed depth buffer's precision.
     const depthTexture = new DepthTexture(width, height, FloatType);
@@ -126,7 +126,9 @@ export class SceneRefraction {
     return this.target;
   }
 
-  private freeTarget(): void {
+  /** Frees the target while no capture is wanted (refractions 'sky'); the next capture makes a new one. */
+  release(): void {
+    this.uniforms.sceneCaptured.value = false;
     if (this.target === null) return;
     this.target.depthTexture?.dispose();
     this.target.dispose();
