@@ -31,6 +31,8 @@ const DEPTH_MODE = { standard: 0, reversed: 1, logarithmic: 2 } as const;
 
 /** Whether a capture is being drawn: the seas in it (another Ocean's) then show the sky, not a capture of their own. */
 let capturing = false;
+/** The layers of the capture being drawn (one at a time). */
+const captureLayers = new Layers();
 
 export class SceneRefraction {
   /** The uniforms of sceneRefraction.glsl, shared with the sea's material (OceanMaterial.useSceneRefraction). */
@@ -45,10 +47,10 @@ export class SceneRefraction {
     sceneLogDepthRange: { value: 1 },
   };
   /**
-   * The layers drawn into the capture; null: the camera's own (everything it sees but the sea).
-   * @defaultValue null
+   * The layers drawn into the capture (a three.js Layers); null: the camera's own (everything it
+   * sees but the sea). @defaultValue null
    */
-  layers: Layers | null = null;
+  layers: { mask: number } | null = null;
   private target: WebGLRenderTarget | null = null;
   private resolutionScale = 1;
   private readonly viewport = new Vector4();
@@ -86,7 +88,8 @@ export class SceneRefraction {
     const target = this.targetOfSize(width, height);
     capturing = true;
     try {
-      renderSceneWithoutSea(renderer, scene, camera, target, sea, this.layers ?? camera.layers);
+      captureLayers.mask = (this.layers ?? camera.layers).mask;
+      renderSceneWithoutSea(renderer, scene, camera, target, sea, captureLayers);
     } finally {
       capturing = false;
     }
