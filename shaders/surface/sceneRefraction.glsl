@@ -67,12 +67,14 @@ vec3 sceneThroughWater(vec3 surfaceView, vec3 refracted, vec2 pixel, vec3 skyThr
   vec2 uv = straightUv;
   vec3 point = behind;
   for (int i = 0; i < SCENE_REFRACTION_STEPS; i++) {
-    vec2 next = screenPosition(surfaceView + refracted * length(point - surfaceView));
+    // Off the picture, the nearest point on its edge: the scene there goes on much as at its edge
+    // (a bed), where the undistorted pixel's longer path would show a seam.
+    vec2 next = clamp(screenPosition(surfaceView + refracted * length(point - surfaceView)), vec2(0.0), vec2(1.0));
     vec3 found = capturedViewPoint(next);
-    // Off the picture, or an object above the water drawn there (in front of what the ray meets
-    // under it): the undistorted pixel instead. A point under the water nearer the eye than the
-    // surface is what a ray bent towards the vertical meets.
-    if (any(lessThan(next, vec2(0.0))) || any(greaterThan(next, vec2(1.0))) || heightAboveEye(found) > waterHeight) {
+    // An object above the water drawn there (in front of what the ray meets under it): the
+    // undistorted pixel instead. A point under the water nearer the eye than the surface is what
+    // a ray bent towards the vertical meets.
+    if (heightAboveEye(found) > waterHeight) {
       uv = straightUv;
       point = behind;
       break;
