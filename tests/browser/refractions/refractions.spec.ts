@@ -86,8 +86,8 @@ const PIXELS: [number, number][] = [
   [240, 200],
 ];
 
-async function draw(depth: number) {
-  return page.evaluate(([d, pixels]) => window.refractionHarness.draw(d, pixels), [depth, PIXELS] as const);
+async function draw(depth: number, pixels = PIXELS) {
+  return page.evaluate(([d, p]) => window.refractionHarness.draw(d, p), [depth, pixels] as const);
 }
 
 test('a white plate 1 m and 4 m under calm water: each channel is R·sky + T·(e^{−σL} + scatter·(1 − e^{−σL})) over the refracted path', ALSO_ON_OLDEST_THREE, async () => {
@@ -131,4 +131,26 @@ test("refractions: 'glass' is a ParameterError naming refractions, and the last 
   expect(refractions).toBe('scene');
   const fromConstructor = await page.evaluate(() => window.refractionHarness.construct({ refractions: 'glass' }));
   expect(fromConstructor?.parameter).toBe('refractions');
+});
+
+test('where a box pierces calm water, a line of foam forms within 0.3 m of it, and none farther out', async () => {
+  await page.evaluate(
+    (options) => window.refractionHarness.setup(options),
+    { ...PLATE_SETUP, content: 'box', camera: { position: [0, 2, 0], lookAt: [0, 0, -6], fov: 50 } } satisfies SetupOptions,
+  );
+  // On the water 5 cm and 1 m in front of the box's face (z = −5), in the middle of it.
+  const pixels = await page.evaluate(() => [window.refractionHarness.pixelOf([0, 0, -4.95]), window.refractionHarness.pixelOf([0, 0, -4])]);
+  const withScene = await draw(1, pixels);
+  await page.evaluate(() => window.refractionHarness.setShading({ refractions: 'sky' }));
+  const skyOnly = await draw(1, pixels);
+  await page.evaluate(() => window.refractionHarness.setShading({ refractions: 'scene' }));
+  const [atEdge, farther] = withScene.colours;
+  console.log(`box edge: at 5 cm ${atEdge.map((v) => v.toFixed(3))}, at 1 m ${farther.map((v) => v.toFixed(3))}; sky only ${skyOnly.colours[0].map((v) => v.toFixed(3))}`);
+  // Foam is white (a diffuse surface of albedo 0.8 under the sky, foam.glsl): every channel far
+  // above the water's, whose red the water absorbs.
+  expect(Math.min(...atEdge)).toBeGreaterThan(0.4);
+  expect(atEdge[0]).toBeGreaterThan(3 * skyOnly.colours[0][0]);
+  // 1 m out, water without foam: its red absorbed (foam's is as bright as its blue).
+  expect(farther[0]).toBeLessThan(0.2);
+  expect(farther[0]).toBeLessThan(0.5 * farther[2]);
 });

@@ -35,8 +35,11 @@ export interface SetupOptions {
   skyGrey?: number;
   /** 'linear': linear RGB without tone mapping (measurements); 'display': sRGB, ACES (pictures). */
   output: 'linear' | 'display';
-  /** 'plate': a white plate (MeshBasicMaterial); 'showcase': a lit reef, a box through the surface. */
-  content: 'plate' | 'showcase';
+  /**
+   * 'plate': a white plate (MeshBasicMaterial); 'box': a dark grey 2 m cube half under the water
+   * at (0, 0, −6); 'showcase': a lit reef, a box through the surface.
+   */
+  content: 'plate' | 'box' | 'showcase';
   width: number;
   height: number;
   camera: { position: Vec3; lookAt: Vec3; fov: number };
@@ -48,6 +51,8 @@ const scene = new Scene();
 const camera = new PerspectiveCamera();
 const plate = new Mesh(new PlaneGeometry(60, 60), new MeshBasicMaterial({ color: 0xffffff, toneMapped: false }));
 plate.rotation.x = -Math.PI / 2;
+const box = new Mesh(new BoxGeometry(2, 2, 2), new MeshBasicMaterial({ color: new Color(0.1, 0.1, 0.1), toneMapped: false }));
+box.position.set(0, 0, -6);
 
 /** A one-colour image as a data URL (the sky's faces). */
 function greyImage(level: number): string {
@@ -105,6 +110,7 @@ async function setup(options: SetupOptions): Promise<void> {
     await ocean.sky.loadFaces({ px: url, nx: url, py: url, ny: url, pz: url, nz: url });
   }
   if (options.content === 'plate') scene.add(plate);
+  else if (options.content === 'box') scene.add(box);
   else showcase();
   camera.fov = options.camera.fov;
   camera.aspect = options.width / options.height;
@@ -165,7 +171,14 @@ function construct(options: Record<string, unknown>): { parameter: string; messa
   }
 }
 
-const harness = { setup, draw, setShading, construct };
+/** The pixel [x, y] (from the bottom left) where the world point `point` is drawn. */
+function pixelOf(point: Vec3): [number, number] {
+  const ndc = new Vector3(...point).project(camera);
+  const { width, height } = renderer!.domElement;
+  return [Math.floor(((ndc.x + 1) / 2) * width), Math.floor(((ndc.y + 1) / 2) * height)];
+}
+
+const harness = { setup, draw, setShading, construct, pixelOf };
 declare global {
   interface Window {
     refractionHarness: typeof harness;
