@@ -37,6 +37,7 @@ export { OceanSurface } from './render/oceanSurface';
 export { OceanMaterial, type OceanShadingOptions } from './render/oceanMaterial';
 export {
   SHADING_MODES,
+  REFRACTION_SOURCES,
   SHADING_OPTIONS,
   SUN_OPTIONS,
   DEFAULT_SHADING,
@@ -45,6 +46,7 @@ export {
   type ColorInput,
   type ShadingChanges,
   type ShadingMode,
+  type RefractionSource,
   type ShadingOptions,
   type SunOptions,
 } from './parameters/sceneOptions';
@@ -67,6 +69,7 @@ export type { OptionTable, OptionRule, OptionType } from './parameters/options';
 export type { LocalWaveGrid } from './layers/localWaveModel';
 export type { SkyBackground } from './render/skyBackground';
 export type { SceneOutput } from './render/sceneOutput';
+export type { SceneRefraction } from './render/sceneRefraction';
 export { farPlaneFor, fitFarPlane } from './runtime/farPlane';
 export type { AdaptiveQuality, QualityLevel, QualitySetting, QualityStep } from './runtime/adaptiveQuality';
 export type { SeaStateSummary, WritableNumbers } from './ocean';

@@ -3,7 +3,9 @@
 //   frame        one frame of the Ocean (ocean.update(t), sky and surface) at 1280x720, from an
 //                idle GPU to a 1-pixel readPixels of the canvas: at N = 256 with C = 1, 3 and 4
 //                cascades (patchSizes as in CASCADE_SETS; C = 3 is the default sizes), interleaved
-//                round by round, and at N = 512 with the default 3 cascades.
+//                round by round, and at N = 512 with the default 3 cascades; then at N = 256 with
+//                refractions 'scene' (the default: the scene drawn again without the sea, here
+//                empty, and the sea's lookups into it) and 'sky', interleaved.
 import { withTimeout } from '../lib/browser.mjs';
 import { emit, log } from '../lib/output.mjs';
 import { BROWSER_STEP_TIMEOUT_MS, CASCADE_COUNTS, CASCADE_N, CASCADE_SETS, FRAME_ROUNDS, FRAME_SIZE } from '../lib/settings.mjs';
@@ -57,5 +59,19 @@ export async function browser({ page, results }) {
         timer: 'readpixels-sync',
       });
     }
+  }
+  log(`frame N=${CASCADE_N}, refractions scene and sky at ${FRAME_SIZE.width}x${FRAME_SIZE.height}`);
+  const refractions = await timeFrames(
+    page,
+    {
+      resolution: CASCADE_N,
+      patchSizeSets: [],
+      variants: ['scene', 'sky'].map((source) => ({ label: source, options: { refractions: source }, activeLocalWaves: false })),
+    },
+    2,
+    'the refractions benchmark',
+  );
+  for (const frame of refractions) {
+    emit({ bench: 'refractions', N: CASCADE_N, refractions: frame.label, size: `${FRAME_SIZE.width}x${FRAME_SIZE.height}`, path: frame.path, ...stats(frame.samples), drawCalls: frame.calls, timer: 'readpixels-sync' });
   }
 }

@@ -11,6 +11,9 @@
 #include "surface/waveLayers.glsl"
 #include "surface/foam.glsl"
 #include "surface/fromBelow.glsl"
+#if SCENE_REFRACTIONS == 1
+#include "surface/sceneRefraction.glsl"
+#endif
 #include <fog_pars_fragment>
 #include <logdepthbuf_pars_fragment>
 
@@ -37,6 +40,8 @@ uniform float heightScale;     // metres shown as full white in the height mode
 uniform int eyeSide;
 uniform bool eyeInWater;
 #define WATERLINE_REACH 5.0  // metres
+#define EDGE_FOAM_WIDTH 0.3  // metres of water in front of an object that foam covers, at the waterline
+#define EDGE_FOAM_SOLID 1.5  // the edge foam's coverage at the object
 #define EYE_ABOVE 0
 #define EYE_BELOW 1
 #define EYE_NEAR 2
@@ -136,6 +141,17 @@ void main() {
   }
   vec3 sky = environmentRadiance(reflected);
   vec3 water = throughWater(environmentRadiance(refracted), refracted, absorption, deepWater, viewDepth);
+  #if SCENE_REFRACTIONS == 1
+  // What lies under the surface (sceneRefraction.glsl); where an object meets the water, a line of
+  // foam as wide as EDGE_FOAM_WIDTH along the view: a coverage above 1 at the object (solid white
+  // whatever the foam's pattern there), falling to patches and none at EDGE_FOAM_WIDTH.
+  float edgeDistance;
+  vec3 surfaceView = mat3(viewMatrix) * vFromEye;  // the eye is the view space's origin
+  water = sceneThroughWater(surfaceView, mat3(viewMatrix) * refracted, gl_FragCoord.xy, water, absorption, deepWater, edgeDistance);
+  float edgeFoam = EDGE_FOAM_SOLID * (1.0 - smoothstep(0.0, EDGE_FOAM_WIDTH, edgeDistance));
+  #else
+  float edgeFoam = 0.0;
+  #endif
   vec3 glint = sunLight * reflectance * pow(max(dot(reflected, sunDirection), 0.0), sunShininess);
   vec3 colour = reflectance * sky + (1.0 - reflectance) * water + caustic * skySunVisibility * causticColor + glint;
   // The foam coverage: where its pattern shows, read for each pixel (the vertex stage's,
@@ -143,12 +159,12 @@ void main() {
   // patch in a triangle's straight edge); farther, the vertex stage's, at the vertex's mip level.
   float foamShown = foamPatternShown(restPerPixelX, restPerPixelY);
   float pixelFoam = blendedFoam(vBlend, texture(tFoam, largestUv).r, texture(tFoam, largestUv + copyOffset).r);
-  float foamCoverage = mix(vFoam, pixelFoam, foamShown);
+  float foamCoverage = max(mix(vFoam, pixelFoam, foamShown), edgeFoam);
   // Most of the sea has no foam: it pays for the foam's light only where there is (the pattern, two
   // texture lookups, is taken above for every pixel: its fwidth needs the neighbours).
   if (foamCoverage > FOAM_VISIBLE) {
     float opacity = foamOpacity(foamCoverage, foamDetail, foamDetailPerPixel, foamShown);
-    if (opacity > 0.0) colour = mix(colour, foamRadiance(normal, sunDirection, sunLight, environmentRadiance(normal)), opacity);
+    if (opacity > 0.0) colour = mix(colour, foamRadiance(normal, sunDirection, sunLight, environmentRadiance(normal)), min(opacity, 1.0));
   }
   #endif
   gl_FragColor = vec4(colour, 1.0);

@@ -55,6 +55,7 @@ export function createAppOcean(renderer: WebGLRenderer, state: Readonly<AppState
     causticPower: state.causticPower,
     causticColor: state.causticColor,
     shadingMode: state.mode,
+    refractions: state.refractions,
   });
   ocean.surface.material.wireframe = state.wireframe;
   return ocean;

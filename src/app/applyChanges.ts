@@ -43,6 +43,7 @@ export function applyChanges({ ocean, state, loop, extras, overlay, applyQuality
     causticPower: changes.causticPower,
     causticColor: changes.causticColor,
     shadingMode: changes.mode,
+    refractions: changes.refractions,
   };
   if (Object.values(shading).some((value) => value !== undefined)) ocean.setShading(shading);
   if (has('sunElevation') || has('sunAzimuth')) {

@@ -14,6 +14,7 @@
  *                                                               causticColour and scatterColour, the
  *                                                               British spellings, are read too
  *   mode       shading mode (full, fresnel, reflection, refraction, caustics, height)
+ *   refractions  scene/sky: what is seen through the water (the scene's objects, or only the sky)
  *   wireframe  1/0        inspector  1/0        path  auto/gpu/js        buoys  1/0   boat  1/0
  *   scene      sea (the open sea) or island (src/objects/island.ts; sceneChoice.ts)
  *   timeScale  -1000…1000 paused     1/0        t     simulation time in seconds
@@ -39,6 +40,7 @@ import {
   DEFAULT_SUN,
   SHADING_OPTIONS,
   SUN_OPTIONS,
+  type RefractionSource,
   type Rgb,
   type ShadingMode,
 } from '../parameters/sceneOptions';
@@ -63,6 +65,7 @@ export interface AppState extends SimulationParameters {
   absorption: Rgb;
   scatterColor: Rgb;
   mode: ShadingMode;
+  refractions: RefractionSource;
   wireframe: boolean;
   inspector: boolean;
   /** A few floating buoys ahead of the camera (buoys.ts). */
@@ -95,6 +98,7 @@ export const DEFAULT_STATE: Readonly<AppState> = Object.freeze({
   absorption: DEFAULT_SHADING.absorption,
   scatterColor: DEFAULT_SHADING.scatterColor,
   mode: DEFAULT_SHADING.shadingMode,
+  refractions: DEFAULT_SHADING.refractions,
   wireframe: false,
   inspector: false,
   buoys: false,
@@ -150,6 +154,7 @@ export const URL_KEYS: readonly (keyof AppState)[] = [
   'absorption',
   'scatterColor',
   'mode',
+  'refractions',
   'wireframe',
   'inspector',
   'buoys',

@@ -23,6 +23,9 @@ export const DEFAULT_SUN: Readonly<SunOptions> = Object.freeze({ sunElevation: 3
 export const SHADING_MODES = ['full', 'fresnel', 'reflection', 'refraction', 'caustics', 'height'] as const;
 export type ShadingMode = (typeof SHADING_MODES)[number];
 export type Rgb = [number, number, number];
+/** What the ray refracted into the water shows: the scene under the surface, or the sky alone. */
+export const REFRACTION_SOURCES = ['scene', 'sky'] as const;
+export type RefractionSource = (typeof REFRACTION_SOURCES)[number];
 
 /**
  * A colour as the shading options take it: a THREE.Color, a hex number (0x1a6b80), a CSS colour
@@ -89,6 +92,14 @@ export interface ShadingOptions {
   causticColor: Rgb;
   /** What the sea shows: 'full' shading, or one of its terms alone, to inspect it. @defaultValue 'full' */
   shadingMode: ShadingMode;
+  /**
+   * What is seen through the water: 'scene', the scene's objects under the surface (captured each
+   * frame without the sea, render/sceneRefraction.ts), bent by Snell's law and dimmed by the water
+   * over the path the light travels in it, with a foam line where they pierce the surface; or
+   * 'sky', the sky's light through the water alone (nothing under the surface shows). The quality
+   * level 'lowest' skips the capture (runtime/adaptiveQuality.ts). @defaultValue 'scene'
+   */
+  refractions: RefractionSource;
 }
 
 export const SHADING_OPTIONS: OptionTable<ShadingOptions> = {
@@ -98,6 +109,7 @@ export const SHADING_OPTIONS: OptionTable<ShadingOptions> = {
   causticPower: { type: 'number', unit: '', allowed: 'a number > 0 and at most 10000', check: (v) => typeof v === 'number' && v > 0 && v <= 1e4 },
   causticColor: { ...colorRule(100), aliases: ['causticColour'] },
   shadingMode: { type: 'choice', unit: '', allowed: `one of ${SHADING_MODES.join(', ')}`, check: oneOf(SHADING_MODES), choices: SHADING_MODES },
+  refractions: { type: 'choice', unit: '', allowed: `one of ${REFRACTION_SOURCES.join(', ')}`, check: oneOf(REFRACTION_SOURCES), choices: REFRACTION_SOURCES },
 };
 
 export const DEFAULT_SHADING: Readonly<ShadingOptions> = Object.freeze({
@@ -107,6 +119,7 @@ export const DEFAULT_SHADING: Readonly<ShadingOptions> = Object.freeze({
   causticPower: 32,
   causticColor: [0.12, 0.12, 0.12],
   shadingMode: 'full',
+  refractions: 'scene',
 } satisfies ShadingOptions);
 
 /**

@@ -42,7 +42,7 @@ export class OceanMaterial extends ShaderMaterial {
       // SHADING_MODE is a define, not a uniform: a mode change recompiles (rare), and the full
       // shading runs without the debug modes' branches (a few per cent of a SwiftShader frame).
       // LAYER_COUNT too (bindLayers): the sums over layers are unrolled.
-      defines: { RING_COUNT, SHADING_MODE: 0, LAYER_COUNT: 1, ...foamPatternDefines(), ...defines },
+      defines: { RING_COUNT, SHADING_MODE: 0, SCENE_REFRACTIONS: 1, LAYER_COUNT: 1, ...foamPatternDefines(), ...defines },
       vertexShader: withLayerCount(shaderSource('surface/ocean.vert'), 1),
       fragmentShader: withLayerCount(shaderSource('surface/ocean.frag'), 1),
       side: DoubleSide,
@@ -155,10 +155,26 @@ export class OceanMaterial extends ShaderMaterial {
     u.causticPower.value = next.causticPower;
     u.causticColor.value.fromArray(next.causticColor);
     const mode = SHADING_MODES.indexOf(next.shadingMode);
-    if (mode !== this.defines.SHADING_MODE) {
+    // A define, as the mode: with 'sky' the shader has no capture lookups at all.
+    const sceneRefractions = next.refractions === 'scene' ? 1 : 0;
+    if (mode !== this.defines.SHADING_MODE || sceneRefractions !== this.defines.SCENE_REFRACTIONS) {
       this.defines.SHADING_MODE = mode;
+      this.defines.SCENE_REFRACTIONS = sceneRefractions;
       this.needsUpdate = true;
     }
+  }
+
+  /** Whether the shader looks up the scene under the surface: refractions 'scene', in the full shading. */
+  get looksIntoScene(): boolean {
+    return this.defines.SCENE_REFRACTIONS === 1 && this.defines.SHADING_MODE === SHADING_MODES.indexOf('full');
+  }
+
+  /**
+   * Looks up the scene under the surface in this capture (SceneRefraction.uniforms, shared: its
+   * owner updates them) where the refractions option is 'scene'.
+   */
+  useSceneRefraction(uniforms: Record<string, { value: unknown }>): void {
+    Object.assign(this.uniforms, uniforms);
   }
 
   /** Frees the program (ShaderMaterial) and the foam pattern's textures. */
@@ -177,6 +193,7 @@ export class OceanMaterial extends ShaderMaterial {
       causticPower: u.causticPower.value,
       causticColor: u.causticColor.value.toArray(),
       shadingMode: SHADING_MODES[this.defines.SHADING_MODE as number],
+      refractions: this.defines.SCENE_REFRACTIONS === 1 ? 'scene' : 'sky',
     };
   }
 }

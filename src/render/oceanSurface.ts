@@ -2,13 +2,15 @@
  * The visible sea: a Mesh of the horizon grid (horizonGrid.ts) with the OceanMaterial, displaced
  * and shaded from the simulation's field textures. Add it to any scene; before each render it
  * places its rings around the rendering camera. The sea is the plane y = 0 of world space (the
- * mesh's own transform is not used). Owns its geometry and material.
+ * mesh's own transform is not used). Owns its geometry, material and the capture of the scene
+ * under it (SceneRefraction, for the `refractions: 'scene'` option).
  */
-import { Mesh, Vector2, Vector3, type Camera, type Scene, type Texture, type WebGLRenderer } from 'three';
+import { Mesh, Vector2, Vector3, type Camera, type Object3D, type Scene, type Texture, type WebGLRenderer } from 'three';
 import type { WaveLayer } from '../layers/waveLayer';
 import { ParameterError } from '../parameters/options';
 import { cellsPerRingForViewport, createHorizonGridGeometry, farEdgeDistance, FEWEST_CELLS_PER_RING, MOST_CELLS_PER_RING, RingFrames } from './horizonGrid';
 import { BACKGROUND_WATER } from './skyBackground';
+import { SceneRefraction } from './sceneRefraction';
 import { EYE_SIDE, OceanMaterial, type OceanMaterialInputs, type OceanShadingOptions } from './oceanMaterial';
 
 /** Metres from the surface within which the eye is taken to be at the waterline (about a camera's near distance). */
@@ -25,6 +27,10 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
   private readonly cameraPosition = new Vector3();
   /** Where the sky background shows the deep water instead of the sky (BACKGROUND_WATER). */
   readonly backgroundWater = { value: 0 };
+  /** The scene as the refraction sees it (the `refractions` shading option), drawn before the sea. */
+  readonly refraction = new SceneRefraction();
+  /** What the refraction's capture leaves out: this surface and what belongs with it (the Ocean's sky background). */
+  readonly seaObjects: Object3D[] = [this];
 
   /**
    * @param waves the layers to draw and the choppiness, asked before every render (they change
@@ -47,6 +53,7 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
     this.name = 'OceanSurface';
     this.frustumCulled = false; // the vertex shader moves every vertex; the sea is always in view
     this.cellsPerRing = 32;
+    this.material.useSceneRefraction(this.refraction.uniforms);
   }
 
   /**
@@ -69,11 +76,14 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
 
   /**
    * Called by three.js before each render of the sea: resizes the grid to the drawing buffer's
-   * height if needed and centres the rings under `camera` (placeRings).
+   * height if needed, centres the rings under `camera` (placeRings) and, with the refractions
+   * option 'scene' and the full shading, draws the scene without the sea for the refraction.
    */
-  override onBeforeRender(renderer: WebGLRenderer, _scene: Scene, camera: Camera): void {
+  override onBeforeRender(renderer: WebGLRenderer, scene: Scene, camera: Camera): void {
     this.fitDrawingBuffer(renderer);
     this.placeRings(camera);
+    if (this.material.looksIntoScene) this.refraction.capture(renderer, scene, camera, this.seaObjects);
+    else this.refraction.release();
   }
 
   /**
@@ -145,5 +155,6 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
   dispose(): void {
     this.geometry.dispose();
     this.material.dispose();
+    this.refraction.dispose();
   }
 }

@@ -6,7 +6,7 @@ import { ALSO_ON_OLDEST_THREE } from '../shared/threeRange';
 declare global {
   interface Window {
     /** Objects the tests below keep between page.evaluate calls. */
-    lifecycle: { renderer: WebGLRenderer; canvas: HTMLCanvasElement; memory: () => Record<string, number>; cycle: (i: number) => void };
+    lifecycle: { renderer: WebGLRenderer; canvas: HTMLCanvasElement; memory: () => Record<string, number>; cycle: (i: number) => boolean };
     removed: { el: FftOceanElement; renderer: WebGLRenderer; canvas: HTMLCanvasElement; gl: WebGL2RenderingContext };
   }
 }
@@ -35,7 +35,7 @@ async function listeners(page: Page, expression: string, type?: string): Promise
   }
 }
 
-test('50 Ocean create/dispose cycles on one renderer leave GPU memory and listeners at baseline', async ({ page }) => {
+test('50 Ocean create/dispose cycles on one renderer (with their refraction captures) leave GPU memory and listeners at baseline', async ({ page }) => {
   const errors = await openPage(page);
   await page.evaluate(() => {
     const { Ocean, WebGLRenderer, Scene, PerspectiveCamera } = window.embed;
@@ -47,7 +47,10 @@ test('50 Ocean create/dispose cycles on one renderer leave GPU memory and listen
     camera.position.set(0, 8, 0);
     camera.lookAt(50, 0, -50);
     const memory = () => ({ ...renderer.info.memory, programs: renderer.info.programs!.length });
-    /** One ocean's whole life, alternately on the GPU and the (synchronous) JS path. */
+    /**
+     * One ocean's whole life, alternately on the GPU and the (synchronous) JS path, with its scene
+     * capture for the refractions ('scene', the default); whether it drew the capture.
+     */
     const cycle = (i: number) => {
       const ocean = new Ocean(renderer, { resolution: 32, seed: i, path: i % 2 ? 'js' : 'auto', worker: false });
       scene.add(ocean);
@@ -58,8 +61,10 @@ test('50 Ocean create/dispose cycles on one renderer leave GPU memory and listen
       ocean.update(2 + i);
       renderer.render(scene, camera);
       ocean.heightAt(1, 2);
+      const captured = ocean.surface.refraction.renderTarget !== null;
       scene.remove(ocean);
       ocean.dispose();
+      return captured;
     };
     window.lifecycle = { renderer, memory, cycle, canvas: renderer.domElement };
   });
@@ -68,11 +73,13 @@ test('50 Ocean create/dispose cycles on one renderer leave GPU memory and listen
     const { memory, cycle } = window.lifecycle;
     const empty = memory();
     // One warm-up cycle: the first render sets up three.js's own state.
-    cycle(0);
+    const captures = [cycle(0)];
     const baseline = memory();
-    for (let i = 1; i <= 50; i++) cycle(i);
-    return { empty, baseline, after: memory() };
+    for (let i = 1; i <= 50; i++) captures.push(cycle(i));
+    return { empty, baseline, after: memory(), captures };
   });
+  // Every ocean drew its scene capture (a colour and a depth texture), and freed it with the rest.
+  expect(result.captures.every((captured) => captured)).toBe(true);
   expect(result.empty).toMatchObject({ geometries: 0, textures: 0 });
   expect(result.baseline.geometries).toBeLessThanOrEqual(1);
   expect(result.baseline.textures).toBe(0);

@@ -1,0 +1,90 @@
+// What the ray refracted into the water meets in the scene (requires surface/absorption.glsl).
+// The scene without the sea is drawn each frame from the same camera (src/render/sceneRefraction.ts)
+// into sceneColour (cleared to alpha 0) and sceneDepth; this finds where the refracted ray meets
+// it in screen space and brings that light back through the water.
+//
+// The ray from the surface point P goes along t = refract(d, n, n_a/n_w) (Snell's law,
+// n_a·sin θi = n_w·sin θt). The scene point B it meets is found by fixed-point iteration on the
+// path length L: start with the scene point straight behind P (B0, on the view ray), then
+// B_{k+1} = the scene point drawn where P + t·L_k is seen, L_{k+1} = |B_{k+1} − P|. It is exact
+// when the scene is locally flat (a bed or a hull's side: P + t·L* lies on it and is drawn where
+// it is) and within a few per cent after two steps at the angles a view down into the water has.
+// The light from B crosses L metres of water (alongWaterPath: Beer–Lambert with the in-scattered
+// deep-water colour filling in).
+uniform sampler2D sceneColour;
+uniform sampler2D sceneDepth;
+uniform bool sceneCaptured;        // false where no capture was drawn this frame (quality 'lowest')
+uniform mat4 sceneProjection;      // the camera's projection matrix at the capture
+uniform mat4 sceneProjectionInverse;
+uniform vec4 sceneViewport;        // the drawing's viewport in pixels: x, y, 1/width, 1/height
+uniform int sceneDepthMode;        // SCENE_DEPTH_* below: how the depth buffer stores depth
+uniform float sceneLogDepthRange;  // log2(far + 1), for the logarithmic depth buffer
+#define SCENE_DEPTH_STANDARD 0     // window depth = (z_ndc + 1)/2
+#define SCENE_DEPTH_REVERSED 1     // window depth = z_ndc (reversed depth, clip control 0..1)
+#define SCENE_DEPTH_LOGARITHMIC 2  // window depth = log2(1 + w)/log2(far + 1) (three.js logdepthbuf)
+#define SCENE_REFRACTION_STEPS 2
+
+// The view-space point drawn into the capture at screen position uv (0..1).
+vec3 capturedViewPoint(vec2 uv) {
+  float depth = texture(sceneDepth, uv).r;
+  float ndcZ = depth * 2.0 - 1.0;
+  if (sceneDepthMode == SCENE_DEPTH_REVERSED) ndcZ = depth;
+  if (sceneDepthMode == SCENE_DEPTH_LOGARITHMIC) {
+    float w = exp2(depth * sceneLogDepthRange) - 1.0;  // distance in front of the eye, −z_view
+    ndcZ = (sceneProjection[2][2] * -w + sceneProjection[3][2]) / w;
+  }
+  vec4 point = sceneProjectionInverse * vec4(uv * 2.0 - 1.0, ndcZ, 1.0);
+  return point.xyz / point.w;
+}
+
+// Where a view-space point is drawn on the screen (0..1).
+vec2 screenPosition(vec3 viewPoint) {
+  vec4 clip = sceneProjection * vec4(viewPoint, 1.0);
+  return clip.xy / clip.w * 0.5 + 0.5;
+}
+
+// The height above the eye of a view-space point: its world offset from the eye is R^T·v (the view
+// rotation R = mat3(viewMatrix) is orthogonal), whose y is v·(R's second column).
+float heightAboveEye(vec3 viewPoint) {
+  return dot(mat3(viewMatrix)[1], viewPoint);
+}
+
+// The light refracted into the water at the surface point surfaceView (view space, with refracted
+// its refracted direction there, also in view space) brings back: the scene under the surface
+// through the water, or skyThroughWater (throughWater of the sky) where the capture has nothing.
+// edgeDistance gets the distance along the view from the surface to the scene behind it when that
+// is under the water (the water's edge on an object), else a large number.
+vec3 sceneThroughWater(vec3 surfaceView, vec3 refracted, vec2 pixel, vec3 skyThroughWater, vec3 absorption, vec3 scatterColour, out float edgeDistance) {
+  edgeDistance = 1e6;
+  if (!sceneCaptured) return skyThroughWater;
+  float waterHeight = heightAboveEye(surfaceView);
+  vec2 straightUv = (pixel - sceneViewport.xy) * sceneViewport.zw;
+  vec3 behind = capturedViewPoint(straightUv);
+  // The sea is drawn over what is in front of it, so the scene straight behind is behind the surface
+  // up to the capture's resolution; only what is under the water shows through it.
+  bool straightCovered = texture(sceneColour, straightUv).a > 0.0 && heightAboveEye(behind) < waterHeight;
+  if (straightCovered) edgeDistance = length(behind - surfaceView);
+  vec2 uv = straightUv;
+  vec3 point = behind;
+  for (int i = 0; i < SCENE_REFRACTION_STEPS; i++) {
+    // Off the picture, the nearest point on its edge: the scene there goes on much as at its edge
+    // (a bed), where the undistorted pixel's longer path would show a seam.
+    vec2 next = clamp(screenPosition(surfaceView + refracted * length(point - surfaceView)), vec2(0.0), vec2(1.0));
+    vec3 found = capturedViewPoint(next);
+    // An object above the water drawn there (in front of what the ray meets under it): the
+    // undistorted pixel instead. A point under the water nearer the eye than the surface is what
+    // a ray bent towards the vertical meets.
+    if (heightAboveEye(found) > waterHeight) {
+      uv = straightUv;
+      point = behind;
+      break;
+    }
+    uv = next;
+    point = found;
+  }
+  vec4 scene = texture(sceneColour, uv);
+  // Something drawn above the water behind the surface (a mast beyond it) is not under it.
+  float coverage = heightAboveEye(point) < waterHeight ? scene.a : 0.0;
+  if (coverage == 0.0) return skyThroughWater;
+  return mix(skyThroughWater, alongWaterPath(scene.rgb, length(point - surfaceView), absorption, scatterColour), coverage);
+}

@@ -1,0 +1,156 @@
+import { expect, test, type Page } from '@playwright/test';
+import type { SetupOptions, Vec3 } from './refractions';
+import { ALSO_ON_OLDEST_THREE } from '../shared/threeRange';
+
+// The scene seen through the water (refractions: 'scene'): a white plate under calm water, drawn
+// without tone mapping in linear RGB, against the optics it should follow. One page and one Ocean
+// for the whole file (a new Ocean compiles its shaders again).
+
+test.describe.configure({ mode: 'serial' });
+
+let page: Page;
+const errors: string[] = [];
+
+test.beforeAll(async ({ browser }) => {
+  page = await browser.newPage();
+  page.on('pageerror', (error) => errors.push(error.message));
+  await page.goto('/tests/browser/refractions/refractions.html');
+  await expect(page).toHaveTitle('ready');
+});
+
+test.afterAll(async () => {
+  expect(errors).toEqual([]);
+  await page.close();
+});
+
+const N_WATER = 1.333; // the ior option's default
+const ABSORPTION: Vec3 = [0.45, 0.07, 0.04]; // σ, 1/m: the absorption option's default
+const SCATTER: Vec3 = [0.0, 0.035, 0.06]; // the scatterColor option's default (linear)
+const SKY_GREY = 200; // the sky's faces, sRGB
+
+/**
+ * The sky's radiance: its faces' sRGB level decoded to linear (IEC 61966-2-1:
+ * c ≤ 0.04045 ? c/12.92 : ((c + 0.055)/1.055)^2.4).
+ */
+const skyRadiance = ((c) => (c <= 0.04045 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4))(SKY_GREY / 255);
+
+/**
+ * Unpolarized Fresnel reflectance from air into water at incidence cos θi (Fresnel equations,
+ * Hecht, "Optics", 5th ed., §4.6.2, eqs. 4.42–4.43, with Snell's law n_a·sin θi = n_w·sin θt):
+ *   r_s = (cos θi − n·cos θt)/(cos θi + n·cos θt),  r_p = (n·cos θi − cos θt)/(n·cos θi + cos θt),
+ *   R = (r_s² + r_p²)/2.
+ */
+function fresnelReflectance(cosI: number, n: number): number {
+  const cosT = Math.sqrt(1 - (1 - cosI * cosI) / (n * n));
+  const rs = (cosI - n * cosT) / (cosI + n * cosT);
+  const rp = (n * cosI - cosT) / (n * cosI + cosT);
+  return (rs * rs + rp * rp) / 2;
+}
+
+/**
+ * What a pixel over flat water shows with a white plate (radiance 1) `depth` metres under it, seen
+ * along `ray` (unit, downwards): the sky reflected, R·S, plus the transmitted fraction T = 1 − R of
+ * the plate's light after the refracted path L = depth/cos θt (Snell: sin θt = sin θi/n) through the
+ * water, which Beer–Lambert dims by e^{−σL} per channel (Mobley, "Light and Water", 1994, §3.2)
+ * and the water's own in-scattered light fills in, scatter·(1 − e^{−σL}) (full daylight: the sun
+ * above the horizon, src/render/daylight.ts). No caustics (causticColor 0) and no glint (the sun
+ * behind the eye).
+ */
+function expectedPixel(ray: Vec3, depth: number): { colour: Vec3; path: number } {
+  const cosI = -ray[1];
+  const reflectance = fresnelReflectance(cosI, N_WATER);
+  const sinT = Math.sqrt(1 - cosI * cosI) / N_WATER;
+  const path = depth / Math.sqrt(1 - sinT * sinT);
+  const colour = ABSORPTION.map((sigma, c) => {
+    const transmittance = Math.exp(-sigma * path);
+    return reflectance * skyRadiance + (1 - reflectance) * (transmittance + SCATTER[c] * (1 - transmittance));
+  }) as Vec3;
+  return { colour, path };
+}
+
+const PLATE_SETUP: SetupOptions = {
+  // Calm water (no wind: a flat surface), no caustics, the sun at 30° behind the eye.
+  ocean: { windSpeed: 0, resolution: 32, causticColor: [0, 0, 0], sunElevation: 30, sunAzimuth: 90 },
+  skyGrey: SKY_GREY,
+  output: 'linear',
+  content: 'plate',
+  width: 480,
+  height: 270,
+  // 45° down towards −z: the rows below see the water from 20° to 70° off the vertical.
+  camera: { position: [0, 3, 0], lookAt: [0, 0, -3], fov: 50 },
+};
+/** Pixels [x, y] from the bottom left: near (steep), centre, far (grazing). */
+const PIXELS: [number, number][] = [
+  [240, 40],
+  [240, 135],
+  [240, 200],
+];
+
+async function draw(depth: number, pixels = PIXELS) {
+  return page.evaluate(([d, p]) => window.refractionHarness.draw(d, p), [depth, pixels] as const);
+}
+
+test('a white plate 1 m and 4 m under calm water: each channel is R·sky + T·(e^{−σL} + scatter·(1 − e^{−σL})) over the refracted path', ALSO_ON_OLDEST_THREE, async () => {
+  await page.evaluate((options) => window.refractionHarness.setup(options), PLATE_SETUP);
+  const measured: Record<number, Vec3[]> = {};
+  for (const depth of [1, 4]) {
+    const { colours, rays, captured } = await draw(depth);
+    expect(captured).toBe(true);
+    measured[depth] = colours;
+    colours.forEach((colour, i) => {
+      const { colour: expected, path } = expectedPixel(rays[i], depth);
+      console.log(`plate ${depth} m, pixel ${PIXELS[i].join(',')}: path ${path.toFixed(2)} m, measured ${colour.map((v) => v.toFixed(3))} expected ${expected.map((v) => v.toFixed(3))}`);
+      for (let c = 0; c < 3; c++) expect(Math.abs(colour[c] - expected[c])).toBeLessThan(0.1 * expected[c]);
+    });
+  }
+  // Red fades faster with depth than blue (σ_red = 0.45/m against 0.04/m).
+  PIXELS.forEach((_pixel, i) => {
+    const red = measured[4][i][0] / measured[1][i][0];
+    const blue = measured[4][i][2] / measured[1][i][2];
+    expect(red).toBeLessThan(0.6 * blue);
+  });
+});
+
+test("with refractions 'sky' the plate is not seen: the same pixels at 1 m and 4 m, no capture drawn", async () => {
+  const withScene = await draw(1);
+  expect(await page.evaluate(() => window.refractionHarness.setShading({ refractions: 'sky' }))).toEqual({ error: null, refractions: 'sky' });
+  const shallow = await draw(1);
+  const deep = await draw(4);
+  expect(shallow.captured).toBe(false);
+  expect(shallow.colours).toEqual(deep.colours);
+  // Only the sky through the water: far darker than the plate 1 m down.
+  shallow.colours.forEach((colour, i) => expect(colour[0]).toBeLessThan(0.5 * withScene.colours[i][0]));
+  await page.evaluate(() => window.refractionHarness.setShading({ refractions: 'scene' }));
+  expect((await draw(1)).colours).toEqual(withScene.colours);
+});
+
+test("refractions: 'glass' is a ParameterError naming refractions, and the last good value stays", async () => {
+  const { error, refractions } = await page.evaluate(() => window.refractionHarness.setShading({ refractions: 'glass' }));
+  expect(error?.parameter).toBe('refractions');
+  expect(error?.message).toContain('one of scene, sky');
+  expect(refractions).toBe('scene');
+  const fromConstructor = await page.evaluate(() => window.refractionHarness.construct({ refractions: 'glass' }));
+  expect(fromConstructor?.parameter).toBe('refractions');
+});
+
+test('where a box pierces calm water, a line of foam forms within 0.3 m of it, and none farther out', async () => {
+  await page.evaluate(
+    (options) => window.refractionHarness.setup(options),
+    { ...PLATE_SETUP, content: 'box', camera: { position: [0, 2, 0], lookAt: [0, 0, -6], fov: 50 } } satisfies SetupOptions,
+  );
+  // On the water 5 cm and 1 m in front of the box's face (z = −5), in the middle of it.
+  const pixels = await page.evaluate(() => [window.refractionHarness.pixelOf([0, 0, -4.95]), window.refractionHarness.pixelOf([0, 0, -4])]);
+  const withScene = await draw(1, pixels);
+  await page.evaluate(() => window.refractionHarness.setShading({ refractions: 'sky' }));
+  const skyOnly = await draw(1, pixels);
+  await page.evaluate(() => window.refractionHarness.setShading({ refractions: 'scene' }));
+  const [atEdge, farther] = withScene.colours;
+  console.log(`box edge: at 5 cm ${atEdge.map((v) => v.toFixed(3))}, at 1 m ${farther.map((v) => v.toFixed(3))}; sky only ${skyOnly.colours[0].map((v) => v.toFixed(3))}`);
+  // Foam is white (a diffuse surface of albedo 0.8 under the sky, foam.glsl): every channel far
+  // above the water's, whose red the water absorbs.
+  expect(Math.min(...atEdge)).toBeGreaterThan(0.4);
+  expect(atEdge[0]).toBeGreaterThan(3 * skyOnly.colours[0][0]);
+  // 1 m out, water without foam: its red absorbed (foam's is as bright as its blue).
+  expect(farther[0]).toBeLessThan(0.2);
+  expect(farther[0]).toBeLessThan(0.5 * farther[2]);
+});
