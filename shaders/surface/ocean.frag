@@ -98,9 +98,7 @@ void main() {
   float dxDz = vCrossDerivative;
   vec3 normal = choppyNormal(derivatives, dxDz);
   vec3 view = normalize(vFromEye);  // d, from the eye to the surface
-  // A normal that faces away from the eye (behind a steep crest) is bent back into view.
-  float facing = dot(view, normal);
-  if (facing > 0.0) normal = normalize(normal - 1.01 * facing * view);
+  normal = facingEye(view, normal);  // seaLighting.glsl
   float cosIncident = -dot(view, normal);
 
   float reflectance = fresnelReflectance(cosIncident, iorAir, iorWater);
@@ -135,7 +133,7 @@ void main() {
     return;
   }
   // The slopes this pixel's normal does not show spread the sky's reflection and the glint (seaLighting.glsl).
-  float slopeVariance = subPixelSlopeVariance(restPerPixelX, restPerPixelY);
+  float slopeVariance = subPixelSlopeVariance(footprintLevel(restPerPixelX, restPerPixelY));
   vec3 sky = filteredSkyReflection(view, normal, slopeVariance, iorAir, iorWater, reflectance);
   vec3 water = throughWater(environmentRadiance(refracted), refracted, absorption, deepWater, viewDepth);
   vec3 glint = sunLight * sunGlint(view, normal, sunDirection, slopeVariance, iorAir, iorWater);

@@ -9,16 +9,21 @@ uniform float layerFilteredSlopes[LAYER_COUNT * SLOPE_FILTER_LEVELS];  // per la
 uniform float layerTexels[LAYER_COUNT];                               // metres
 uniform float waveHeightRms;                                          // metres
 
+// The pixel's footprint on the rest plane as log2 of metres: the larger of its two screen axes'
+// steps, as texture() takes ρ (GLSL ES 3.00 §8.9) when ocean.frag reads the layers' derivatives:
+// at footprint − log2(texel) in each (reading them with textureLod at that level gave the same
+// band means under SwiftShader).
+float footprintLevel(vec2 restPerPixelX, vec2 restPerPixelY) {
+  return log2(max(max(length(restPerPixelX), length(restPerPixelY)), 1e-6));
+}
+
 // The mean square slope σ² of the surface within this pixel around its normal: the slopes finer
 // than the grid, plus, for each layer, what the mip level its derivatives were read at averaged
-// away. The level is the one texture() took (GLSL ES 3.00 §8.9: λ = log2 ρ, ρ the larger of the
-// two screen axes' texel steps), from the rest point's change to the next pixel (metres) over the
-// layer's texel; between two levels, as trilinear filtering mixes them.
-float subPixelSlopeVariance(vec2 restPerPixelX, vec2 restPerPixelY) {
-  float footprint = max(length(restPerPixelX), length(restPerPixelY));
+// away (between two levels, as trilinear filtering mixes them).
+float subPixelSlopeVariance(float footprint) {
   float variance = unresolvedSlopeVariance;
   for (int layer = 0; layer < LAYER_COUNT; layer++) {
-    float level = clamp(log2(max(footprint / layerTexels[layer], 1e-6)), 0.0, float(SLOPE_FILTER_LEVELS - 1));
+    float level = clamp(footprint - log2(layerTexels[layer]), 0.0, float(SLOPE_FILTER_LEVELS - 1));
     int below = int(level);
     int above = min(below + 1, SLOPE_FILTER_LEVELS - 1);
     int row = layer * SLOPE_FILTER_LEVELS;
@@ -55,36 +60,43 @@ float sunGlint(vec3 view, vec3 normal, vec3 sun, float variance, float n1, float
   return fresnelReflectance(dot(toEye, halfway), n1, n2) * density / (4.0 * cosView * cos2 * cos2 * shadowing);
 }
 
+// A normal that faces away from the eye (behind a steep crest, or a facet of the slopes below) is
+// bent back into view, to grazing.
+vec3 facingEye(vec3 view, vec3 normal) {
+  float facing = dot(view, normal);
+  return facing > 0.0 ? normalize(normal - 1.01 * facing * view) : normal;
+}
+
 // The sky reflected by the pixel's facets: the mean of R(n)·L_sky(reflect(v, n)) over the
-// Gaussian slopes around the pixel's normal, each facet weighted by the area it shows the eye,
-// max(0, −v·n) / (n·N) (the visible normals' distribution: Heitz 2014, "Understanding the
-// masking-shadowing function in microfacet-based BRDFs", JCGT 3(2), eq. 2). The mean over slopes
-// of variance s² = σ²/2 per axis is taken by the 4-point cross rule, nodes (±√2·s, 0) and (0, ±√2·s)
-// of weight ¼ (its second moments are the Gaussian's and its odd ones vanish, as the Gaussian's
-// do), along and across the view. Returns the
-// mean reflectance in `reflectance` and the reflected radiance it weights, so that reflectance·sky
-// is the mean; with σ² = 0 it is the mirror's reflection.
+// Gaussian slopes around the pixel's normal. Each facet counts by its share of the rest plane, as
+// the slopes the grid resolves do (a pixel's normal is read at its rest point, whichever way it
+// faces), so that the light does not change where the grid stops resolving them; facets facing
+// away are bent to grazing, as the pixel's own normal is (facingEye). The slopes have
+// variance s² = σ²/2 along and across the view. Along it, where the light changes most (the
+// reflected ray's height in the sky, the Fresnel factor), the mean is the 3-point Gauss–Hermite rule
+// (nodes 0, ±√3·s, weights ⅔, ⅙, ⅙: exact to the 5th moment, Abramowitz & Stegun 25.4.46); across
+// it, the node 0 is split into ±√(3/2)·s (weights ⅓ each), which keeps the second moment. Four
+// taps; with σ² = 0 the mirror's reflection. Returns the mean reflectance in `reflectance` and the
+// reflected radiance it weights, so that reflectance·sky is the mean.
 vec3 filteredSkyReflection(vec3 view, vec3 normal, float variance, float n1, float n2, out float reflectance) {
   vec3 across = cross(view, normal);
   across = dot(across, across) > 1e-8 ? normalize(across) : normalize(cross(vec3(1.0, 0.0, 0.0), normal));
   vec3 along = cross(normal, across);
-  float node = sqrt(variance);  // √2·s
+  float s = sqrt(0.5 * variance);
   vec3 reflected = vec3(0.0);
   float weightedReflectance = 0.0;
-  float shown = 0.0;
   for (int tap = 0; tap < 4; tap++) {
     float side = tap % 2 == 0 ? 1.0 : -1.0;
-    vec3 tilt = tap < 2 ? along : across;
-    vec3 facet = normalize(normal - side * node * tilt);
-    float area = max(-dot(view, facet), 0.0) / dot(facet, normal);
+    bool alongView = tap < 2;
+    vec3 facet = facingEye(view, normalize(normal - side * s * (alongView ? 1.7320508 * along : 1.2247449 * across)));
+    float weight = alongView ? 1.0 / 6.0 : 1.0 / 3.0;
     float facetReflectance = fresnelReflectance(-dot(view, facet), n1, n2);
     vec3 direction = reflect(view, facet);
     direction.y = abs(direction.y);  // a ray reflected downwards would hit the next wave: mirror it
-    reflected += area * facetReflectance * environmentRadiance(direction);
-    weightedReflectance += area * facetReflectance;
-    shown += area;
+    reflected += weight * facetReflectance * environmentRadiance(direction);
+    weightedReflectance += weight * facetReflectance;
   }
-  reflectance = weightedReflectance / max(shown, 1e-6);
+  reflectance = weightedReflectance;
   return reflected / max(weightedReflectance, 1e-6);
 }
 
@@ -96,7 +108,7 @@ vec3 filteredSkyReflection(vec3 view, vec3 normal, float variance, float n1, flo
 // the least water; it leaves the water through the surface (1 − R) in the colour the water scatters.
 // SEA_CREST_GLOW: how much of the sun's irradiance such a crest sends back, set by eye against
 // photographs of backlit swell (a tuning, not a measured value).
-#define SEA_CREST_GLOW 2.0
+#define SEA_CREST_GLOW 4.0
 vec3 crestGlow(vec3 view, vec3 normal, vec3 sun, float heightAboveMean, float reflectance, vec3 sunLight, vec3 scatter) {
   float crest = clamp(heightAboveMean / (2.0 * max(waveHeightRms, 1e-3)), 0.0, 1.0);
   float forward = pow(max(dot(view, sun), 0.0), 4.0);

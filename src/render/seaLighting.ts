@@ -27,10 +27,11 @@ export const SLOPE_FILTER_LEVELS = 12;
  * glitter", J. Opt. Soc. Am. 44(11): 838–850, eq. for the clean surface: σ² = 0.003 + 5.12·10⁻³·U
  * (U the wind speed in m/s at 12.5 m above the sea, valid to about 14 m/s and used beyond; the
  * fit's rms deviation is 0.004). The Ocean's wind speed is at 10 m: under a neutral logarithmic
- * profile U12.5 is 1–2 % more, well inside the fit's scatter, so U10 is used as it is.
+ * profile U12.5 is 1–2 % more, well inside the fit's scatter, so U10 is used as it is. Without
+ * wind there are no ripples (as seaState reports 0): a mirror, not the fit's intercept.
  */
 export function coxMunkMeanSquareSlope(windSpeed: number): number {
-  return 0.003 + 5.12e-3 * Math.max(0, windSpeed);
+  return windSpeed > 0 ? 0.003 + 5.12e-3 * windSpeed : 0;
 }
 
 /** What one cascade's spectrum gives the lighting: its slope variance and how mip-mapping filters it. */

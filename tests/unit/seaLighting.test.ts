@@ -11,10 +11,12 @@ import { createCascadeSpectra } from '../../src/spectrum/initialSpectrum';
  * 10 m/s and 0.0798 at 15 m/s (their Table / Fig. 14 read at these winds).
  */
 describe('coxMunkMeanSquareSlope', () => {
-  it('is the clean-surface law', () => {
+  it('is the clean-surface law, and 0 without wind', () => {
     expect(coxMunkMeanSquareSlope(10)).toBeCloseTo(0.0542, 10);
     expect(coxMunkMeanSquareSlope(15)).toBeCloseTo(0.0798, 10);
-    expect(coxMunkMeanSquareSlope(0)).toBeCloseTo(0.003, 10);
+    expect(coxMunkMeanSquareSlope(1)).toBeCloseTo(0.00812, 10);
+    // No wind, no ripples: a mirror (seaState's meanSquareSlope is 0 there too).
+    expect(coxMunkMeanSquareSlope(0)).toBe(0);
   });
 });
 
