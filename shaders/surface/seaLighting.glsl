@@ -47,7 +47,9 @@ float smithLambda(float cosTheta, float variance) {
 //   L / E = F(v·h)·p(ζ_h) / (4·cos θv·cos⁴ θh·(1 + Λ(v) + Λ(l))),
 // with h the half vector, θh its angle from the pixel's normal, ζ_h = tan θh its slope and p the
 // isotropic Gaussian density of slopes of mean square σ²: p(ζ) = exp(−|ζ|²/σ²) / (π·σ²).
-float sunGlint(vec3 view, vec3 normal, vec3 sun, float variance, float n1, float n2) {
+float sunGlint(vec3 view, vec3 normal, vec3 sun, float slopeVariance, float n1, float n2) {
+  // A mirror (no wind) reflects the sun only where h = n exactly: the lobe stays finite.
+  float variance = max(slopeVariance, 1e-6);
   vec3 toEye = -view;
   float cosView = dot(toEye, normal);
   float cosSun = dot(sun, normal);
