@@ -138,6 +138,7 @@ export class Ocean extends Object3D<OceanEventMap> {
         layers: sim.layers,
         choppiness: sim.parameters.choppiness,
         foam: sim.foam.texture,
+        windSpeed: sim.parameters.windSpeed,
         surfaceBound: 6 * this.heightRms + 1,
         waterHeightAt: (x: number, z: number) => heightAt(sim.layers, sim.parameters.choppiness, this.currentTime, x, z),
       }),

@@ -9,6 +9,7 @@
 #include "surface/absorption.glsl"
 #include "sky/environmentLookup.glsl"
 #include "surface/waveLayers.glsl"
+#include "surface/seaLighting.glsl"
 #include "surface/foam.glsl"
 #include "surface/fromBelow.glsl"
 #if SCENE_REFRACTIONS == 1
@@ -18,13 +19,12 @@
 #include <logdepthbuf_pars_fragment>
 
 uniform vec3 sunDirection;     // towards the sun
-uniform vec3 sunColor;        // radiance of the glint
+uniform vec3 sunColor;        // the sun's irradiance at the sea (OceanMaterial)
 // As the sun sets (src/render/daylight.ts, shared with the sky): the sky's light as a fraction of
 // the day's, which the water scatters back, and the fraction of the sun's disk above the horizon,
 // which makes the glint and the caustics.
 uniform float skyDaylight;
 uniform float skySunVisibility;
-uniform float sunShininess;
 uniform float iorAir;
 uniform float iorWater;
 uniform vec3 absorption;
@@ -103,9 +103,7 @@ void main() {
   float dxDz = vCrossDerivative;
   vec3 normal = choppyNormal(derivatives, dxDz);
   vec3 view = normalize(vFromEye);  // d, from the eye to the surface
-  // A normal that faces away from the eye (behind a steep crest) is bent back into view.
-  float facing = dot(view, normal);
-  if (facing > 0.0) normal = normalize(normal - 1.01 * facing * view);
+  normal = facingEye(view, normal);  // seaLighting.glsl
   float cosIncident = -dot(view, normal);
 
   float reflectance = fresnelReflectance(cosIncident, iorAir, iorWater);
@@ -139,7 +137,9 @@ void main() {
     #include <colorspace_fragment>
     return;
   }
-  vec3 sky = environmentRadiance(reflected);
+  // The slopes this pixel's normal does not show spread the sky's reflection and the glint (seaLighting.glsl).
+  float slopeVariance = subPixelSlopeVariance(footprintLevel(restPerPixelX, restPerPixelY));
+  vec3 sky = filteredSkyReflection(view, normal, slopeVariance, iorAir, iorWater, reflectance);
   vec3 water = throughWater(environmentRadiance(refracted), refracted, absorption, deepWater, viewDepth);
   #if SCENE_REFRACTIONS == 1
   // What lies under the surface (sceneRefraction.glsl); where an object meets the water, a line of
@@ -152,8 +152,9 @@ void main() {
   #else
   float edgeFoam = 0.0;
   #endif
-  vec3 glint = sunLight * reflectance * pow(max(dot(reflected, sunDirection), 0.0), sunShininess);
+  vec3 glint = sunLight * sunGlint(view, normal, sunDirection, slopeVariance, iorAir, iorWater);
   vec3 colour = reflectance * sky + (1.0 - reflectance) * water + caustic * skySunVisibility * causticColor + glint;
+  colour += crestGlow(view, normal, sunDirection, vFromEye.y + cameraPosition.y, reflectance, sunLight, scatterColor);
   // The foam coverage: where its pattern shows, read for each pixel (the vertex stage's,
   // interpolated linearly over triangles whose cells are as large as the coverage's texels, ended a
   // patch in a triangle's straight edge); farther, the vertex stage's, at the vertex's mip level.

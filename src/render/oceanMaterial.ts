@@ -12,6 +12,7 @@ import { DEFAULT_SHADING, SHADING_MODES, SHADING_OPTIONS, type ShadingChanges, t
 import { shaderSource, withLayerCount } from '../shaderSource';
 import { FOAM_PATTERN_PERIOD, foamPatternDefines, foamPatternTextures } from './foamPattern';
 import { finestTexel, RING_COUNT } from './horizonGrid';
+import { SLOPE_FILTER_LEVELS, seaLightingValues } from './seaLighting';
 
 /** Where the eye is against the sea surface (the uniform eyeSide of ocean.frag). */
 export const EYE_SIDE = { above: 0, below: 1, near: 2 } as const;
@@ -36,13 +37,15 @@ export class OceanMaterial extends ShaderMaterial {
   private boundLayers: readonly WaveLayer[] | null = null;
   /** The patch size of the layer drawn blended (the last one bound). */
   private blendedSize = 1;
+  /** The wind the sub-pixel slopes were set for (seaLighting.ts), with the layers bound then. */
+  private litWindSpeed = Number.NaN;
 
   constructor(inputs: OceanMaterialInputs, options: OceanShadingOptions = {}, defines: Record<string, unknown> = {}) {
     super({
       // SHADING_MODE is a define, not a uniform: a mode change recompiles (rare), and the full
       // shading runs without the debug modes' branches (a few per cent of a SwiftShader frame).
       // LAYER_COUNT too (bindLayers): the sums over layers are unrolled.
-      defines: { RING_COUNT, SHADING_MODE: 0, SCENE_REFRACTIONS: 1, LAYER_COUNT: 1, ...foamPatternDefines(), ...defines },
+      defines: { RING_COUNT, SHADING_MODE: 0, SCENE_REFRACTIONS: 1, LAYER_COUNT: 1, SLOPE_FILTER_LEVELS, ...foamPatternDefines(), ...defines },
       vertexShader: withLayerCount(shaderSource('surface/ocean.vert'), 1),
       fragmentShader: withLayerCount(shaderSource('surface/ocean.frag'), 1),
       side: DoubleSide,
@@ -64,8 +67,13 @@ export class OceanMaterial extends ShaderMaterial {
           copyOffset: { value: new Vector2(...COPY_OFFSET) },
           ringOffsets: { value: new Float32Array(2 * (RING_COUNT + 1)) },
           halfRingCells: { value: 32 },
+          // The sun's irradiance at the sea on a plane facing it (for the glint, the foam and the
+          // crests' glow); the sky's E_sun·T_sun for a sun ~30° high (analyticSky.glsl).
           sunColor: { value: new Color(12, 11, 9.5) },
-          sunShininess: { value: 900 },
+          unresolvedSlopeVariance: { value: 0 },
+          layerFilteredSlopes: { value: new Array<number>(SLOPE_FILTER_LEVELS).fill(0) },
+          layerTexels: { value: [1] },
+          waveHeightRms: { value: 0 },
           iorAir: { value: 1 },
           iorWater: { value: DEFAULT_SHADING.ior },
           absorption: { value: new Vector3(...DEFAULT_SHADING.absorption) },
@@ -99,12 +107,20 @@ export class OceanMaterial extends ShaderMaterial {
    * Samples these layers (waveLayer.ts) with this choppiness, and this whitecap foam field (over the
    * last layer's patch, whitecapFoam.ts), from the next draw on. Called before every draw: for the
    * list it bound last it only sets the choppiness and the foam; a new list rebinds the textures
-   * and sizes, and a new number of layers recompiles the shaders.
+   * and sizes, and a new number of layers recompiles the shaders. `windSpeed` (m/s at 10 m) sets
+   * the slopes finer than the layers (seaLighting.ts).
    */
-  bindLayers(layers: readonly WaveLayer[], choppiness: number, foam: { value: Texture | null }): void {
+  bindLayers(layers: readonly WaveLayer[], choppiness: number, foam: { value: Texture | null }, windSpeed = 0): void {
     const u = this.uniforms;
     u.choppiness.value = choppiness;
     u.tFoam = foam;
+    if (layers === this.boundLayers && windSpeed === this.litWindSpeed) return;
+    this.litWindSpeed = windSpeed;
+    const light = seaLightingValues(layers, windSpeed);
+    u.unresolvedSlopeVariance.value = light.unresolvedSlopeVariance;
+    u.layerFilteredSlopes.value = light.layerFilteredSlopes;
+    u.layerTexels.value = light.layerTexels;
+    u.waveHeightRms.value = light.heightRms;
     if (layers === this.boundLayers) return;
     // The shaders blend two copies of the last layer (src/layers/patchBlend.ts), as the queries do
     // for the largest periodic one: they must be the same layer.
