@@ -70,6 +70,7 @@ export type { SceneOutput } from './render/sceneOutput';
 export { farPlaneFor, fitFarPlane } from './runtime/farPlane';
 export type { AdaptiveQuality, QualityLevel, QualitySetting, QualityStep } from './runtime/adaptiveQuality';
 export type { SeaStateSummary, WritableNumbers } from './ocean';
+export type { Seabed, SeabedBounds, SeabedFunction, SeabedHeightfield, SeabedMeshes } from './layers/seabed';
 export type { WaveNumberSpectrum, SpectrumOrigin } from './spectrum/initialSpectrum';
 export type { SeaStateParameters } from './spectrum/seaState';
 export type { PhillipsParameters } from './spectrum/phillips';

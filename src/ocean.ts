@@ -27,6 +27,8 @@ import { DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ShadingChanges, type Sh
 import type { InitialSpectrum } from './spectrum/initialSpectrum';
 import { spectralMoments } from './spectrum/seaState';
 import { seaRepeatPeriod } from './spectrum/cascadeBands';
+import { createSeabedMap, type Seabed } from './layers/seabed';
+import { Shore } from './layers/shore';
 
 export interface OceanOptions extends Partial<SimulationParameters>, OceanShadingOptions, SimulationOptions {
   /** Sun elevation above the horizon in degrees, [-90, 90]. @defaultValue 30 */
@@ -39,6 +41,11 @@ export interface OceanOptions extends Partial<SimulationParameters>, OceanShadin
    * @defaultValue undefined (the sun is at sunElevation and sunAzimuth)
    */
   sunDirection?: SunDirection;
+  /**
+   * The sea floor under part of the sea (see Ocean.setSeabed): waves shoal and break over it.
+   * @defaultValue null (the sea is as deep as `depth` everywhere)
+   */
+  seabed?: Seabed | null;
 }
 
 /** Where the sun is, for Ocean.setSun: degrees (a missing one stays as it is), or a direction instead. */
@@ -69,6 +76,7 @@ const OCEAN_OPTION_KEYS: readonly string[] = [
   'path',
   'worker',
   'localWaves',
+  'seabed',
 ];
 const SUN_POSITION_KEYS: readonly string[] = ['elevation', 'azimuth', 'direction'];
 
@@ -119,6 +127,8 @@ export class Ocean extends Object3D<OceanEventMap> {
   private rms: { spectra: readonly InitialSpectrum[]; value: number } | null = null;
   private summary: { parameters: Readonly<SimulationParameters>; value: SeaStateSummary } | null = null;
   private period: { parameters: Readonly<SimulationParameters>; value: number } | null = null;
+  /** The seabed and its shoaling factors (shore.ts), owned here. */
+  private readonly shore = new Shore();
 
   constructor(
     private readonly renderer: WebGLRenderer,
@@ -147,12 +157,37 @@ export class Ocean extends Object3D<OceanEventMap> {
         choppiness: sim.parameters.choppiness,
         foam: sim.foam.texture,
         surfaceBound: 6 * this.heightRms + 1,
-        waterHeightAt: (x: number, z: number) => heightAt(sim.layers, sim.parameters.choppiness, this.currentTime, x, z),
+        waterHeightAt: (x: number, z: number) => heightAt(sim.layers, sim.parameters.choppiness, this.currentTime, x, z, this.preparedShore()),
+        shore: this.preparedShore(),
       }),
       shading,
     );
     this.skyBackground = new SkyBackground(this.sky, { backgroundWater: this.surface.backgroundWater, deepWater: this.surface.material.uniforms.scatterColor });
     this.add(this.surface, this.skyBackground);
+    if (options.seabed !== undefined && options.seabed !== null) this.setSeabed(options.seabed);
+  }
+
+  /**
+   * Puts a sea floor under part of the sea, or takes it away (null). Given as a function
+   * `{ depthAt(x, z), bounds: [xMin, zMin, xMax, zMax], resolution? }` (metres below mean sea
+   * level, negative over land), a heightfield `{ depths, width, height, bounds }` (width × height
+   * depths, x fastest), or three.js meshes `{ meshes, bounds?, resolution? }` drawn from above into a
+   * depth map. Outside its bounds the sea is as deep as the `depth` option. Over it each cascade's
+   * waves shoal by linear wave theory and break where they would be higher than 0.78 × the depth
+   * (McCowan), with surf foam; the queries and floating bodies follow the same surface
+   * (docs/shores.md). A bad seabed throws a ParameterError naming what is wrong and the last good
+   * one stays.
+   */
+  setSeabed(seabed: Seabed | null): void {
+    this.checkAlive('setSeabed');
+    this.shore.setMap(seabed === null ? null : createSeabedMap(seabed, this.renderer));
+  }
+
+  /** Depth of the sea floor (m below mean sea level; negative over land) under (x, z): the seabed's, else the `depth` option. */
+  depthAt(x: number, z: number): number {
+    this.checkAlive('depthAt');
+    checkCoordinates('depthAt(x, z)', x, z);
+    return this.shore.active ? this.shore.depthAt(x, z) : this.simulation.parameters.depth;
   }
 
   /**
@@ -357,7 +392,7 @@ export class Ocean extends Object3D<OceanEventMap> {
   heightAt(x: number, z: number): number {
     this.checkAlive('heightAt');
     checkCoordinates('heightAt(x, z)', x, z);
-    return heightAt(this.simulation.layers, this.simulation.parameters.choppiness, this.currentTime, x, z);
+    return heightAt(this.simulation.layers, this.simulation.parameters.choppiness, this.currentTime, x, z, this.preparedShore());
   }
 
   /**
@@ -368,7 +403,7 @@ export class Ocean extends Object3D<OceanEventMap> {
   normalAt(x: number, z: number, target = new Vector3()): Vector3 {
     this.checkAlive('normalAt');
     checkCoordinates('normalAt(x, z)', x, z);
-    return normalAt(this.simulation.layers, this.simulation.parameters.choppiness, this.currentTime, x, z, target);
+    return normalAt(this.simulation.layers, this.simulation.parameters.choppiness, this.currentTime, x, z, target, this.preparedShore());
   }
 
   /**
@@ -379,7 +414,7 @@ export class Ocean extends Object3D<OceanEventMap> {
   velocityAt(x: number, z: number, target = new Vector3()): Vector3 {
     this.checkAlive('velocityAt');
     checkCoordinates('velocityAt(x, z)', x, z);
-    return velocityAt(this.simulation.layers, this.simulation.parameters.choppiness, this.currentTime, x, z, target);
+    return velocityAt(this.simulation.layers, this.simulation.parameters.choppiness, this.currentTime, x, z, target, this.preparedShore());
   }
 
   /**
@@ -389,7 +424,8 @@ export class Ocean extends Object3D<OceanEventMap> {
   heightsAt<T extends WritableNumbers>(xz: ArrayLike<number>, out: T): T {
     const count = this.checkBatch('heightsAt', xz, out, 1);
     const { layers, parameters } = this.simulation;
-    for (let p = 0; p < count; p++) out[p] = heightAt(layers, parameters.choppiness, this.currentTime, xz[2 * p], xz[2 * p + 1]);
+    const shore = this.preparedShore();
+    for (let p = 0; p < count; p++) out[p] = heightAt(layers, parameters.choppiness, this.currentTime, xz[2 * p], xz[2 * p + 1], shore);
     return out;
   }
 
@@ -416,6 +452,15 @@ export class Ocean extends Object3D<OceanEventMap> {
     this.skyBackground.dispose();
     this.sky.dispose();
     this.simulation.dispose();
+    this.shore.dispose();
+  }
+
+  /** The shore for the queries and the surface, its factors made for the layers of now; null without a seabed. */
+  private preparedShore(): Shore | null {
+    if (!this.shore.active) return null;
+    const sim = this.simulation;
+    this.shore.prepare(sim.layers, sim.cascades, sim.parameters.depth, 4 * this.heightRms);
+    return this.shore;
   }
 
   /**
@@ -461,8 +506,9 @@ export class Ocean extends Object3D<OceanEventMap> {
   private batchOfVectors<T extends WritableNumbers>(method: string, query: typeof normalAt, xz: ArrayLike<number>, out: T): T {
     const count = this.checkBatch(method, xz, out, 3);
     const { layers, parameters } = this.simulation;
+    const shore = this.preparedShore();
     for (let p = 0; p < count; p++) {
-      query(layers, parameters.choppiness, this.currentTime, xz[2 * p], xz[2 * p + 1], scratch);
+      query(layers, parameters.choppiness, this.currentTime, xz[2 * p], xz[2 * p + 1], scratch, shore);
       out[3 * p] = scratch.x;
       out[3 * p + 1] = scratch.y;
       out[3 * p + 2] = scratch.z;
