@@ -50,7 +50,8 @@ vec3 breaking(float height, float depth) {
   float knee = BREAKING_KNEE * limit;
   float size = abs(height);
   if (size <= knee) return vec3(height, 1.0, 0.0);
-  float t = tanh((size - knee) / (limit - knee));
+  // tanh of a large argument overflows in some GLSL implementations (e^x/e^x): 1 from 10 on in float32.
+  float t = tanh(min((size - knee) / (limit - knee), 10.0));
   return vec3(sign(height) * (knee + (limit - knee) * t), 1.0 - t * t, t);
 }
 
@@ -59,6 +60,6 @@ vec3 breaking(float height, float depth) {
 // wave breaks (d < Hs/0.78): on a gentle beach it is wide, under a cliff a thin line.
 float shoreFoam(float depth, float surf) {
   if (depth <= 0.0) return 0.0;
-  float band = 0.6 * (1.0 - smoothstep(0.0, breakerDepth, depth));
-  return clamp(surf + band, 0.0, 1.0);
+  float band = 1.0 - smoothstep(0.0, breakerDepth, depth);
+  return clamp(0.6 * surf + 0.3 * band * band, 0.0, 1.0);
 }

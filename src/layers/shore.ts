@@ -16,7 +16,7 @@ const DEEP = 1e30;
 
 export class Shore {
   private map: SeabedMap | null = null;
-  private table = new Float32Array(SHOALING_DEPTHS);
+  private table = new Float32Array(0);
   private tableTexture: DataTexture | null = null;
   private depths: ShoalingDepths = shoalingDepths(1, Infinity);
   private preparedFor: { layers: readonly WaveLayer[] | null; referenceDepth: number } = { layers: null, referenceDepth: NaN };

@@ -144,7 +144,7 @@ export function breakingHeight(height: number, depth: number): number {
   const knee = BREAKING_KNEE * limit;
   const size = Math.abs(height);
   if (size <= knee) return height;
-  const bent = knee + (limit - knee) * Math.tanh((size - knee) / (limit - knee));
+  const bent = knee + (limit - knee) * Math.tanh(Math.min((size - knee) / (limit - knee), 10)); // as shoaling.glsl
   return height < 0 ? -bent : bent;
 }
 
@@ -155,6 +155,6 @@ export function breakingSlope(height: number, depth: number): number {
   const knee = BREAKING_KNEE * limit;
   const size = Math.abs(height);
   if (size <= knee) return 1;
-  const t = Math.tanh((size - knee) / (limit - knee));
+  const t = Math.tanh(Math.min((size - knee) / (limit - knee), 10));
   return 1 - t * t;
 }
