@@ -146,6 +146,8 @@ export class Ocean extends Object3D<OceanEventMap> {
       { elevation: DEFAULT_SUN.sunElevation, azimuth: DEFAULT_SUN.sunAzimuth },
       'sunDirection',
     );
+    // Checked before anything is allocated: a bad seabed throws with nothing to free.
+    this.shore.setMap(options.seabed === undefined || options.seabed === null ? null : createSeabedMap(options.seabed, renderer));
     this.simulation = new OceanSimulation(renderer, simulationParameters, { path: options.path, worker: options.worker, localWaves: options.localWaves });
     this.sky = new SkyEnvironment(renderer, { sunElevation: sun.elevation, sunAzimuth: sun.azimuth });
     const sim = this.simulation;
@@ -164,7 +166,6 @@ export class Ocean extends Object3D<OceanEventMap> {
     );
     this.skyBackground = new SkyBackground(this.sky, { backgroundWater: this.surface.backgroundWater, deepWater: this.surface.material.uniforms.scatterColor });
     this.add(this.surface, this.skyBackground);
-    if (options.seabed !== undefined && options.seabed !== null) this.setSeabed(options.seabed);
   }
 
   /**
