@@ -73,6 +73,8 @@ export type { SceneRefraction } from './render/sceneRefraction';
 export { farPlaneFor, fitFarPlane } from './runtime/farPlane';
 export type { AdaptiveQuality, QualityLevel, QualitySetting, QualityStep } from './runtime/adaptiveQuality';
 export type { SeaStateSummary, WritableNumbers } from './ocean';
+export type { Seabed, SeabedBounds, SeabedFunction, SeabedHeightfield, SeabedMap, SeabedMeshes } from './layers/seabed';
+export type { Shore } from './layers/shore';
 export type { WaveNumberSpectrum, SpectrumOrigin } from './spectrum/initialSpectrum';
 export type { SeaStateParameters } from './spectrum/seaState';
 export type { PhillipsParameters } from './spectrum/phillips';

@@ -21,11 +21,13 @@ import type { LocalWaves } from './layers/localWaves';
 import type { WaveLayer } from './layers/waveLayer';
 import { checkThreeRelease, checkWebGLRenderer } from './fft/threeInternals';
 import { heightAt, normalAt, velocityAt } from './layers/surfaceQuery';
-import { surfaceHeightAt, surfaceHeightsAt, surfaceNormalAt, surfaceVectorsAt, surfaceVelocityAt, warmUpQueries } from './oceanQueries';
+import { checkCoordinates, surfaceHeightAt, surfaceHeightsAt, surfaceNormalAt, surfaceVectorsAt, surfaceVelocityAt, warmUpQueries } from './oceanQueries';
 import { SeaStatistics } from './oceanStatistics';
 import { checkOptionNames, DisposedError, isOptionsObject, optionAliases } from './parameters/options';
 import { ParameterError, SIMULATION_OPTIONS, type SimulationParameters } from './parameters/parameters';
 import { DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ShadingChanges, type ShadingOptions } from './parameters/sceneOptions';
+import { createSeabedMap, type Seabed } from './layers/seabed';
+import { Shore } from './layers/shore';
 
 export interface OceanOptions extends Partial<SimulationParameters>, OceanShadingOptions, SimulationOptions {
   /** Sun elevation above the horizon in degrees, [-90, 90]. @defaultValue 30 */
@@ -38,6 +40,11 @@ export interface OceanOptions extends Partial<SimulationParameters>, OceanShadin
    * @defaultValue undefined (the sun is at sunElevation and sunAzimuth)
    */
   sunDirection?: SunDirection;
+  /**
+   * The sea floor under part of the sea (see Ocean.setSeabed): waves shoal and break over it.
+   * @defaultValue null (the sea is as deep as `depth` everywhere)
+   */
+  seabed?: Seabed | null;
 }
 
 /** Where the sun is, for Ocean.setSun: degrees (a missing one stays as it is), or a direction instead. */
@@ -68,6 +75,7 @@ const OCEAN_OPTION_KEYS: readonly string[] = [
   'path',
   'worker',
   'localWaves',
+  'seabed',
 ];
 const SUN_POSITION_KEYS: readonly string[] = ['elevation', 'azimuth', 'direction'];
 
@@ -111,6 +119,8 @@ export class Ocean extends Object3D<OceanEventMap> {
   private disposed = false;
   /** heightRms, seaState and repeatPeriod, each computed once per set of spectra or parameters. */
   private readonly statistics = new SeaStatistics(() => this.simulation);
+  /** The seabed and its shoaling factors (shore.ts), owned here. */
+  private readonly shore = new Shore();
 
   constructor(
     private readonly renderer: WebGLRenderer,
@@ -128,6 +138,8 @@ export class Ocean extends Object3D<OceanEventMap> {
       { elevation: DEFAULT_SUN.sunElevation, azimuth: DEFAULT_SUN.sunAzimuth },
       'sunDirection',
     );
+    // Checked before anything is allocated: a bad seabed throws with nothing to free.
+    this.shore.setMap(options.seabed === undefined || options.seabed === null ? null : createSeabedMap(options.seabed, renderer));
     this.simulation = new OceanSimulation(renderer, simulationParameters, { path: options.path, worker: options.worker, localWaves: options.localWaves });
     this.sky = new SkyEnvironment(renderer, { sunElevation: sun.elevation, sunAzimuth: sun.azimuth });
     const sim = this.simulation;
@@ -140,13 +152,37 @@ export class Ocean extends Object3D<OceanEventMap> {
         foam: sim.foam.texture,
         windSpeed: sim.parameters.windSpeed,
         surfaceBound: 6 * this.heightRms + 1,
-        waterHeightAt: (x: number, z: number) => heightAt(sim.layers, sim.parameters.choppiness, this.currentTime, x, z),
+        waterHeightAt: (x: number, z: number) => heightAt(sim.layers, sim.parameters.choppiness, this.currentTime, x, z, this.preparedShore()),
+        shore: this.preparedShore(),
       }),
       shading,
     );
     this.skyBackground = new SkyBackground(this.sky, { backgroundWater: this.surface.backgroundWater, deepWater: this.surface.material.uniforms.scatterColor });
     this.surface.seaObjects.push(this.skyBackground);
     this.add(this.surface, this.skyBackground);
+  }
+
+  /**
+   * Puts a sea floor under part of the sea, or takes it away (null). Given as a function
+   * `{ depthAt(x, z), bounds: [xMin, zMin, xMax, zMax], resolution? }` (metres below mean sea
+   * level, negative over land), a heightfield `{ depths, width, height, bounds }` (width × height
+   * depths, x fastest), or three.js meshes `{ meshes, bounds?, resolution? }` drawn from above into a
+   * depth map. Outside its bounds the sea is as deep as the `depth` option. Over it each cascade's
+   * waves shoal by linear wave theory and break where they would be higher than 0.78 × the depth
+   * (McCowan), with surf foam; the queries and floating bodies follow the same surface
+   * (docs/shores.md). A bad seabed throws a ParameterError naming what is wrong and the last good
+   * one stays.
+   */
+  setSeabed(seabed: Seabed | null): void {
+    this.checkAlive('setSeabed');
+    this.shore.setMap(seabed === null ? null : createSeabedMap(seabed, this.renderer));
+  }
+
+  /** Depth of the sea floor (m below mean sea level; negative over land) under (x, z): the seabed's, else the `depth` option. */
+  depthAt(x: number, z: number): number {
+    this.checkAlive('depthAt');
+    checkCoordinates('depthAt(x, z)', x, z);
+    return this.shore.active ? this.shore.depthAt(x, z) : this.simulation.parameters.depth;
   }
 
   /**
@@ -335,7 +371,7 @@ export class Ocean extends Object3D<OceanEventMap> {
    */
   heightAt(x: number, z: number): number {
     this.checkAlive('heightAt');
-    return surfaceHeightAt('heightAt', this.simulation, this.currentTime, x, z);
+    return surfaceHeightAt('heightAt', this.simulation, this.preparedShore(), this.currentTime, x, z);
   }
 
   /**
@@ -345,7 +381,7 @@ export class Ocean extends Object3D<OceanEventMap> {
    */
   normalAt(x: number, z: number, target = new Vector3()): Vector3 {
     this.checkAlive('normalAt');
-    return surfaceNormalAt('normalAt', this.simulation, this.currentTime, x, z, target);
+    return surfaceNormalAt('normalAt', this.simulation, this.preparedShore(), this.currentTime, x, z, target);
   }
 
   /**
@@ -355,7 +391,7 @@ export class Ocean extends Object3D<OceanEventMap> {
    */
   velocityAt(x: number, z: number, target = new Vector3()): Vector3 {
     this.checkAlive('velocityAt');
-    return surfaceVelocityAt('velocityAt', this.simulation, this.currentTime, x, z, target);
+    return surfaceVelocityAt('velocityAt', this.simulation, this.preparedShore(), this.currentTime, x, z, target);
   }
 
   /**
@@ -364,19 +400,19 @@ export class Ocean extends Object3D<OceanEventMap> {
    */
   heightsAt<T extends WritableNumbers>(xz: ArrayLike<number>, out: T): T {
     this.checkAlive('heightsAt');
-    return surfaceHeightsAt('heightsAt', this.simulation, this.currentTime, xz, out);
+    return surfaceHeightsAt('heightsAt', this.simulation, this.preparedShore(), this.currentTime, xz, out);
   }
 
   /** normalAt for many points: three numbers (x, y, z) per point of `xz` in `out`. Allocates nothing. */
   normalsAt<T extends WritableNumbers>(xz: ArrayLike<number>, out: T): T {
     this.checkAlive('normalsAt');
-    return surfaceVectorsAt('normalsAt', normalAt, this.simulation, this.currentTime, xz, out);
+    return surfaceVectorsAt('normalsAt', normalAt, this.simulation, this.preparedShore(), this.currentTime, xz, out);
   }
 
   /** velocityAt for many points: three numbers (m/s) per point of `xz` in `out`. Allocates nothing. */
   velocitiesAt<T extends WritableNumbers>(xz: ArrayLike<number>, out: T): T {
     this.checkAlive('velocitiesAt');
-    return surfaceVectorsAt('velocitiesAt', velocityAt, this.simulation, this.currentTime, xz, out);
+    return surfaceVectorsAt('velocitiesAt', velocityAt, this.simulation, this.preparedShore(), this.currentTime, xz, out);
   }
 
   /**
@@ -392,6 +428,15 @@ export class Ocean extends Object3D<OceanEventMap> {
     this.skyBackground.dispose();
     this.sky.dispose();
     this.simulation.dispose();
+    this.shore.dispose();
+  }
+
+  /** The shore for the queries and the surface, its factors made for the layers of now; null without a seabed. */
+  private preparedShore(): Shore | null {
+    if (!this.shore.active) return null;
+    const sim = this.simulation;
+    this.shore.prepare(sim.layers, sim.cascades, sim.parameters.depth, 4 * this.heightRms);
+    return this.shore;
   }
 
   /** Once per page, at the first update of its first Ocean: compiles the query code (oceanQueries.ts). */

@@ -6,6 +6,7 @@
 import { Vector3 } from 'three';
 import type { Ocean, WritableNumbers } from './ocean';
 import type { OceanSimulation } from './layers/oceanSimulation';
+import type { Shore } from './layers/shore';
 import { heightAt, normalAt, velocityAt } from './layers/surfaceQuery';
 import { ParameterError } from './parameters/parameters';
 
@@ -25,28 +26,31 @@ const scratch = { x: 0, y: 0, z: 0 };
 /** Whether an Ocean of this page has run the queries once (warmUpQueries). */
 let queryCodeWarm = false;
 
-/** Height of the surface at (x, z) at time t (s); a ParameterError naming `method` for bad coordinates. */
-export function surfaceHeightAt(method: string, { layers, parameters }: OceanSimulation, t: number, x: number, z: number): number {
+/**
+ * Height of the surface at (x, z) at time t (s), shoaled over `shore`'s seabed (null: none); a
+ * ParameterError naming `method` for bad coordinates.
+ */
+export function surfaceHeightAt(method: string, { layers, parameters }: OceanSimulation, shore: Shore | null, t: number, x: number, z: number): number {
   checkCoordinates(`${method}(x, z)`, x, z);
-  return heightAt(layers, parameters.choppiness, t, x, z);
+  return heightAt(layers, parameters.choppiness, t, x, z, shore);
 }
 
 /** Upward unit normal of the surface over (x, z) at time t, in `target`. */
-export function surfaceNormalAt(method: string, { layers, parameters }: OceanSimulation, t: number, x: number, z: number, target: Vector3): Vector3 {
+export function surfaceNormalAt(method: string, { layers, parameters }: OceanSimulation, shore: Shore | null, t: number, x: number, z: number, target: Vector3): Vector3 {
   checkCoordinates(`${method}(x, z)`, x, z);
-  return normalAt(layers, parameters.choppiness, t, x, z, target);
+  return normalAt(layers, parameters.choppiness, t, x, z, target, shore);
 }
 
 /** Velocity (m/s) of the surface over (x, z) at time t, in `target`. */
-export function surfaceVelocityAt(method: string, { layers, parameters }: OceanSimulation, t: number, x: number, z: number, target: Vector3): Vector3 {
+export function surfaceVelocityAt(method: string, { layers, parameters }: OceanSimulation, shore: Shore | null, t: number, x: number, z: number, target: Vector3): Vector3 {
   checkCoordinates(`${method}(x, z)`, x, z);
-  return velocityAt(layers, parameters.choppiness, t, x, z, target);
+  return velocityAt(layers, parameters.choppiness, t, x, z, target, shore);
 }
 
 /** Heights at the points x0, z0, x1, z1, … of `xz`, one per point into `out` (returned). */
-export function surfaceHeightsAt<T extends WritableNumbers>(method: string, { layers, parameters }: OceanSimulation, t: number, xz: ArrayLike<number>, out: T): T {
+export function surfaceHeightsAt<T extends WritableNumbers>(method: string, { layers, parameters }: OceanSimulation, shore: Shore | null, t: number, xz: ArrayLike<number>, out: T): T {
   const count = checkBatch(method, xz, out, 1);
-  for (let p = 0; p < count; p++) out[p] = heightAt(layers, parameters.choppiness, t, xz[2 * p], xz[2 * p + 1]);
+  for (let p = 0; p < count; p++) out[p] = heightAt(layers, parameters.choppiness, t, xz[2 * p], xz[2 * p + 1], shore);
   return out;
 }
 
@@ -55,13 +59,14 @@ export function surfaceVectorsAt<T extends WritableNumbers>(
   method: string,
   query: typeof normalAt,
   { layers, parameters }: OceanSimulation,
+  shore: Shore | null,
   t: number,
   xz: ArrayLike<number>,
   out: T,
 ): T {
   const count = checkBatch(method, xz, out, 3);
   for (let p = 0; p < count; p++) {
-    query(layers, parameters.choppiness, t, xz[2 * p], xz[2 * p + 1], scratch);
+    query(layers, parameters.choppiness, t, xz[2 * p], xz[2 * p + 1], scratch, shore);
     out[3 * p] = scratch.x;
     out[3 * p + 1] = scratch.y;
     out[3 * p + 2] = scratch.z;
@@ -95,7 +100,7 @@ function isCoordinate(value: unknown): boolean {
 }
 
 /** Throws a ParameterError naming `method` unless x and z are coordinates the queries answer for. */
-function checkCoordinates(method: string, x: number, z: number): void {
+export function checkCoordinates(method: string, x: number, z: number): void {
   if (!isCoordinate(x) || !isCoordinate(z)) throw new ParameterError(method, [x, z], `finite coordinates ${WITHIN_RANGE}`);
 }
 

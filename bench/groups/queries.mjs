@@ -1,7 +1,8 @@
 // A group of `npm run bench` (bench/run.mjs):
 //
 //   queries      1000 points in one heightsAt / velocitiesAt call from the page's main thread, the
-//                fields for the time already computed (firstCallMs: the call that computes them).
+//                fields for the time already computed (firstCallMs: the call that computes them);
+//                heightsAt again over a seabed (a 1:50 beach under the points: shoaling and breaking).
 import { withTimeout } from '../lib/browser.mjs';
 import { emit, log } from '../lib/output.mjs';
 import { BROWSER_STEP_TIMEOUT_MS, CASCADE_N } from '../lib/settings.mjs';

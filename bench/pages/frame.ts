@@ -116,7 +116,14 @@ async function queries(options: { resolution: number; points: number; rounds: nu
   const out = new Float64Array(3 * options.points);
   const result: Record<string, { firstMs: number; samples: number[] }> = {};
   try {
-    for (const [name, query] of [['heightsAt', () => ocean.heightsAt(xz, out)], ['velocitiesAt', () => ocean.velocitiesAt(xz, out)]] as const) {
+    // The last row over a 1:50 beach under the points (docs/shores.md): what a seabed adds to a query.
+    const beach = { depthAt: (x: number) => (x + 100) / 50, bounds: [-200, -100, 100, 100] as const };
+    for (const [name, query] of [
+      ['heightsAt', () => ocean.heightsAt(xz, out)],
+      ['velocitiesAt', () => ocean.velocitiesAt(xz, out)],
+      ['heightsAt over a seabed', () => ocean.heightsAt(xz, out)],
+    ] as const) {
+      if (name === 'heightsAt over a seabed') ocean.setSeabed(beach);
       ocean.update(12.5 + Object.keys(result).length);
       let start = performance.now();
       query();

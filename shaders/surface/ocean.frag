@@ -15,6 +15,11 @@
 #if SCENE_REFRACTIONS == 1
 #include "surface/sceneRefraction.glsl"
 #endif
+#ifdef SEABED
+varying float vShoaling[LAYER_COUNT];  // see ocean.vert
+varying float vBreakingSlope;
+varying float vShoreFoam;
+#endif
 #include <fog_pars_fragment>
 #include <logdepthbuf_pars_fragment>
 
@@ -91,14 +96,25 @@ void main() {
   vec4 derivatives = vec4(0.0);  // Σ (∂h/∂x, ∂h/∂z, ∂Dx/∂x, ∂Dz/∂z)
   #pragma unroll_loop_start
   for (int i = 0; i < LAYER_COUNT - 1; i++) {
+#ifdef SEABED
+    derivatives += vShoaling[ i ] * texture(tLayerDerivatives[ i ], vLayerUv[ i ]);
+#else
     derivatives += texture(tLayerDerivatives[ i ], vLayerUv[ i ]);
+#endif
   }
   #pragma unroll_loop_end
   // The largest layer, blended from its two copies (src/layers/patchBlend.ts).
   vec2 largestUv = vLayerUv[LAYER_COUNT - 1];
+#ifdef SEABED
+  // Each layer shoals by its factor and the height's slopes follow the breaking limit (shoaling.glsl).
+  derivatives += vShoaling[LAYER_COUNT - 1] * (vBlend.x * texture(tLayerDerivatives[LAYER_COUNT - 1], largestUv) +
+                                               vBlend.y * texture(tLayerDerivatives[LAYER_COUNT - 1], largestUv + copyOffset));
+  derivatives.xy = (derivatives.xy + vBlendSlope) * vBreakingSlope;
+#else
   derivatives += vBlend.x * texture(tLayerDerivatives[LAYER_COUNT - 1], largestUv) +
                  vBlend.y * texture(tLayerDerivatives[LAYER_COUNT - 1], largestUv + copyOffset);
   derivatives.xy += vBlendSlope;
+#endif
   derivatives.zw *= choppiness;
   float dxDz = vCrossDerivative;
   vec3 normal = choppyNormal(derivatives, dxDz);
@@ -160,6 +176,9 @@ void main() {
   // patch in a triangle's straight edge); farther, the vertex stage's, at the vertex's mip level.
   float foamShown = foamPatternShown(restPerPixelX, restPerPixelY);
   float pixelFoam = blendedFoam(vBlend, texture(tFoam, largestUv).r, texture(tFoam, largestUv + copyOffset).r);
+#ifdef SEABED
+  pixelFoam = min(pixelFoam + vShoreFoam, 1.0);
+#endif
   float foamCoverage = max(mix(vFoam, pixelFoam, foamShown), edgeFoam);
   // Most of the sea has no foam: it pays for the foam's light only where there is (the pattern, two
   // texture lookups, is taken above for every pixel: its fwidth needs the neighbours).

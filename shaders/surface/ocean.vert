@@ -6,6 +6,14 @@
 // view space (its translation, −eye, is what was already subtracted, in double precision in JS).
 #include "surface/horizonGrid.glsl"
 #include "surface/waveLayers.glsl"
+#ifdef SEABED
+#include "surface/shoaling.glsl"
+// Each layer's shoaling factor at the rest point, for the fragment stage's slopes; the breaking
+// limit's dη_limited/dη there; the foam the shore adds (shoaling.glsl).
+varying float vShoaling[LAYER_COUNT];
+varying float vBreakingSlope;
+varying float vShoreFoam;
+#endif
 
 // Texture coordinate of each ring centre in each layer, (centre / size + ½ texel) mod 1, computed in
 // double precision in JS (RingFrames): [ring · LAYER_COUNT + layer].
@@ -54,22 +62,48 @@ void main() {
   GridPoint point = horizonGridPoint();
   vec4 blend = blendWeights(point.fromEye);
   vec4 displacement = vec4(0.0);
+#ifdef SEABED
+  float depth = seabedDepth(point.fromEye);
+#endif
   #pragma unroll_loop_start
   for (int i = 0; i < LAYER_COUNT; i++) {
     vLayerUv[ i ] = ringLayerUvOrigins[point.frameRing * LAYER_COUNT + UNROLLED_LOOP_INDEX] + point.fromCentre / layerSizes[ i ];
+#ifdef SEABED
+    vShoaling[ i ] = shoalingFactor(UNROLLED_LOOP_INDEX, depth);
+    displacement += vShoaling[ i ] * textureLod(tLayerDisplacement[ i ], vLayerUv[ i ], point.lod + layerLodBias[ i ]);
+#else
     displacement += textureLod(tLayerDisplacement[ i ], vLayerUv[ i ], point.lod + layerLodBias[ i ]);
+#endif
   }
   #pragma unroll_loop_end
   // The largest layer went in once with weight 1: make it cos θ·P(x) + sin θ·P(x + o).
   float largestLod = point.lod + layerLodBias[LAYER_COUNT - 1];
   vec4 first = textureLod(tLayerDisplacement[LAYER_COUNT - 1], vLayerUv[LAYER_COUNT - 1], largestLod);
   vec4 copy = textureLod(tLayerDisplacement[LAYER_COUNT - 1], vLayerUv[LAYER_COUNT - 1] + copyOffset, largestLod);
+#ifdef SEABED
+  // The largest layer's copies, and their blend's slope, shoal with it.
+  float largestShoaling = vShoaling[LAYER_COUNT - 1];
+  displacement += largestShoaling * ((blend.x - 1.0) * first + blend.y * copy);
+#else
   displacement += (blend.x - 1.0) * first + blend.y * copy;
+#endif
   vBlend = blend.xy;
   vFoam = blendedFoam(blend.xy, textureLod(tFoam, vLayerUv[LAYER_COUNT - 1], largestLod).r,
                       textureLod(tFoam, vLayerUv[LAYER_COUNT - 1] + copyOffset, largestLod).r);
   vBlendSlope = (blend.x * copy.y - blend.y * first.y) * blend.zw;
+#ifdef SEABED
+  vBlendSlope *= largestShoaling;
+#endif
   displacement.xzw *= choppiness;
+#ifdef SEABED
+  // Breaking is limited by the water column under the surface point, where the rest point moved to.
+  float columnDepth = seabedDepth(point.fromEye + displacement.xz);
+  vec3 broken = breaking(displacement.y, columnDepth);
+  displacement.y = broken.x;
+  vBreakingSlope = broken.y;
+  vShoreFoam = shoreFoam(columnDepth, broken.z);
+  vFoam = clamp(vFoam + vShoreFoam, 0.0, 1.0);
+#endif
   vCrossDerivative = displacement.w;
   vec3 fromEye = vec3(point.fromEye.x, -cameraPosition.y, point.fromEye.y) + displacement.xyz;
   vFromEye = fromEye;

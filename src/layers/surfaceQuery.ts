@@ -11,9 +11,22 @@
  * worker finished a frame ago, cascadeQueryFields.ts); the displacement is carried to the time asked by its
  * velocity, D(t) ≈ D(t0) + (t − t0)·∂D/∂t (first order; the derivatives and velocities are those at
  * t0, a frame old at most LONGEST_CARRY).
+ *
+ * Over a seabed (shore.ts) each layer's fields are multiplied by its shoaling factor F_layer(d) at
+ * the rest point and the height is then limited by breaking at the depth under the surface point (src/spectrum/shoaling.ts), exactly as
+ * shaders/surface/shoaling.glsl does for the drawn surface. The factors' own change over the sea
+ * (the bottom's slope) is left out of the derivatives, on the GPU too.
  */
+import { breakingHeight, breakingSlope } from '../spectrum/shoaling';
 import { blendAngle, COPY_OFFSET, largestPeriodicLayer, patchBlendUniforms } from './patchBlend';
 import type { LayerFrame, LayerQueryFields, WaveLayer } from './waveLayer';
+
+/** The depth under a point and each layer's shoaling factor at a depth (shore.ts); null: no seabed. */
+export interface SurfaceShore {
+  depthAt(x: number, z: number): number;
+  /** F of layers[layer] at depth d. */
+  layerFactor(layer: number, depth: number): number;
+}
 
 /** The summed fields at one rest point: displacement, slopes and the Jacobian terms of the choppy map. */
 interface SurfaceSample {
@@ -31,6 +44,8 @@ interface SurfaceSample {
   /** The rest point these are the fields of (set by surfacePointOver). */
   restX: number;
   restZ: number;
+  /** dη_limited/dη of the breaking limit there (1 without a seabed; set by surfacePointOver). */
+  breaking: number;
 }
 
 /**
@@ -39,8 +54,8 @@ interface SurfaceSample {
  * Newton's method with the Jacobian of that map. Where the surface folds over itself (Jacobian ≤ 0,
  * breaking crests) several points land on (x, z) and the one nearest the start is returned.
  */
-export function heightAt(layers: readonly WaveLayer[], choppiness: number, t: number, x: number, z: number): number {
-  return surfacePointOver(layers, choppiness, t, x, z, FIELDS.height).height;
+export function heightAt(layers: readonly WaveLayer[], choppiness: number, t: number, x: number, z: number, shore: SurfaceShore | null = null): number {
+  return surfacePointOver(layers, choppiness, t, x, z, FIELDS.height, shore).height;
 }
 
 /**
@@ -57,8 +72,9 @@ export function normalAt<T extends { x: number; y: number; z: number }>(
   x: number,
   z: number,
   out: T,
+  shore: SurfaceShore | null = null,
 ): T {
-  const s = surfacePointOver(layers, choppiness, t, x, z, FIELDS.all);
+  const s = surfacePointOver(layers, choppiness, t, x, z, FIELDS.all, shore);
   // ∂P/∂x0 = (ax, ay, az), ∂P/∂z0 = (bx, by, bz)
   const ax = 1 + choppiness * s.dxdx;
   const ay = s.slopeX;
@@ -91,9 +107,12 @@ export function velocityAt<T extends { x: number; y: number; z: number }>(
   x: number,
   z: number,
   out: T,
+  shore: SurfaceShore | null = null,
 ): T {
-  const rest = surfacePointOver(layers, choppiness, t, x, z, FIELDS.newton);
+  // Over a seabed the breaking limit's slope at the height there scales the vertical velocity (chain rule).
+  const rest = surfacePointOver(layers, choppiness, t, x, z, shore === null ? FIELDS.newton : FIELDS.height, shore);
   const blended = prepareBlend(layers);
+  const depth = shore === null ? 0 : shore.depthAt(rest.restX, rest.restZ);
   velocity.x = velocity.y = velocity.z = 0;
   for (let i = 0; i < layers.length; i++) {
     const fields = layers[i].queryFields(t);
@@ -101,16 +120,17 @@ export function velocityAt<T extends { x: number; y: number; z: number }>(
     const at = layerTexel(layers[i].frame, n, rest.restX, rest.restZ);
     if (at === null) continue;
     const texels = fields.velocities();
+    const factor = shore === null ? 1 : shore.layerFactor(i, depth);
     if (i !== blended) {
-      addVelocity(texels, n, at.u, at.v, 1);
+      addVelocity(texels, n, at.u, at.v, factor);
       continue;
     }
     const theta = blendAngle(blendUniforms, rest.restX, rest.restZ);
-    addVelocity(texels, n, at.u, at.v, Math.cos(theta));
-    addVelocity(texels, n, at.u + COPY_OFFSET[0] * n, at.v + COPY_OFFSET[1] * n, Math.sin(theta));
+    addVelocity(texels, n, at.u, at.v, factor * Math.cos(theta));
+    addVelocity(texels, n, at.u + COPY_OFFSET[0] * n, at.v + COPY_OFFSET[1] * n, factor * Math.sin(theta));
   }
   out.x = choppiness * velocity.x;
-  out.y = velocity.y;
+  out.y = rest.breaking * velocity.y;
   out.z = choppiness * velocity.z;
   return out;
 }
@@ -139,7 +159,7 @@ function layerTexel(frame: LayerFrame, resolution: number, x: number, z: number)
   return texel;
 }
 
-const sample: SurfaceSample = { dx: 0, height: 0, dz: 0, slopeX: 0, slopeZ: 0, dxdx: 0, dzdz: 0, dxdz: 0, dzdx: 0, restX: 0, restZ: 0 };
+const sample: SurfaceSample = { dx: 0, height: 0, dz: 0, slopeX: 0, slopeZ: 0, dxdx: 0, dzdz: 0, dxdz: 0, dzdx: 0, restX: 0, restZ: 0, breaking: 1 };
 
 /**
  * The summed fields at the rest point x0 that the choppy displacement moves onto (x, z),
@@ -147,12 +167,12 @@ const sample: SurfaceSample = { dx: 0, height: 0, dz: 0, slopeX: 0, slopeZ: 0, d
  * folds over itself (Jacobian ≤ 0, breaking crests) several points land on (x, z) and the one
  * nearest the start is taken. The result is shared: read it before the next query.
  */
-function surfacePointOver(layers: readonly WaveLayer[], choppiness: number, t: number, x: number, z: number, what: number): SurfaceSample {
+function surfacePointOver(layers: readonly WaveLayer[], choppiness: number, t: number, x: number, z: number, what: number, shore: SurfaceShore | null): SurfaceSample {
   const blended = prepareBlend(layers);
   let restX = x;
   let restZ = z;
   for (let iteration = 0; iteration < 20; iteration++) {
-    sampleLayers(layers, blended, t, restX, restZ, sample, FIELDS.newton);
+    sampleLayers(layers, blended, t, restX, restZ, sample, FIELDS.newton, shore);
     const residualX = restX + choppiness * sample.dx - x;
     const residualZ = restZ + choppiness * sample.dz - z;
     if (Math.abs(residualX) + Math.abs(residualZ) < 1e-6) break; // a micrometre
@@ -177,9 +197,20 @@ function surfacePointOver(layers: readonly WaveLayer[], choppiness: number, t: n
       restZ -= 0.5 * residualZ;
     }
   }
-  if (what !== FIELDS.newton) sampleLayers(layers, blended, t, restX, restZ, sample, what);
+  if (what !== FIELDS.newton) sampleLayers(layers, blended, t, restX, restZ, sample, what, shore);
   sample.restX = restX;
   sample.restZ = restZ;
+  sample.breaking = 1;
+  if (shore !== null && what !== FIELDS.newton) {
+    // McCowan's limit (shoaling.ts) for the water column under the surface point (x, z), as
+    // shoaling.glsl draws it; the slopes follow its derivative.
+    const depth = shore.depthAt(x, z);
+    const raw = sample.height;
+    sample.height = breakingHeight(raw, depth);
+    sample.breaking = breakingSlope(raw, depth);
+    sample.slopeX *= sample.breaking;
+    sample.slopeZ *= sample.breaking;
+  }
   return sample;
 }
 
@@ -211,8 +242,9 @@ const blendFor: { layers: readonly WaveLayer[] | null; blended: number; size: nu
  * Sums every layer's fields at the rest point (x, z) into `out`, `what` of them (FIELDS); `blended`
  * from prepareBlend. With FIELDS.all the slopes and Jacobian terms include the blend's own change.
  */
-function sampleLayers(layers: readonly WaveLayer[], blended: number, t: number, x: number, z: number, out: SurfaceSample, what: number): void {
+function sampleLayers(layers: readonly WaveLayer[], blended: number, t: number, x: number, z: number, out: SurfaceSample, what: number, shore: SurfaceShore | null): void {
   const derivatives = what === FIELDS.all;
+  const depth = shore === null ? 0 : shore.depthAt(x, z);
   out.dx = out.height = out.dz = out.slopeX = out.slopeZ = out.dxdx = out.dzdz = out.dxdz = out.dzdx = 0;
   for (let i = 0; i < layers.length; i++) {
     if (what === FIELDS.newton && !layers[i].movesSideways) continue; // nothing Newton's steps need
@@ -222,15 +254,17 @@ function sampleLayers(layers: readonly WaveLayer[], blended: number, t: number, 
     if (at === null) continue;
     const { size } = layers[i].frame;
     const fields = carried(query, t);
+    // The layer's shoaling factor (1 without a seabed: every product below is then exact).
+    const factor = shore === null ? 1 : shore.layerFactor(i, depth);
     placeTaps(primary, resolution, at.u, at.v);
     if (i !== blended) {
-      addFields(what, fields, primary, 1, resolution / size, out);
+      addFields(what, fields, primary, factor, resolution / size, out);
       continue;
     }
     placeTaps(copy, resolution, at.u + COPY_OFFSET[0] * resolution, at.v + COPY_OFFSET[1] * resolution);
     const theta = blendAngle(blendUniforms, x, z);
-    const cos = Math.cos(theta);
-    const sin = Math.sin(theta);
+    const cos = factor * Math.cos(theta);
+    const sin = factor * Math.sin(theta);
     addFields(what, fields, primary, cos, resolution / size, out);
     addFields(what, fields, copy, sin, resolution / size, out);
     if (!derivatives) continue; // Newton's steps do without them (they converge to the same point)

@@ -6,6 +6,7 @@
  */
 import { Color, DoubleSide, ShaderMaterial, UniformsLib, UniformsUtils, Vector2, Vector3, type Texture } from 'three';
 import { COPY_OFFSET, largestPeriodicLayer, patchBlendUniforms } from '../layers/patchBlend';
+import type { Shore } from '../layers/shore';
 import type { WaveLayer } from '../layers/waveLayer';
 import { mergeOptions, ParameterError } from '../parameters/options';
 import { DEFAULT_SHADING, SHADING_MODES, SHADING_OPTIONS, type ShadingChanges, type ShadingOptions } from '../parameters/sceneOptions';
@@ -147,6 +148,23 @@ export class OceanMaterial extends ShaderMaterial {
       u.layerLodBias.value[i] = Math.round(Math.log2(finest / (layer.frame.size / layer.frame.resolution)));
     });
     this.blendedSize = layers[layers.length - 1].frame.size;
+  }
+
+  /**
+   * Draws the waves over this shore's seabed (shore.ts, shaders/surface/shoaling.glsl), or without
+   * one (null, or a shore without a seabed: the SEABED define is off and the shaders are as if
+   * there were no shore). Before every draw, with the eye's (x, z) in metres.
+   */
+  bindShore(shore: Shore | null, eyeX: number, eyeZ: number): void {
+    const on = shore?.active === true;
+    if (on !== (this.defines.SEABED !== undefined)) {
+      if (on) this.defines.SEABED = '';
+      else delete this.defines.SEABED;
+      this.needsUpdate = true;
+    }
+    if (!on) return;
+    Object.assign(this.uniforms, shore.uniforms); // the shore's own stable objects: assigning again changes nothing
+    shore.setEye(eyeX, eyeZ);
   }
 
   /**

@@ -6,6 +6,7 @@
  * under it (SceneRefraction, for the `refractions: 'scene'` option).
  */
 import { Mesh, Vector2, Vector3, type Camera, type Object3D, type Scene, type Texture, type WebGLRenderer } from 'three';
+import type { Shore } from '../layers/shore';
 import type { WaveLayer } from '../layers/waveLayer';
 import { ParameterError } from '../parameters/options';
 import { cellsPerRingForViewport, createHorizonGridGeometry, farEdgeDistance, FEWEST_CELLS_PER_RING, MOST_CELLS_PER_RING, RingFrames } from './horizonGrid';
@@ -48,6 +49,8 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
       surfaceBound?: number;
       /** The water's height over a point (Ocean.heightAt), asked when the eye is between crest and trough heights. */
       waterHeightAt?: (x: number, z: number) => number;
+      /** The seabed the waves feel (shore.ts), prepared for these layers; null or left out: none. */
+      shore?: Shore | null;
     },
     shading: OceanShadingOptions = {},
   ) {
@@ -123,9 +126,10 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
   placeRings(camera: Camera): void {
     const position = camera.getWorldPosition(this.cameraPosition);
     const u = this.material.uniforms;
-    const { layers, choppiness, foam, surfaceBound, waterHeightAt, windSpeed } = this.waves();
+    const { layers, choppiness, foam, surfaceBound, waterHeightAt, windSpeed, shore } = this.waves();
     this.material.bindLayers(layers, choppiness, foam, windSpeed);
     this.material.setEye(position.x, position.z);
+    this.material.bindShore(shore ?? null, position.x, position.z);
     this.rings.update(position.x, position.z, position.y, layers, this.cellsPerRing);
     u.ringFrames.value = this.rings.frames;
     u.ringLayerUvOrigins.value = this.rings.uvOrigins;
