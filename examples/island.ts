@@ -36,8 +36,8 @@ const ocean = new Ocean(renderer, {
   sunAzimuth: 60,
 });
 const island = new Island();
-// The seabed: this is the one place where the ocean is given the island's sea floor, island.seabed
-// (Ocean.setSeabed, issue 25 item 3), so that its waves shoal and break on the beach and the reef.
+// The island's sea floor (docs/shores.md): the waves shoal and break on the beach and the reef.
+ocean.setSeabed(island.seabed);
 scene.add(ocean, island);
 
 // The land is lit by the ocean's sun and sky (src/objects/sunLight.ts).

@@ -45,9 +45,10 @@ export class SceneObjects {
     if (choice === 'island') {
       this.current = new Island();
       this.scene.add(this.current);
-      // The seabed: here the ocean is given the island's sea floor, this.current.seabed (Ocean.setSeabed,
-      // issue 25 item 3); the branch below, which takes the island away, gives it back the open sea's.
+      // Its sea floor: the waves shoal and break on the beach and the reef (docs/shores.md).
+      this.ocean.setSeabed(this.current.seabed);
     } else if (this.current) {
+      this.ocean.setSeabed(null); // the open sea's floor, as deep as the depth option
       this.current.removeFromParent();
       this.current.dispose();
       this.current = null;
