@@ -12,7 +12,7 @@ import { geometryCheck } from './geometryCapture';
 import { composerCheck, depthBufferCheck, fogCheck, foamBrightened, holesBelowHorizon, nightCheck, probe, snellWindow } from './pictures';
 import { batchQueries, heightAtCheck, horizonCheck, localWavesQueriedOnGpu, queriesWithLocalWaves } from './queries';
 import { queriesFromWorkers, warmUpLeavesNoTrace, workerFault } from './queryWorkers';
-import { current, pixel, render, renderer, setUniformEnvironment, setup, sunDirection, view } from './oceanPage';
+import { current, pixel, render, renderer, resetPage, setUniformEnvironment, setup, sunDirection, view } from './oceanPage';
 
 const harness = {
   /** For tests of the Ocean's API. */
@@ -24,6 +24,8 @@ const harness = {
   Vector3,
   Scene,
   PerspectiveCamera,
+  /** The page as it loaded, for the next test on a shared page. */
+  reset: resetPage,
   setup,
   view,
   setUniformEnvironment,

@@ -33,7 +33,9 @@ document.body.appendChild(renderer.domElement);
 
 export const scene = new Scene();
 export const camera = new PerspectiveCamera(55, width / height, 0.5, 2e7);
-export const sunDirection = new Vector3(0.3, 0.5, -0.8).normalize();
+/** The sun's direction as the page loads. */
+const FIRST_SUN = new Vector3(0.3, 0.5, -0.8).normalize();
+export const sunDirection = FIRST_SUN.clone();
 
 // A uniform-colour environment (for shading probes), in the RGBM encoding the surface decodes
 // (shaders/sky/rgbm.glsl): in a float cube, (colour / range, 1) decodes exactly to the colour.
@@ -49,7 +51,9 @@ export function setUniformEnvironment(colour: [number, number, number]): void {
   renderer.setClearColor(0x000000);
   scene.background = new Color().fromArray(colour); // the same sky, for pixels the sea leaves
 }
-setUniformEnvironment([0.5, 0.6, 0.7]);
+/** The sky's colour as the page loads. */
+const FIRST_ENVIRONMENT: [number, number, number] = [0.5, 0.6, 0.7];
+setUniformEnvironment(FIRST_ENVIRONMENT);
 export const environment = { value: uniformCube.texture };
 
 /**
@@ -116,4 +120,27 @@ export function withOcean<T>(changes: OceanOptions, use: (ocean: Ocean) => T): T
     current.surface = null;
     ocean.dispose();
   }
+}
+
+/**
+ * Sets the page back as it loaded, for the next test on a page tests share: no sea (setup's is
+ * freed), no fog, the first sky and sun, the camera at the origin looking along −z, and the
+ * renderer's tone mapping and colour space three's defaults.
+ */
+export function resetPage(): void {
+  current.surface?.removeFromParent();
+  current.surface?.dispose();
+  current.simulation?.dispose();
+  current.simulation = null;
+  current.surface = null;
+  current.surfaceBound = undefined;
+  scene.fog = null;
+  sunDirection.copy(FIRST_SUN);
+  setUniformEnvironment(FIRST_ENVIRONMENT);
+  camera.position.set(0, 0, 0);
+  camera.quaternion.identity();
+  camera.updateMatrixWorld();
+  renderer.setRenderTarget(null);
+  renderer.toneMapping = NoToneMapping;
+  renderer.outputColorSpace = SRGBColorSpace;
 }
