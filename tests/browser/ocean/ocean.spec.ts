@@ -1,4 +1,5 @@
 import { expect, test, type Browser, type Page } from '@playwright/test';
+import { sharedPages } from '../shared/sharedPages';
 import { ALSO_ON_OLDEST_THREE } from '../shared/threeRange';
 
 async function openOcean(page: Page, width = 640, height = 360): Promise<void> {
@@ -10,32 +11,15 @@ async function openOcean(page: Page, width = 640, height = 360): Promise<void> {
 }
 
 // The tests that need no fresh page share one per canvas size, set back as it loaded before each
-// (window.ocean.reset: no sea, the first sky and sun, the camera at the origin); a page load and
-// its modules cost more than most tests here. Tests keep a page of their own where a page's
-// first Ocean matters (the queries' warm-up), where they listen to the page's console, or where
-// they load other modules (three's WebGPU build).
-const sharedPages = new Map<string, Page>();
-async function sharedOcean(browser: Browser, width = 640, height = 360): Promise<Page> {
-  const size = `${width}x${height}`;
-  let page = sharedPages.get(size);
-  if (!page) {
-    page = await browser.newPage();
-    await openOcean(page, width, height);
-    sharedPages.set(size, page);
-  }
-  await page.evaluate(() => window.ocean.reset());
-  return page;
-}
-async function closeSharedPages(): Promise<void> {
-  for (const page of sharedPages.values()) await page.close();
-  sharedPages.clear();
-}
-// After a failure the next test starts on a new page: a page left mid-evaluate, or in a state a
-// failed test left, fails no other test.
-test.afterEach(async ({ browser: _browser }, testInfo) => {
-  if (testInfo.status !== testInfo.expectedStatus) await closeSharedPages();
-});
-test.afterAll(closeSharedPages);
+// (window.ocean.reset: no sea, the first sky and sun, the camera at the origin). Tests keep a page
+// of their own where a page's first Ocean matters (the queries' warm-up, the queries from the
+// workers), where they listen to the page's console, or where they load other modules (three's
+// WebGPU build).
+const sharedOceanPage = sharedPages(
+  (page, size) => openOcean(page, ...(size.split('x').map(Number) as [number, number])),
+  (page) => page.evaluate(() => window.ocean.reset()),
+);
+const sharedOcean = (browser: Browser, width = 640, height = 360) => sharedOceanPage(browser, `${width}x${height}`);
 
 test.describe('horizon geometry, read back from the real vertex shader', () => {
   // Cameras several patches from the origin (of every cascade: 13.7, 79.3, 457 m), low and high.
@@ -203,8 +187,8 @@ test('heightAt(x, z) is the height of the rendered surface over (x, z), choppy d
 });
 
 for (const [path, jitter] of [['gpu', 0], ['gpu', 0.005], ['js', 0.005]] as const) {
-  test(`the queries read fields the workers computed, not the main thread, and agree with the fields of the time asked: ${path} path, steps of 1/60 s ± ${jitter * 1000} ms`, async ({ browser }) => {
-    const page = await sharedOcean(browser);
+  test(`the queries read fields the workers computed, not the main thread, and agree with the fields of the time asked: ${path} path, steps of 1/60 s ± ${jitter * 1000} ms`, async ({ page }) => {
+    await openOcean(page); // a page of its own: it counts the fields the main thread computes while its workers start
     const result = await page.evaluate(([p, j]) => window.ocean.queriesFromWorkers(p, j), [path, jitter] as const);
     console.log(`queries from workers, ${result.path}, jitter ${jitter * 1000} ms: started after ${result.warmUpFrames} frames (${result.computedInWarmUp} computed here, ${result.computedByQueries} of them in the queries); then over 20 frames computed here ${result.computedHere} times, worst error ${(result.worstError * 1000).toFixed(3)} mm (RMS height ${result.rms.toFixed(3)} m); after a new wind ${(result.worstAfterChange * 1000).toFixed(3)} mm (RMS height ${result.rmsAfterChange.toFixed(3)} m)`);
     expect(result.path).toBe(path === 'gpu' ? 'gpu-rgba32f' : 'js-worker');
