@@ -1,4 +1,5 @@
-import { expect, test, type Page } from '@playwright/test';
+import { expect, test, type Browser, type Page } from '@playwright/test';
+import { sharedPages } from '../shared/sharedPages';
 import { ALSO_ON_OLDEST_THREE } from '../shared/threeRange';
 
 async function openOcean(page: Page, width = 640, height = 360): Promise<void> {
@@ -8,6 +9,17 @@ async function openOcean(page: Page, width = 640, height = 360): Promise<void> {
   await expect(page).toHaveTitle('ready');
   expect(errors).toEqual([]);
 }
+
+// The tests that need no fresh page share one per canvas size, set back as it loaded before each
+// (window.ocean.reset: no sea, the first sky and sun, the camera at the origin). Tests keep a page
+// of their own where a page's first Ocean matters (the queries' warm-up, the queries from the
+// workers), where they listen to the page's console, or where they load other modules (three's
+// WebGPU build).
+const sharedOceanPage = sharedPages(
+  (page, size) => openOcean(page, ...(size.split('x').map(Number) as [number, number])),
+  (page) => page.evaluate(() => window.ocean.reset()),
+);
+const sharedOcean = (browser: Browser, width = 640, height = 360) => sharedOceanPage(browser, `${width}x${height}`);
 
 test.describe('horizon geometry, read back from the real vertex shader', () => {
   // Cameras several patches from the origin (of every cascade: 13.7, 79.3, 457 m), low and high.
@@ -19,8 +31,8 @@ test.describe('horizon geometry, read back from the real vertex shader', () => {
     ['2 m up, 10 000 km from the origin', [1e7 + 917.3, 2, 1e7 - 561.8], [1e7 + 1000, 0, 1e7 - 700]],
   ];
   for (const [name, position, target] of cameras) {
-    test(`each vertex is its rest point plus (Dx, h, Dz) of the simulation there, ${name}`, name === '2 m up' ? ALSO_ON_OLDEST_THREE : {}, async ({ page }) => {
-      await openOcean(page);
+    test(`each vertex is its rest point plus (Dx, h, Dz) of the simulation there, ${name}`, name === '2 m up' ? ALSO_ON_OLDEST_THREE : {}, async ({ browser }) => {
+      const page = await sharedOcean(browser);
       const results = await page.evaluate(
         ([position, target]) => {
           window.ocean.setup({ seed: 7, windSpeed: 14 });
@@ -53,8 +65,8 @@ test.describe('horizon geometry, read back from the real vertex shader', () => {
     });
   }
 
-  test('the same world point gets the same position whichever way the camera moved', async ({ page }) => {
-    await openOcean(page);
+  test('the same world point gets the same position whichever way the camera moved', async ({ browser }) => {
+    const page = await sharedOcean(browser);
     const maxDifference = await page.evaluate(() => {
       window.ocean.setup({ seed: 3 });
       const positions = new Map<string, number>();
@@ -75,8 +87,8 @@ test.describe('horizon geometry, read back from the real vertex shader', () => {
 });
 
 test.describe('shading', () => {
-  test('a flat sea under a uniform white sky reflects exactly the Fresnel reflectance', ALSO_ON_OLDEST_THREE, async ({ page }) => {
-    await openOcean(page);
+  test('a flat sea under a uniform white sky reflects exactly the Fresnel reflectance', ALSO_ON_OLDEST_THREE, async ({ browser }) => {
+    const page = await sharedOcean(browser);
     // Pixels down the middle column, from near the horizon to straight below a tilted camera.
     const pixels: [number, number][] = [0, 10, 20, 30, 45, 60, 90, 130, 180, 240, 300, 359].map((y) => [320, y]);
     const samples = await page.evaluate((pixels) => {
@@ -124,8 +136,8 @@ test.describe('the sea reaches the horizon', () => {
     ['at the panel\'s extremes (30 m/s, choppiness 4), 40 m up looking down 35°', 30, [500, 40, 300], [560, 0, 280], 4],
   ];
   for (const [name, windSpeed, position, target, choppiness = 1] of [...views, ...extremes]) {
-    test(`no gap below the horizon: ${name}`, async ({ page }) => {
-      await openOcean(page);
+    test(`no gap below the horizon: ${name}`, async ({ browser }) => {
+      const page = await sharedOcean(browser);
       const result = await page.evaluate(
         ([windSpeed, position, target, choppiness]) => {
           window.ocean.setup({ seed: 11, windSpeed, choppiness, foamAmount: 0 });
@@ -142,8 +154,8 @@ test.describe('the sea reaches the horizon', () => {
   }
 });
 
-test('whitecaps show as white water in a strong wind, and not at all in a calm', async ({ page }) => {
-  await openOcean(page);
+test('whitecaps show as white water in a strong wind, and not at all in a calm', async ({ browser }) => {
+  const page = await sharedOcean(browser);
   const brightened = await page.evaluate(() =>
     [20, 3].map((windSpeed) => {
       window.ocean.view([0, 12, 0], [60, 0, -80]);
@@ -176,7 +188,7 @@ test('heightAt(x, z) is the height of the rendered surface over (x, z), choppy d
 
 for (const [path, jitter] of [['gpu', 0], ['gpu', 0.005], ['js', 0.005]] as const) {
   test(`the queries read fields the workers computed, not the main thread, and agree with the fields of the time asked: ${path} path, steps of 1/60 s ± ${jitter * 1000} ms`, async ({ page }) => {
-    await openOcean(page);
+    await openOcean(page); // a page of its own: it counts the fields the main thread computes while its workers start
     const result = await page.evaluate(([p, j]) => window.ocean.queriesFromWorkers(p, j), [path, jitter] as const);
     console.log(`queries from workers, ${result.path}, jitter ${jitter * 1000} ms: started after ${result.warmUpFrames} frames (${result.computedInWarmUp} computed here, ${result.computedByQueries} of them in the queries); then over 20 frames computed here ${result.computedHere} times, worst error ${(result.worstError * 1000).toFixed(3)} mm (RMS height ${result.rms.toFixed(3)} m); after a new wind ${(result.worstAfterChange * 1000).toFixed(3)} mm (RMS height ${result.rmsAfterChange.toFixed(3)} m)`);
     expect(result.path).toBe(path === 'gpu' ? 'gpu-rgba32f' : 'js-worker');
@@ -206,7 +218,7 @@ for (const [path, jitter] of [['gpu', 0], ['gpu', 0.005], ['js', 0.005]] as cons
 
 for (const path of ['gpu', 'js'] as const) {
   test(`the first update's warm-up queries leave no trace: no query worker, no velocities asked, until the app queries (${path} path)`, async ({ page }) => {
-    await openOcean(page);
+    await openOcean(page); // its first Ocean warms the queries up
     const result = await page.evaluate((p) => window.ocean.warmUpLeavesNoTrace(p), path);
     console.log(`warm-up, ${path} path: ${result.warmUpQueries} queries reached the ${result.cascades} cascades in the first update; workers ${result.workersBefore} before the app's first query, ${result.workersAfter} after; requests for velocities ${result.velocityRequestsBefore} before, ${result.velocityRequestsAfter} after; its height ${(result.heightError * 1000).toFixed(3)} mm from the exact one (RMS ${result.rms.toFixed(3)} m)`);
     // It ran (the page's first Ocean): heightAt, normalAt and velocityAt each asked every cascade.
@@ -225,8 +237,8 @@ for (const path of ['gpu', 'js'] as const) {
   });
 }
 
-test('the queries read the local waves on the GPU without waiting for it: read back behind a fence, a frame or two late, then the same', async ({ page }) => {
-  await openOcean(page);
+test('the queries read the local waves on the GPU without waiting for it: read back behind a fence, a frame or two late, then the same', async ({ browser }) => {
+  const page = await sharedOcean(browser);
   const result = await page.evaluate(() => window.ocean.localWavesQueriedOnGpu());
   console.log(`local waves on the GPU, queried every frame: ${result.waited} read-backs waited after the first, ${result.notWaited} did not; then ${result.worstDifference} m from the fields read back at once (local field up to ${result.largestLocal.toFixed(3)} m)`);
   expect(result.path).toBe('gpu');
@@ -236,16 +248,16 @@ test('the queries read the local waves on the GPU without waiting for it: read b
   expect(result.worstDifference).toBeLessThan(1e-5); // the same fields once the last read-back is in
 });
 
-test('heightAt and normalAt include the local waves: after a stone the height differs from the cascades\' by the local field', async ({ page }) => {
-  await openOcean(page);
+test('heightAt and normalAt include the local waves: after a stone the height differs from the cascades\' by the local field', async ({ browser }) => {
+  const page = await sharedOcean(browser);
   const result = await page.evaluate(() => window.ocean.queriesWithLocalWaves());
   expect(result.largestLocal).toBeGreaterThan(0.05); // rings of centimetres around the stone
   expect(result.worstHeight).toBeLessThan(1e-4); // float32 fields, summed in another order
   expect(result.normalsDiffer).toBe(true);
 });
 
-test('the batch queries (heightsAt, normalsAt, velocitiesAt) on the GPU path equal the JS path and the single-point queries', async ({ page }) => {
-  await openOcean(page);
+test('the batch queries (heightsAt, normalsAt, velocitiesAt) on the GPU path equal the JS path and the single-point queries', async ({ browser }) => {
+  const page = await sharedOcean(browser);
   const result = await page.evaluate(() => window.ocean.batchQueries());
   expect(result.largestSpeed).toBeGreaterThan(0.3); // the water moves (m/s)
   // The queries read the JS path's CPU fields on both paths: the same numbers (float32 out).
@@ -261,8 +273,8 @@ test('the batch queries (heightsAt, normalsAt, velocitiesAt) on the GPU path equ
   ]);
 });
 
-test('the sea honours scene.fog (Fog and FogExp2) as three\'s materials do: far water takes the fog colour, near water hardly', ALSO_ON_OLDEST_THREE, async ({ page }) => {
-  await openOcean(page);
+test('the sea honours scene.fog (Fog and FogExp2) as three\'s materials do: far water takes the fog colour, near water hardly', ALSO_ON_OLDEST_THREE, async ({ browser }) => {
+  const page = await sharedOcean(browser);
   const { near, far } = await page.evaluate(() => window.ocean.fogCheck());
   const [clearNear, clearFar] = [near[0], far[0]];
   // Magenta fog: red and blue rise, green falls. Fog from 40 m to 400 m: none at 20 m, all at 2 km.
@@ -277,8 +289,8 @@ test('the sea honours scene.fog (Fog and FogExp2) as three\'s materials do: far 
   expect(clearFar[1]).toBeGreaterThan(60); // without fog the far sea is not magenta
 });
 
-test('with a plain, a logarithmic or a reversed depth buffer the sea hides the submerged half of a floating box', ALSO_ON_OLDEST_THREE, async ({ page }) => {
-  await openOcean(page);
+test('with a plain, a logarithmic or a reversed depth buffer the sea hides the submerged half of a floating box', ALSO_ON_OLDEST_THREE, async ({ browser }) => {
+  const page = await sharedOcean(browser);
   const modes = await page.evaluate(() => window.ocean.depthBufferCheck());
   for (const { mode, supported, inForce, above, below } of modes) {
     console.log(`depth buffer ${mode}${inForce ? ' (in force)' : ' (not available here: plain depth in force)'}: box above the water ${above.join(',')}, below ${below.join(',')}`);
@@ -292,8 +304,8 @@ test('with a plain, a logarithmic or a reversed depth buffer the sea hides the s
   expect(modes.find((m) => m.mode === 'logarithmic')!.inForce).toBe(true);
 });
 
-test('inside an EffectComposer (RenderPass, then OutputPass for tone mapping and colour space) the picture is the plain render\'s', async ({ page }) => {
-  await openOcean(page);
+test('inside an EffectComposer (RenderPass, then OutputPass for tone mapping and colour space) the picture is the plain render\'s', async ({ browser }) => {
+  const page = await sharedOcean(browser);
   const result = await page.evaluate(() => window.ocean.composerCheck());
   const show = (rgb: number[]) => rgb.map((c) => c.toFixed(0)).join(',');
   console.log(`EffectComposer against renderer.render: mean difference ${result.meanDifference.toFixed(3)} levels, largest ${result.largestDifference}, ${result.over4} of ${result.channels} channel values over 4; composer's sky ${show(result.sky)}, sea ${show(result.sea)}`);
@@ -312,11 +324,11 @@ test('inside an EffectComposer (RenderPass, then OutputPass for tone mapping and
 
 test.describe('under water', () => {
   for (const ior of [1.333, 1.5]) {
-    test(`Snell's window: looking up from under a calm sea, the sky shows within asin(1/n) of the zenith (n = ${ior}, within 1°)`, async ({ page }) => {
+    test(`Snell's window: looking up from under a calm sea, the sky shows within asin(1/n) of the zenith (n = ${ior}, within 1°)`, async ({ browser }) => {
       // Snell's law at the water–air interface: light from the whole sky reaches the eye through a
       // cone of half-angle asin(n_air/n_water) (48.6° for water, 41.8° for n = 1.5); outside it the
       // surface reflects totally (Born & Wolf, "Principles of Optics", §1.5.4).
-      await openOcean(page, 512, 512);
+      const page = await sharedOcean(browser, 512, 512);
       const { edgeAngles, centreRed } = await page.evaluate((n) => window.ocean.snellWindow(n), ior);
       const expected = (Math.asin(1 / ior) * 180) / Math.PI;
       console.log(`Snell's window at n = ${ior}: edges at ${edgeAngles.map((a) => a.toFixed(2)).join(', ')}° (asin(1/n) = ${expected.toFixed(2)}°)`);
@@ -328,8 +340,8 @@ test.describe('under water', () => {
 });
 
 test.describe('the Ocean API', () => {
-  test('horizonDistanceFor(height) is valid before the first render and reaches the farthest vertex drawn', async ({ page }) => {
-    await openOcean(page);
+  test('horizonDistanceFor(height) is valid before the first render and reaches the farthest vertex drawn', async ({ browser }) => {
+    const page = await sharedOcean(browser);
     for (const [position, target] of [
       [[10, 12, -20], [60, 0, -80]],
       [[-300, 400, 250], [700, 400, -250]],
@@ -354,8 +366,8 @@ test.describe('the Ocean API', () => {
     }
   });
 
-  test('colours: a THREE.Color, a hex number, a CSS string or linear [r, g, b]; the British names are aliases', async ({ page }) => {
-    await openOcean(page);
+  test('colours: a THREE.Color, a hex number, a CSS string or linear [r, g, b]; the British names are aliases', async ({ browser }) => {
+    const page = await sharedOcean(browser);
     const result = await page.evaluate(() => {
       const { Ocean, Color, ParameterError, renderer } = window.ocean;
       const ocean = new Ocean(renderer, { resolution: 16, worker: false, scatterColour: '#1a6b80', causticColor: new Color(0x1a6b80) });
@@ -389,8 +401,8 @@ test.describe('the Ocean API', () => {
     expect(result.kept).toEqual([0.1, 0.2, 0.3]);
   });
 
-  test('the sun by direction: a Vector3 or [x, y, z] becomes elevation and azimuth and back; bad ones throw and keep the sun', async ({ page }) => {
-    await openOcean(page);
+  test('the sun by direction: a Vector3 or [x, y, z] becomes elevation and azimuth and back; bad ones throw and keep the sun', async ({ browser }) => {
+    const page = await sharedOcean(browser);
     const result = await page.evaluate(() => {
       const { Ocean, Vector3, ParameterError, renderer } = window.ocean;
       const sunOf = (ocean: InstanceType<typeof Ocean>) => ({
@@ -447,8 +459,8 @@ test.describe('the Ocean API', () => {
     expect([result.kept.elevation, result.kept.azimuth]).toEqual([25, 60]);
   });
 
-  test('setPath and the path option: ocean.path reports the preference, the path that runs and why, and the change is an event', async ({ page }) => {
-    await openOcean(page);
+  test('setPath and the path option: ocean.path reports the preference, the path that runs and why, and the change is an event', async ({ browser }) => {
+    const page = await sharedOcean(browser);
     const result = await page.evaluate(() => {
       const { Ocean, ParameterError, renderer } = window.ocean;
       const ocean = new Ocean(renderer, { resolution: 16, worker: false, localWaves: false, path: 'gpu' });
@@ -488,8 +500,8 @@ test.describe('the Ocean API', () => {
     expect(result.error).toBe('true: path must be \'auto\', \'gpu\' or \'js\'; got "cuda"');
   });
 
-  test('after dispose() every method and getter throws a DisposedError (a ParameterError), and so do its local waves; disposing twice is harmless', async ({ page }) => {
-    await openOcean(page);
+  test('after dispose() every method and getter throws a DisposedError (a ParameterError), and so do its local waves; disposing twice is harmless', async ({ browser }) => {
+    const page = await sharedOcean(browser);
     const result = await page.evaluate(() => {
       const { Ocean, ParameterError, DisposedError, renderer } = window.ocean;
       const ocean = new Ocean(renderer, { resolution: 16, worker: false });
@@ -552,8 +564,8 @@ test.describe('the Ocean API', () => {
   });
 });
 
-test('night: as the sun sets the sky and the sea darken together, and with the sun 10° down both are dark', async ({ page }) => {
-  await openOcean(page);
+test('night: as the sun sets the sky and the sea darken together, and with the sun 10° down both are dark', async ({ browser }) => {
+  const page = await sharedOcean(browser);
   const views = await page.evaluate(() => window.ocean.nightCheck([30, 0, -3, -6, -10]));
   for (const v of views) {
     console.log(`sun at ${v.elevation}°: sky luminance ${v.sky.toPrecision(3)} (brightest ${v.skyMax}), sea ${v.sea.toPrecision(3)} (brightest ${v.seaMax}), sea/sky ${(v.sea / v.sky).toPrecision(3)}`);

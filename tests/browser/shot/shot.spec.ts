@@ -6,8 +6,13 @@ import { join, resolve } from 'node:path';
 import { PNG } from 'pngjs';
 
 // `npm run shot` (scripts/shot.mjs) as a user runs it: a Node process that builds the app if
-// needed, starts its own headless Chromium and writes PNG files. Only the test that compares a
-// shot with the app itself (on the dev server, as app.spec.ts drives it) uses the page fixture.
+// needed, starts its own headless Chromium and writes PNG files. The tests that compare a shot
+// with the app itself (on the dev server, as app.spec.ts drives it) use the page fixture; so do
+// the tests of many scene options, which give the shot page (examples/shot.html, on the dev
+// server) the CLI's arguments as the CLI passes them (its own parseShotArguments and pageQuery)
+// in one browser, rather than a Chromium launched per case: the page reads every scene option
+// and writes every message (shot.mjs checks only its own options), and the process around it
+// (exit codes, the PNG file) is tested through the CLI by the other tests.
 
 const root = resolve(import.meta.dirname, '../../..');
 const script = join(root, 'scripts/shot.mjs');
@@ -127,36 +132,61 @@ test('--help lists the CLI\'s options and, from the option tables, every scene o
   expect(help.stdout).toContain('(default 13.7,79.3,457)');
 });
 
-/** Raw RGBA of a PNG, top row first. */
-function rgba(file: string): { width: number; height: number; data: Buffer } {
-  const png = PNG.sync.read(readFileSync(file));
-  return { width: png.width, height: png.height, data: png.data };
+/** Raw RGBA of a PNG (a file, or its bytes), top row first. */
+function rgba(png: string | Buffer): { width: number; height: number; data: Buffer } {
+  const { width, height, data } = PNG.sync.read(typeof png === 'string' ? readFileSync(png) : png);
+  return { width, height, data };
 }
 
-test('every scene option reaches the picture: spectrum, depth, fetch, patch sizes, colours, shading mode; --wind is --wind-speed', async () => {
+/** The CLI's own argument parsing and the query it gives its page (scripts/shot.mjs). */
+interface ShotCli {
+  parseShotArguments(argv: string[]): object;
+  pageQuery(options: object): URLSearchParams;
+}
+
+/**
+ * Opens the shot page on the test server with the query the CLI gives it for `args`, as the CLI
+ * opens it (a 320×180 viewport), and waits until it is done: its title 'ready' or 'error: …'.
+ */
+async function openShotPage(page: Page, args: string[]): Promise<{ title: string; error?: string; kind?: string }> {
+  const { parseShotArguments, pageQuery } = (await import('../../../scripts/shot.mjs')) as unknown as ShotCli;
+  await page.setViewportSize({ width: 320, height: 180 });
+  await page.goto(`/examples/shot.html?${pageQuery(parseShotArguments(args))}`);
+  await page.waitForFunction(() => document.title === 'ready' || document.title.startsWith('error'));
+  return page.evaluate(() => ({ title: document.title, error: window.shotError, kind: window.shotErrorKind }));
+}
+
+/** The PNG the CLI writes for `args` (a still): its page's frame at the first time, as scripts/shot.mjs reads it. */
+async function shotPicture(page: Page, args: string[]): Promise<Buffer> {
+  const { title, error } = await openShotPage(page, args);
+  expect(title, error).toBe('ready');
+  const dataUrl = await page.evaluate(async () => {
+    await window.renderFrame(window.shotStart!.t);
+    return document.querySelector('canvas')!.toDataURL('image/png');
+  });
+  return Buffer.from(dataUrl.slice(dataUrl.indexOf(',') + 1), 'base64');
+}
+
+test('every scene option reaches the picture: spectrum, depth, fetch, patch sizes, colours, shading mode; --wind is --wind-speed', async ({ page }) => {
   test.setTimeout(300_000);
   const base = ['--seed', '4', '--time', '3', '--size', '160x90'];
-  const run = async (name: string, args: string[], build = false) => {
-    const result = await shot([...base, ...args, '--out', join(dir, `${name}.png`), ...(build ? [] : ['--no-build'])]);
-    expect(result.code, result.stderr).toBe(0);
-    return readFileSync(join(dir, `${name}.png`));
-  };
-  const old = await run('old-names', ['--wind', '12'], true);
+  const run = (args: string[]) => shotPicture(page, [...base, ...args]);
+  const old = await run(['--wind', '12']);
   // The old name and the new one, with the default spectrum written out, give the same bytes.
-  expect((await run('new-names', ['--wind-speed', '12', '--spectrum', 'jonswap'])).equals(old)).toBe(true);
-  expect((await run('phillips', ['--wind-speed', '12', '--spectrum', 'phillips'])).equals(old)).toBe(false);
-  const shallow = await run('tma', ['--wind-speed', '12', '--spectrum', 'tma', '--depth', '4', '--fetch', '300', '--patch-sizes', '10,50,250']);
+  expect((await run(['--wind-speed', '12', '--spectrum', 'jonswap'])).equals(old)).toBe(true);
+  expect((await run(['--wind-speed', '12', '--spectrum', 'phillips'])).equals(old)).toBe(false);
+  const shallow = await run(['--wind-speed', '12', '--spectrum', 'tma', '--depth', '4', '--fetch', '300', '--patch-sizes', '10,50,250']);
   expect(shallow.equals(old)).toBe(false);
-  expect((await run('absorption', ['--wind-speed', '12', '--absorption', '0.05,0.05,0.05', '--sun-elevation', '-5'])).equals(old)).toBe(false);
+  expect((await run(['--wind-speed', '12', '--absorption', '0.05,0.05,0.05', '--sun-elevation', '-5'])).equals(old)).toBe(false);
   // A colour as CSS changes the picture; the default caustic colour under its British name does not.
-  expect((await run('scatter', ['--wind-speed', '12', '--scatter-color', '#1a6b80'])).equals(old)).toBe(false);
-  expect((await run('british', ['--wind-speed', '12', '--caustic-colour', '0.12,0.12,0.12'])).equals(old)).toBe(true);
+  expect((await run(['--wind-speed', '12', '--scatter-color', '#1a6b80'])).equals(old)).toBe(false);
+  expect((await run(['--wind-speed', '12', '--caustic-colour', '0.12,0.12,0.12'])).equals(old)).toBe(true);
 
   // The height mode (the report's Figure 3) shades the sea in greys: the lower half, all sea, is grey
   // but for the odd pixel where a folding crest leaves a sub-pixel gap onto the sky (the known fold
   // holes of issue "A package three.js users adopt"; 2 of 7200 pixels here): at most 1 in 1000.
-  await run('height', ['--wind-speed', '12', '--shading-mode', 'height']);
-  const { width, height, data } = rgba(join(dir, 'height.png'));
+  const { width, height, data } = rgba(await run(['--wind-speed', '12', '--shading-mode', 'height']));
+  expect([width, height]).toEqual([160, 90]);
   let colourful = 0;
   for (let y = Math.ceil(height / 2); y < height; y++) {
     for (let x = 0; x < width; x++) {
@@ -165,13 +195,13 @@ test('every scene option reaches the picture: spectrum, depth, fetch, patch size
     }
   }
   expect(colourful).toBeLessThanOrEqual((width * height) / 2 / 1000);
-  const full = rgba(join(dir, 'old-names.png')).data;
+  const full = rgba(old).data;
   const i = 4 * ((height - 3) * width + width / 2);
   expect(full[i + 2] - full[i]).toBeGreaterThan(10); // the same sea shaded in full is blue
 });
 
-test('a bad value or an unknown option comes back from the page: exit code 2, naming the option', async () => {
-  test.setTimeout(300_000);
+test('a bad value or an unknown option comes back from the page: exit code 2, naming the option', async ({ page }) => {
+  test.setTimeout(300_000); // may build the app first
   const cases: [string[], string][] = [
     [['--wind-sped', '12'], 'unknown option --wind-sped; did you mean --wind-speed?'],
     [['--sun-elevaton', '10'], 'did you mean --sun-elevation?'],
@@ -196,13 +226,21 @@ test('a bad value or an unknown option comes back from the page: exit code 2, na
     [['--paused'], '--paused is an app setting a shot has no use for'],
     [['--t', '3'], '--t is an app setting a shot has no use for: the time of a shot is --time <seconds>'],
   ];
+  // Every message from the page, given what the CLI gives it; each kind (an unknown option, a bad
+  // value, a bad link, an app setting) also through the CLI: exit code 2, the message, no file.
+  const throughCli = new Set(['--wind-sped', '--seed', '--query', '--target-fps']);
   let first = true;
   for (const [args, message] of cases) {
+    const error = await openShotPage(page, [...args, '--size', '16x16']);
+    expect(error.kind, `${args.join(' ')}: ${error.title}`).toBe('usage');
+    expect(error.error, args.join(' ')).toContain(message);
+    if (!throughCli.delete(args[0])) continue;
     const result = await shot([...args, '--size', '16x16', '--out', join(dir, 'never.png'), ...(first ? [] : ['--no-build'])]);
     first = false;
     expect(result.code, `${args.join(' ')}: ${result.stderr}`).toBe(2);
-    expect(result.stderr, args.join(' ')).toContain(message);
+    expect(result.stderr, args.join(' ')).toContain(`shot: ${error.error}\n`); // the page's message, word for word
   }
+  expect(throughCli.size).toBe(0);
   expect(existsSync(join(dir, 'never.png'))).toBe(false);
 });
 

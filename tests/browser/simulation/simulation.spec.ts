@@ -1,31 +1,40 @@
 import { readFileSync } from 'node:fs';
 import { resolve } from 'node:path';
-import { expect, test } from '@playwright/test';
+import { expect, test, type Page } from '@playwright/test';
 import { validateParameters } from '../../../src/parameters/parameters';
 import { createCascadeSpectra } from '../../../src/spectrum/initialSpectrum';
+import { sharedPages } from '../shared/sharedPages';
 import { ALSO_ON_OLDEST_THREE } from '../shared/threeRange';
 
-test.beforeEach(async ({ page }) => {
-  const errors: string[] = [];
-  page.on('pageerror', (error) => errors.push(error.message));
-  await page.goto('/tests/browser/simulation/simulation.html');
-  await expect(page).toHaveTitle('ready');
-  expect(errors).toEqual([]);
-});
+// One page for the file: the page holds a renderer and nothing else between tests (each test's
+// simulations are made and disposed in its own call), so there is nothing to set back.
+const simulationPage = sharedPages(
+  async (page: Page) => {
+    const errors: string[] = [];
+    page.on('pageerror', (error) => errors.push(error.message));
+    await page.goto('/tests/browser/simulation/simulation.html');
+    await expect(page).toHaveTitle('ready');
+    expect(errors).toEqual([]);
+  },
+  async () => {},
+);
 
-test('the page runs the three.js release the dev server was given (THREE_FFT_OCEAN_THREE, else the devDependency)', ALSO_ON_OLDEST_THREE, async ({ page }) => {
+test('the page runs the three.js release the dev server was given (THREE_FFT_OCEAN_THREE, else the devDependency)', ALSO_ON_OLDEST_THREE, async ({ browser }) => {
+  const page = await simulationPage(browser);
   // So a run against another release cannot pass on a server or a cached bundle of the devDependency.
   const servedThree = process.env.THREE_FFT_OCEAN_THREE ?? resolve(import.meta.dirname, '../../../node_modules/three');
   const { version } = JSON.parse(readFileSync(resolve(servedThree, 'package.json'), 'utf8')) as { version: string };
   expect(await page.evaluate(() => window.harness.threeRevision)).toBe(version.split('.')[1]);
 });
 
-test('the context offers float32 render targets (SwiftShader WebGL2)', async ({ page }) => {
+test('the context offers float32 render targets (SwiftShader WebGL2)', async ({ browser }) => {
+  const page = await simulationPage(browser);
   expect(await page.evaluate(() => window.harness.supportedPrecision())).toBe('float32');
 });
 
 for (const resolution of [16, 32, 64, 256, 512]) {
-  test(`GPU fields equal JS fields at N = ${resolution}, every cascade (RGBA32F, two times)`, resolution === 256 ? ALSO_ON_OLDEST_THREE : {}, async ({ page }) => {
+  test(`GPU fields equal JS fields at N = ${resolution}, every cascade (RGBA32F, two times)`, resolution === 256 ? ALSO_ON_OLDEST_THREE : {}, async ({ browser }) => {
+    const page = await simulationPage(browser);
     const { results, passCount } = await page.evaluate(
       (n) => window.harness.compareGpuWithJs({ resolution: n, seed: 7, windSpeed: 14 }, [3.25, 117.5]),
       resolution,
@@ -45,7 +54,8 @@ for (const resolution of [16, 32, 64, 256, 512]) {
   });
 }
 
-test('GPU fields in half floats (RGBA16F) follow the JS fields within half-float precision', ALSO_ON_OLDEST_THREE, async ({ page }) => {
+test('GPU fields in half floats (RGBA16F) follow the JS fields within half-float precision', ALSO_ON_OLDEST_THREE, async ({ browser }) => {
+  const page = await simulationPage(browser);
   const { results } = await page.evaluate(() => window.harness.compareGpuWithJs({ resolution: 256, seed: 7 }, [3.25], 'float16'));
   for (const channel of results.flatMap(({ displacement, derivatives }) => [...displacement, ...derivatives])) {
     // Half floats keep 11 significant bits (relative step 4.9e-4) through 9 passes; the field that
@@ -64,12 +74,14 @@ for (const [name, changes] of [
   ['TMA at a depth of 0.1 m', { resolution: 64, spectrum: 'tma', depth: 0.1, windSpeed: 60 }],
   ['Phillips at 60 m/s with Donelan–Banner spreading requested', { resolution: 64, spectrum: 'phillips', windSpeed: 60, spreading: 'donelan-banner' }],
 ] as const) {
-  test(`no NaN or Infinity reaches the GPU field textures with ${name}`, async ({ page }) => {
+  test(`no NaN or Infinity reaches the GPU field textures with ${name}`, async ({ browser }) => {
+    const page = await simulationPage(browser);
     expect(await page.evaluate((c) => window.harness.gpuNonFiniteCount(c, 17.5), changes)).toBe(0);
   });
 }
 
-test('the whitecap foam on the GPU equals the JS foam, through a warm-up and frame steps', ALSO_ON_OLDEST_THREE, async ({ page }) => {
+test('the whitecap foam on the GPU equals the JS foam, through a warm-up and frame steps', ALSO_ON_OLDEST_THREE, async ({ browser }) => {
+  const page = await simulationPage(browser);
   // 20 m/s at N = 128: coverage of a few per cent. The first time is a jump (warm-up from nothing
   // over 3τ, twelve FFT updates), the next three are frame steps, the last a jump back in time.
   const results = await page.evaluate(() =>
@@ -83,7 +95,8 @@ test('the whitecap foam on the GPU equals the JS foam, through a warm-up and fra
   }
 });
 
-test('the local waves on the GPU equal the JS solver, through a stone, a turning hull and a moving grid', ALSO_ON_OLDEST_THREE, async ({ page }) => {
+test('the local waves on the GPU equal the JS solver, through a stone, a turning hull and a moving grid', ALSO_ON_OLDEST_THREE, async ({ browser }) => {
+  const page = await simulationPage(browser);
   const results = await page.evaluate(() => window.harness.compareLocalWavesGpuWithJs(12));
   for (const { maxHeight, heightError, slopeError } of results) {
     expect(maxHeight).toBeGreaterThan(0.01);
@@ -95,14 +108,16 @@ test('the local waves on the GPU equal the JS solver, through a stone, a turning
   }
 });
 
-test('a hull on a path: after a jump in time its wake is run up to the time, the same bits whatever came before', async ({ page }) => {
+test('a hull on a path: after a jump in time its wake is run up to the time, the same bits whatever came before', async ({ browser }) => {
+  const page = await simulationPage(browser);
   const result = await page.evaluate(() => window.harness.localWavesAfterJumps(30));
   expect(result.finite).toBe(true);
   expect(result.maxHeight).toBeGreaterThan(0.02); // a wake, not a calm sea
   expect(result.identical).toBe(true);
 });
 
-test('bad input to the local waves raises errors naming it; a drop off the grid is ignored; nothing NaN', async ({ page }) => {
+test('bad input to the local waves raises errors naming it; a drop off the grid is ignored; nothing NaN', async ({ browser }) => {
+  const page = await simulationPage(browser);
   const { messages, droppedOutside, finite } = await page.evaluate(() => window.harness.localWavesBadInput());
   expect(messages).toEqual([
     expect.stringMatching(/^drop\(x, z\) must be finite coordinates in metres; got \[NaN, 0\]$/),
@@ -119,7 +134,8 @@ test('bad input to the local waves raises errors naming it; a drop off the grid 
   expect(finite).toBe(true);
 });
 
-test('the JS path in a Web Worker uploads the same fields as CpuWaveFields', async ({ page }) => {
+test('the JS path in a Web Worker uploads the same fields as CpuWaveFields', async ({ browser }) => {
+  const page = await simulationPage(browser);
   const result = await page.evaluate(() => window.harness.workerAgainstDirect({ resolution: 64, seed: 5 }, 42.5));
   expect(result.path).toBe('js-worker');
   expect(result.rms).toBeGreaterThan(0);
@@ -127,7 +143,8 @@ test('the JS path in a Web Worker uploads the same fields as CpuWaveFields', asy
   expect(result.maxDifference).toBe(0);
 });
 
-test('bad parameters raise errors naming them, and the simulation keeps its last good values', async ({ page }) => {
+test('bad parameters raise errors naming them, and the simulation keeps its last good values', async ({ browser }) => {
+  const page = await simulationPage(browser);
   const { messages, unchanged, nonFinite } = await page.evaluate(() => window.harness.badInput());
   expect(messages).toEqual([
     expect.stringMatching(/^windSpeed must be a speed in m\/s from 0 to 60; got NaN$/),
@@ -148,12 +165,14 @@ test('bad parameters raise errors naming them, and the simulation keeps its last
   expect(nonFinite).toBe(0);
 });
 
-test('a shader-only parameter (choppiness) rebuilds nothing; a spectrum parameter (wind) rebuilds the cascades', async ({ page }) => {
+test('a shader-only parameter (choppiness) rebuilds nothing; a spectrum parameter (wind) rebuilds the cascades', async ({ browser }) => {
+  const page = await simulationPage(browser);
   const result = await page.evaluate(() => window.harness.layersKeptAcross());
   expect(result).toEqual({ choppiness: true, windSpeed: false, choppinessApplied: 2.5 });
 });
 
-test('every GPU resource a simulation makes is freed by dispose (memory back to its baseline)', ALSO_ON_OLDEST_THREE, async ({ page }) => {
+test('every GPU resource a simulation makes is freed by dispose (memory back to its baseline)', ALSO_ON_OLDEST_THREE, async ({ browser }) => {
+  const page = await simulationPage(browser);
   const { before, during, after } = await page.evaluate(() => window.harness.memoryAfterCycles(12));
   // The GPU path's framebuffers (three.js's and the FFT's own layered ones) exist while it runs…
   expect(during).toBeGreaterThan((before as { framebuffers: number }).framebuffers + 4);
@@ -161,7 +180,8 @@ test('every GPU resource a simulation makes is freed by dispose (memory back to 
   expect(after).toEqual(before);
 });
 
-test('the initial spectrum is bit-identical in Node and in the browser for the same seed', async ({ page }) => {
+test('the initial spectrum is bit-identical in Node and in the browser for the same seed', async ({ browser }) => {
+  const page = await simulationPage(browser);
   const changes = { resolution: 64, seed: 7, windDirection: 33.3 };
   const inNode = createCascadeSpectra(validateParameters(changes)).flatMap((spectrum) => Array.from(new Uint32Array(spectrum.amplitudes.buffer)));
   const inBrowser = await page.evaluate((c) => window.harness.spectrumBits(c), changes);
