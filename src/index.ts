@@ -37,6 +37,7 @@ export { OceanSurface } from './render/oceanSurface';
 export { OceanMaterial, type OceanShadingOptions } from './render/oceanMaterial';
 export {
   SHADING_MODES,
+  REFLECTIONS,
   SHADING_OPTIONS,
   SUN_OPTIONS,
   DEFAULT_SHADING,
@@ -45,6 +46,7 @@ export {
   type ColorInput,
   type ShadingChanges,
   type ShadingMode,
+  type Reflections,
   type ShadingOptions,
   type SunOptions,
 } from './parameters/sceneOptions';

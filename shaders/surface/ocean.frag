@@ -2,12 +2,14 @@
 //   c = R·c_reflected + T·c_refracted + K·c_caustic  (+ the sun's specular glint),
 // with R the exact Fresnel reflectance, c_reflected / c_refracted sampled from the environment
 // cubemap along reflect() / refract(), the refracted light attenuated in the water volume, and K
-// Guardado's caustic term; then whitecap foam over it (foam.glsl).
+// Guardado's caustic term; then whitecap foam over it (foam.glsl). The reflection shows the scene's
+// objects too (sceneReflection.glsl) where the option reflections is 'scene'.
 #include "common/fresnel.glsl"
 #include "surface/choppyNormal.glsl"
 #include "surface/caustics.glsl"
 #include "surface/absorption.glsl"
 #include "sky/environmentLookup.glsl"
+#include "surface/sceneReflection.glsl"
 #include "surface/waveLayers.glsl"
 #include "surface/foam.glsl"
 #include "surface/fromBelow.glsl"
@@ -121,7 +123,7 @@ void main() {
   vec3 deepWater = skyDaylight * scatterColor;  // the light deep water scatters back, as the sky gives it
   vec3 sunLight = skySunVisibility * sunColor;
   #if SHADING_MODE == SHADING_REFLECTION
-  vec3 colour = environmentRadiance(reflected);
+  vec3 colour = reflectedRadiance(vFromEye, reflected);
   #elif SHADING_MODE == SHADING_REFRACTION
   vec3 colour = throughWater(environmentRadiance(refracted), refracted, absorption, deepWater, viewDepth);
   #else
@@ -134,7 +136,7 @@ void main() {
     #include <colorspace_fragment>
     return;
   }
-  vec3 sky = environmentRadiance(reflected);
+  vec3 sky = reflectedRadiance(vFromEye, reflected);
   vec3 water = throughWater(environmentRadiance(refracted), refracted, absorption, deepWater, viewDepth);
   vec3 glint = sunLight * reflectance * pow(max(dot(reflected, sunDirection), 0.0), sunShininess);
   vec3 colour = reflectance * sky + (1.0 - reflectance) * water + caustic * skySunVisibility * causticColor + glint;

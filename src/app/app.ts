@@ -163,6 +163,7 @@ function apply(changes: Partial<AppState>): void {
     causticPower: changes.causticPower,
     causticColor: changes.causticColor,
     shadingMode: changes.mode,
+    reflections: changes.reflections,
   };
   if (Object.values(shading).some((value) => value !== undefined)) ocean.setShading(shading);
   if (has('sunElevation') || has('sunAzimuth')) {

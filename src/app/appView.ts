@@ -55,6 +55,7 @@ export function createAppOcean(renderer: WebGLRenderer, state: Readonly<AppState
     causticPower: state.causticPower,
     causticColor: state.causticColor,
     shadingMode: state.mode,
+    reflections: state.reflections,
   });
   ocean.surface.material.wireframe = state.wireframe;
   return ocean;

@@ -14,6 +14,7 @@
  *                                                               causticColour and scatterColour, the
  *                                                               British spellings, are read too
  *   mode       shading mode (full, fresnel, reflection, refraction, caustics, height)
+ *   reflections  scene/sky  what the sea reflects (the scene's objects, or its sky alone)
  *   wireframe  1/0        inspector  1/0        path  auto/gpu/js        buoys  1/0   boat  1/0
  *   timeScale  -1000…1000 paused     1/0        t     simulation time in seconds
  *   quality    auto/high/medium/low/lowest (adaptiveQuality.ts)      targetFps  frames per second 'auto' holds
@@ -38,6 +39,7 @@ import {
   DEFAULT_SUN,
   SHADING_OPTIONS,
   SUN_OPTIONS,
+  type Reflections,
   type Rgb,
   type ShadingMode,
 } from '../parameters/sceneOptions';
@@ -58,6 +60,7 @@ export interface AppState extends SimulationParameters {
   absorption: Rgb;
   scatterColor: Rgb;
   mode: ShadingMode;
+  reflections: Reflections;
   wireframe: boolean;
   inspector: boolean;
   /** A few floating buoys ahead of the camera (buoys.ts). */
@@ -88,6 +91,7 @@ export const DEFAULT_STATE: Readonly<AppState> = Object.freeze({
   absorption: DEFAULT_SHADING.absorption,
   scatterColor: DEFAULT_SHADING.scatterColor,
   mode: DEFAULT_SHADING.shadingMode,
+  reflections: DEFAULT_SHADING.reflections,
   wireframe: false,
   inspector: false,
   buoys: false,
@@ -142,6 +146,7 @@ export const URL_KEYS: readonly (keyof AppState)[] = [
   'absorption',
   'scatterColor',
   'mode',
+  'reflections',
   'wireframe',
   'inspector',
   'buoys',

@@ -22,6 +22,9 @@ export const DEFAULT_SUN: Readonly<SunOptions> = Object.freeze({ sunElevation: 3
 /** Shading modes; all but 'full' reproduce one of the course report's figures. */
 export const SHADING_MODES = ['full', 'fresnel', 'reflection', 'refraction', 'caustics', 'height'] as const;
 export type ShadingMode = (typeof SHADING_MODES)[number];
+/** What the sea reflects: the scene's objects over its sky, or its sky alone. */
+export const REFLECTIONS = ['scene', 'sky'] as const;
+export type Reflections = (typeof REFLECTIONS)[number];
 export type Rgb = [number, number, number];
 
 /**
@@ -89,6 +92,15 @@ export interface ShadingOptions {
   causticColor: Rgb;
   /** What the sea shows: 'full' shading, or one of its terms alone, to inspect it. @defaultValue 'full' */
   shadingMode: ShadingMode;
+  /**
+   * What the sea reflects: 'scene', the scene's objects (those on OceanSurface.reflectionLayers)
+   * over its sky, rendered from the camera mirrored in the sea and read along each wave's reflected
+   * ray (src/render/sceneReflection.ts); or 'sky', the sky alone. 'scene' shows the sky where the
+   * quality level turns reflections off (OceanSurface.reflectionScale 0: 'lowest'), for cameras
+   * that are not perspective ones and with a logarithmic or reversed depth buffer.
+   * @defaultValue 'scene'
+   */
+  reflections: Reflections;
 }
 
 export const SHADING_OPTIONS: OptionTable<ShadingOptions> = {
@@ -98,6 +110,7 @@ export const SHADING_OPTIONS: OptionTable<ShadingOptions> = {
   causticPower: { type: 'number', unit: '', allowed: 'a number > 0 and at most 10000', check: (v) => typeof v === 'number' && v > 0 && v <= 1e4 },
   causticColor: { ...colorRule(100), aliases: ['causticColour'] },
   shadingMode: { type: 'choice', unit: '', allowed: `one of ${SHADING_MODES.join(', ')}`, check: oneOf(SHADING_MODES), choices: SHADING_MODES },
+  reflections: { type: 'choice', unit: '', allowed: `one of ${REFLECTIONS.join(', ')}`, check: oneOf(REFLECTIONS), choices: REFLECTIONS },
 };
 
 export const DEFAULT_SHADING: Readonly<ShadingOptions> = Object.freeze({
@@ -107,6 +120,7 @@ export const DEFAULT_SHADING: Readonly<ShadingOptions> = Object.freeze({
   causticPower: 32,
   causticColor: [0.12, 0.12, 0.12],
   shadingMode: 'full',
+  reflections: 'scene',
 } satisfies ShadingOptions);
 
 /**

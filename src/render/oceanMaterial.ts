@@ -4,7 +4,7 @@
  * absorption, Guardado caustics) plus a sun glint, and debug modes that reproduce the report's
  * figures. Typed setters check their values and keep the last good one when a value is bad.
  */
-import { Color, DoubleSide, ShaderMaterial, UniformsLib, UniformsUtils, Vector2, Vector3, type Texture } from 'three';
+import { Color, DoubleSide, Matrix4, ShaderMaterial, UniformsLib, UniformsUtils, Vector2, Vector3, type Texture } from 'three';
 import { COPY_OFFSET, largestPeriodicLayer, patchBlendUniforms } from '../layers/patchBlend';
 import type { WaveLayer } from '../layers/waveLayer';
 import { mergeOptions, ParameterError } from '../parameters/options';
@@ -41,8 +41,9 @@ export class OceanMaterial extends ShaderMaterial {
     super({
       // SHADING_MODE is a define, not a uniform: a mode change recompiles (rare), and the full
       // shading runs without the debug modes' branches (a few per cent of a SwiftShader frame).
-      // LAYER_COUNT too (bindLayers): the sums over layers are unrolled.
-      defines: { RING_COUNT, SHADING_MODE: 0, LAYER_COUNT: 1, ...foamPatternDefines(), ...defines },
+      // LAYER_COUNT too (bindLayers): the sums over layers are unrolled. SCENE_REFLECTIONS (the
+      // option reflections) leaves the scene's reflection out of the program where it is 'sky'.
+      defines: { RING_COUNT, SHADING_MODE: 0, LAYER_COUNT: 1, SCENE_REFLECTIONS: 1, ...foamPatternDefines(), ...defines },
       vertexShader: withLayerCount(shaderSource('surface/ocean.vert'), 1),
       fragmentShader: withLayerCount(shaderSource('surface/ocean.frag'), 1),
       side: DoubleSide,
@@ -77,6 +78,12 @@ export class OceanMaterial extends ShaderMaterial {
           eyeSide: { value: EYE_SIDE.above },
           eyeInWater: { value: false },
           captureRestPoint: { value: false },
+          // Replaced by the surface's own (SceneReflection.uniforms); nothing is shown without it.
+          sceneReflectionColor: { value: null },
+          sceneReflectionDepth: { value: null },
+          sceneReflectionToClip: { value: new Matrix4() },
+          sceneReflectionFromClip: { value: new Matrix4() },
+          sceneReflectionShown: { value: false },
           captureWidth: { value: 1 },
           captureHeight: { value: 1 },
         },
@@ -155,10 +162,17 @@ export class OceanMaterial extends ShaderMaterial {
     u.causticPower.value = next.causticPower;
     u.causticColor.value.fromArray(next.causticColor);
     const mode = SHADING_MODES.indexOf(next.shadingMode);
-    if (mode !== this.defines.SHADING_MODE) {
+    const sceneReflections = next.reflections === 'scene' ? 1 : 0;
+    if (mode !== this.defines.SHADING_MODE || sceneReflections !== this.defines.SCENE_REFLECTIONS) {
       this.defines.SHADING_MODE = mode;
+      this.defines.SCENE_REFLECTIONS = sceneReflections;
       this.needsUpdate = true;
     }
+  }
+
+  /** Whether the sea reflects the scene's objects (the option reflections is 'scene'). */
+  get reflectsScene(): boolean {
+    return this.defines.SCENE_REFLECTIONS === 1;
   }
 
   /** Frees the program (ShaderMaterial) and the foam pattern's textures. */
@@ -177,6 +191,7 @@ export class OceanMaterial extends ShaderMaterial {
       causticPower: u.causticPower.value,
       causticColor: u.causticColor.value.toArray(),
       shadingMode: SHADING_MODES[this.defines.SHADING_MODE as number],
+      reflections: this.defines.SCENE_REFLECTIONS === 1 ? 'scene' : 'sky',
     };
   }
 }

@@ -2,12 +2,13 @@
  * The visible sea: a Mesh of the horizon grid (horizonGrid.ts) with the OceanMaterial, displaced
  * and shaded from the simulation's field textures. Add it to any scene; before each render it
  * places its rings around the rendering camera. The sea is the plane y = 0 of world space (the
- * mesh's own transform is not used). Owns its geometry and material.
+ * mesh's own transform is not used). Owns its geometry, material and scene reflection.
  */
-import { Mesh, Vector2, Vector3, type Camera, type Scene, type Texture, type WebGLRenderer } from 'three';
+import { Mesh, Vector2, Vector3, type Camera, type Layers, type Object3D, type Scene, type Texture, type WebGLRenderer } from 'three';
 import type { WaveLayer } from '../layers/waveLayer';
 import { ParameterError } from '../parameters/options';
 import { cellsPerRingForViewport, createHorizonGridGeometry, farEdgeDistance, FEWEST_CELLS_PER_RING, MOST_CELLS_PER_RING, RingFrames } from './horizonGrid';
+import { SceneReflection } from './sceneReflection';
 import { BACKGROUND_WATER } from './skyBackground';
 import { EYE_SIDE, OceanMaterial, type OceanMaterialInputs, type OceanShadingOptions } from './oceanMaterial';
 
@@ -25,6 +26,12 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
   private readonly cameraPosition = new Vector3();
   /** Where the sky background shows the deep water instead of the sky (BACKGROUND_WATER). */
   readonly backgroundWater = { value: 0 };
+  /**
+   * The objects of this sea that no reflection shows (of this sea or of another): the surface,
+   * and what its owner adds (the Ocean adds its sky background).
+   */
+  readonly seaObjects: Object3D[] = [this];
+  private readonly reflection = new SceneReflection(this.seaObjects);
 
   /**
    * @param waves the layers to draw and the choppiness, asked before every render (they change
@@ -47,6 +54,32 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
     this.name = 'OceanSurface';
     this.frustumCulled = false; // the vertex shader moves every vertex; the sea is always in view
     this.cellsPerRing = 32;
+    Object.assign(this.material.uniforms, this.reflection.uniforms);
+  }
+
+  /**
+   * The size of the scene's reflection (the option reflections, 'scene') as a fraction of the
+   * drawing buffer's, from 0 to 1; 0 shows the sky instead and frees the reflection's render
+   * target. The quality levels set it (runtime/adaptiveQuality.ts: 0 at 'lowest').
+   * @defaultValue 0.5
+   */
+  get reflectionScale(): number {
+    return this.reflection.scale;
+  }
+
+  set reflectionScale(scale: number) {
+    if (!(typeof scale === 'number' && scale >= 0 && scale <= 1)) throw new ParameterError('reflectionScale', scale, 'a number from 0 to 1');
+    this.reflection.scale = scale;
+  }
+
+  /**
+   * Which objects the sea reflects (the option reflections, 'scene'): those whose layers meet this
+   * mask and the camera's. Change it in place (reflectionLayers.disable(1)). Lights must be on it
+   * too to light what is reflected.
+   * @defaultValue every layer
+   */
+  get reflectionLayers(): Layers {
+    return this.reflection.layers;
   }
 
   /**
@@ -69,11 +102,14 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
 
   /**
    * Called by three.js before each render of the sea: resizes the grid to the drawing buffer's
-   * height if needed and centres the rings under `camera` (placeRings).
+   * height if needed, centres the rings under `camera` (placeRings) and renders the scene's
+   * reflection (sceneReflection.ts), or frees it where the sea reflects only its sky.
    */
-  override onBeforeRender(renderer: WebGLRenderer, _scene: Scene, camera: Camera): void {
+  override onBeforeRender(renderer: WebGLRenderer, scene: Scene, camera: Camera): void {
     this.fitDrawingBuffer(renderer);
     this.placeRings(camera);
+    if (this.material.reflectsScene) this.reflection.render(renderer, scene, camera);
+    else this.reflection.freeTarget();
   }
 
   /**
@@ -145,5 +181,6 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
   dispose(): void {
     this.geometry.dispose();
     this.material.dispose();
+    this.reflection.dispose();
   }
 }

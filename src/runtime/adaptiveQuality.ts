@@ -42,13 +42,18 @@ export interface QualityStep {
    * grid follows the scaled-down picture's height down to this many.
    */
   fewestGridCells: number;
+  /**
+   * The scene's reflection's size as a fraction of the drawing buffer's (OceanSurface.reflectionScale;
+   * 0: the sea reflects only its sky). Its render costs about the scene's own draw at that size.
+   */
+  reflectionScale: number;
 }
 
 export const QUALITY_STEPS: Readonly<Record<QualityLevel, QualityStep>> = {
-  high: { renderScale: 1, maxResolution: 1024, msaa: true, maxCascades: MAX_CASCADES, fewestGridCells: FEWEST_CELLS_PER_RING },
-  medium: { renderScale: 0.75, maxResolution: 128, msaa: false, maxCascades: MAX_CASCADES, fewestGridCells: FEWEST_CELLS_PER_RING },
-  low: { renderScale: 0.5, maxResolution: 64, msaa: false, maxCascades: 2, fewestGridCells: FEWEST_CELLS_PER_RING },
-  lowest: { renderScale: 0.3, maxResolution: 32, msaa: false, maxCascades: 2, fewestGridCells: 16 },
+  high: { renderScale: 1, maxResolution: 1024, msaa: true, maxCascades: MAX_CASCADES, fewestGridCells: FEWEST_CELLS_PER_RING, reflectionScale: 0.5 },
+  medium: { renderScale: 0.75, maxResolution: 128, msaa: false, maxCascades: MAX_CASCADES, fewestGridCells: FEWEST_CELLS_PER_RING, reflectionScale: 0.5 },
+  low: { renderScale: 0.5, maxResolution: 64, msaa: false, maxCascades: 2, fewestGridCells: FEWEST_CELLS_PER_RING, reflectionScale: 0.5 },
+  lowest: { renderScale: 0.3, maxResolution: 32, msaa: false, maxCascades: 2, fewestGridCells: 16, reflectionScale: 0 },
 };
 
 /**
