@@ -44,6 +44,11 @@ vec4 sceneReflectionRayPoint(vec3 fromEye, vec3 ray, vec2 uv) {
   return vec4(fromEye + t * ray, 1.0);
 }
 
+// How far (as a fraction of the distance along the ray) the scene point the last lookup shows may
+// lie off the ray and still count as met: beyond, the iteration did not converge on that object
+// (it is elsewhere, e.g. in front of the surface point) and the sky shows instead.
+#define SCENE_REFLECTION_MISS vec2(0.05, 0.2)
+
 // The scene's radiance along `ray` (unit, upwards) from the surface point `fromEye`, premultiplied
 // by its coverage (alpha): blend as rgb + (1 − a)·sky.
 vec4 sceneReflection(vec3 fromEye, vec3 ray) {
@@ -54,8 +59,18 @@ vec4 sceneReflection(vec3 fromEye, vec3 ray) {
   }
   if (uv.z <= 0.0) return vec4(0.0);
   vec2 inside = min(uv.xy, 1.0 - uv.xy) / SCENE_REFLECTION_EDGE;
-  float edge = clamp(min(inside.x, inside.y), 0.0, 1.0);
-  return edge * texture(sceneReflectionColor, uv.xy);
+  float weight = clamp(min(inside.x, inside.y), 0.0, 1.0);
+  // Whether the ray meets what the mirror render shows there (where it shows depth: transparent
+  // objects that write none are taken as far away, as the sky is).
+  float depth = texture(sceneReflectionDepth, uv.xy).r;
+  if (depth < 1.0) {
+    vec4 scene = sceneReflectionFromClip * vec4(vec3(uv.xy, depth) * 2.0 - 1.0, 1.0);
+    vec3 toScene = scene.xyz / scene.w - fromEye;
+    float along = dot(toScene, ray);
+    float off = length(toScene - along * ray);
+    weight *= along > 0.0 ? 1.0 - smoothstep(SCENE_REFLECTION_MISS.x, SCENE_REFLECTION_MISS.y, off / along) : 0.0;
+  }
+  return weight * texture(sceneReflectionColor, uv.xy);
 }
 
 // The light the sea reflects along `ray` (unit, upwards) from `fromEye`: the scene's where the

@@ -104,6 +104,34 @@ const harness = {
     sea.update(t, camera);
     return sea.heightAt(x, z);
   },
+  /**
+   * `view` drawn with the box made transparent and writing no depth, once with the one Ocean and
+   * once with a second Ocean in the scene too: how many pixels grew redder than without the box,
+   * and the GL error after both.
+   */
+  crowd(view: View): { glError: number; reflectionPixels: { one: number; two: number } } {
+    const material = box.material;
+    const redder = (a: string, b: string) => {
+      const [p, q] = [a, b].map((text) => Uint8Array.from(atob(text), (c) => c.charCodeAt(0)));
+      let count = 0;
+      for (let i = 0; i < p.length; i += 4) if (p[i] - q[i] > 8 && p[i + 2] - q[i + 2] <= 0) count++;
+      return count;
+    };
+    box.material = new MeshBasicMaterial({ color: 0xff0000, transparent: true, opacity: 0.7, depthWrite: false });
+    try {
+      const one = redder(harness.render(view), harness.render({ ...view, hideBox: true }));
+      const second = new Ocean(renderer, { windSpeed: view.windSpeed, resolution: 32, seed: 9, localWaves: false, worker: false });
+      scene.add(second);
+      second.update(view.t, camera);
+      const two = redder(harness.render(view), harness.render({ ...view, hideBox: true }));
+      scene.remove(second);
+      second.dispose();
+      return { glError: renderer.getContext().getError(), reflectionPixels: { one, two } };
+    } finally {
+      box.material.dispose();
+      box.material = material;
+    }
+  },
   /** Shading options the Ocean takes or refuses (the ParameterError's name and message). */
   setShading(changes: Record<string, unknown>): { error: string | null; name: string | null; parameter: string | null; reflections: string } {
     const sea = oceanFor(1);
