@@ -83,14 +83,15 @@ export class SceneReflection {
    * Renders the reflection of `scene` seen from `camera` (before the sea is drawn with it). Where it
    * cannot (scale 0, inside another reflection, a camera that is not a perspective one, or a depth
    * buffer that is logarithmic or reversed, whose depths the shader does not read back) the sea
-   * shows its sky.
+   * shows its sky; and where there is nothing but seas to reflect, nothing is rendered.
    */
   render(renderer: WebGLRenderer, scene: Scene, camera: Camera): void {
     if (capturing) {
       this.uniforms.sceneReflectionShown.value = false;
       return;
     }
-    const shown = this.scale > 0 && isPerspective(camera) && plainDepth(renderer);
+    const hidden = new Set([...seas.values()].flat());
+    const shown = this.scale > 0 && isPerspective(camera) && plainDepth(renderer) && !onlySea(scene, hidden);
     this.uniforms.sceneReflectionShown.value = shown;
     if (!shown) {
       if (this.scale <= 0) this.freeTarget();
@@ -100,10 +101,9 @@ export class SceneReflection {
     this.placeCamera(camera);
     const mirror = this.camera;
     mirror.layers.mask = this.layers.mask & camera.layers.mask;
-    const hidden = [...seas.values()].flat();
     capturing = true;
     try {
-      renderSceneWithoutSea(renderer, scene, mirror, target, hidden, mirror.layers);
+      renderSceneWithoutSea(renderer, scene, mirror, target, [...hidden], mirror.layers);
     } finally {
       capturing = false;
     }
@@ -175,6 +175,12 @@ export class SceneReflection {
     }
     return this.target;
   }
+}
+
+/** Whether `object` holds nothing but the seas' objects (an Ocean, a scene of Oceans): nothing to reflect. */
+function onlySea(object: Object3D, sea: ReadonlySet<Object3D>): boolean {
+  if (sea.has(object)) return true;
+  return object.children.length > 0 && (object.type === 'Object3D' || object.type === 'Scene' || object.type === 'Group') && object.children.every((child) => onlySea(child, sea));
 }
 
 /** A perspective projection (three's isPerspectiveMatrix: its w is −z). */
