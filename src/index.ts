@@ -34,6 +34,7 @@ export { CpuWaveFields } from './fft/cpuWaveFields';
 export { GpuWaveFields, supportedGpuPrecision, type GpuPrecision } from './fft/gpuWaveFields';
 export { BatchedInverseFft2D } from './fft/fft';
 export { OceanSurface } from './render/oceanSurface';
+export type { ReflectionLayers } from './render/sceneReflection';
 export { OceanMaterial, type OceanShadingOptions } from './render/oceanMaterial';
 export {
   SHADING_MODES,

@@ -4,11 +4,11 @@
  * places its rings around the rendering camera. The sea is the plane y = 0 of world space (the
  * mesh's own transform is not used). Owns its geometry, material and scene reflection.
  */
-import { Mesh, Vector2, Vector3, type Camera, type Layers, type Object3D, type Scene, type Texture, type WebGLRenderer } from 'three';
+import { Mesh, Vector2, Vector3, type Camera, type Object3D, type Scene, type Texture, type WebGLRenderer } from 'three';
 import type { WaveLayer } from '../layers/waveLayer';
 import { ParameterError } from '../parameters/options';
 import { cellsPerRingForViewport, createHorizonGridGeometry, farEdgeDistance, FEWEST_CELLS_PER_RING, MOST_CELLS_PER_RING, RingFrames } from './horizonGrid';
-import { SceneReflection } from './sceneReflection';
+import { SceneReflection, type ReflectionLayers } from './sceneReflection';
 import { BACKGROUND_WATER } from './skyBackground';
 import { EYE_SIDE, OceanMaterial, type OceanMaterialInputs, type OceanShadingOptions } from './oceanMaterial';
 
@@ -78,7 +78,7 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
    * too to light what is reflected.
    * @defaultValue every layer
    */
-  get reflectionLayers(): Layers {
+  get reflectionLayers(): ReflectionLayers {
     return this.reflection.layers;
   }
 

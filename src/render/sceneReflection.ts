@@ -41,6 +41,23 @@ const MIRROR = new Matrix4().makeScale(1, -1, 1);
 const FLIP_X = new Matrix4().makeScale(-1, 1, 1);
 const WATER_PLANE = new Plane(new Vector3(0, 1, 0), 0);
 
+/**
+ * A three.js Layers object as the reflection takes it (OceanSurface.reflectionLayers): which of
+ * the 32 layers are reflected. The object is a THREE.Layers; change it in place.
+ */
+export interface ReflectionLayers {
+  /** One bit per layer. */
+  mask: number;
+  /** Only this layer. */
+  set(layer: number): void;
+  enable(layer: number): void;
+  disable(layer: number): void;
+  toggle(layer: number): void;
+  enableAll(): void;
+  disableAll(): void;
+  isEnabled(layer: number): boolean;
+}
+
 export interface SceneReflectionUniforms {
   sceneReflectionColor: { value: Texture | null };
   sceneReflectionDepth: { value: Texture | null };
