@@ -47,6 +47,7 @@ function changed(): AppState {
     absorption: [0.5, 0.1, 0.05],
     scatterColor: [0, 0.04, 0.07],
     mode: 'height',
+    reflections: 'sky',
     wireframe: true,
     inspector: true,
     buoys: true,
