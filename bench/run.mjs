@@ -6,13 +6,13 @@
 //
 //   in Node      fft2d, fields, cascades (the JS path; Vite loads the TypeScript sources)
 //   in Chromium  the `browser` row (what its WebGL2 supports; bench/lib/browser.mjs), then fields,
-//                cascades, frame, living, queries (with query-frames and parameter-change), app
+//                cascades, frame, living, reflections, queries (with query-frames and parameter-change), app
 //                (with compare), and last the fields row with RGBA16F
 //   always       targets, summary
 //
 // If the browser part fails, the Node rows and the summary are still printed and the exit code is 1.
 // `npm run bench -- --only=queries,living` runs only the groups named (fft2d, fields, cascades,
-// frame, living, queries, app); the summary then has nulls for the others.
+// frame, living, reflections, queries, app); the summary then has nulls for the others.
 // `--compare=<dir>` (or BENCH_COMPARE=<dir>) times dli/waves beside the app (bench/groups/compare.mjs);
 // `--query-frames=256` sets the grids of the query-frames rows.
 // BENCH_PORT=<port> sets the first port tried for the servers (default 5180; the next free ones after it).
@@ -29,6 +29,7 @@ import * as fft2d from './groups/fft2d.mjs';
 import * as fields from './groups/fields.mjs';
 import * as frame from './groups/frame.mjs';
 import * as living from './groups/living.mjs';
+import * as reflections from './groups/reflections.mjs';
 import * as parameterChange from './groups/parameter-change.mjs';
 import * as queries from './groups/queries.mjs';
 import * as queryFrames from './groups/query-frames.mjs';
@@ -43,7 +44,7 @@ if (!Number.isInteger(FIRST_PORT) || FIRST_PORT < 1024 || FIRST_PORT > 65000) th
 
 /** The grids of the query-frames rows (`--query-frames=256` for one). */
 const QUERY_FRAME_RESOLUTIONS = (process.argv.find((a) => a.startsWith('--query-frames='))?.slice(15) ?? '256,512,1024').split(',').map(Number);
-const GROUPS = ['fft2d', 'fields', 'cascades', 'frame', 'living', 'queries', 'app'];
+const GROUPS = ['fft2d', 'fields', 'cascades', 'frame', 'living', 'reflections', 'queries', 'app'];
 const compareArgument = process.argv.slice(2).find((argument) => argument.startsWith('--compare='));
 /** The directory of a dli/waves checkout to time beside the app, or null. */
 const compareDir = compareArgument ? resolve(compareArgument.slice('--compare='.length)) : process.env.BENCH_COMPARE ? resolve(process.env.BENCH_COMPARE) : null;
@@ -76,6 +77,7 @@ const BROWSER_STEPS = [
   [null, ({ page, port }) => openReady(page, port, 'frame.html')], // frame, living, queries and parameter-change run there
   ['frame', frame.browser],
   ['living', living.browser],
+  ['reflections', reflections.browser],
   ['queries', queries.browser],
   ['queries', queryFrames.browser],
   ['queries', parameterChange.browser],
@@ -112,6 +114,7 @@ const results = {
   gpuCascades: {},
   frameByCascades: {},
   livingCost: null,
+  reflectionsCost: null,
   queries: null,
   app: {},
   /** dli/waves: { ms, N }, or { error }; null when not asked for (no --compare). */

@@ -34,10 +34,12 @@ export { CpuWaveFields } from './fft/cpuWaveFields';
 export { GpuWaveFields, supportedGpuPrecision, type GpuPrecision } from './fft/gpuWaveFields';
 export { BatchedInverseFft2D } from './fft/fft';
 export { OceanSurface } from './render/oceanSurface';
+export type { ReflectionLayers } from './render/sceneReflection';
 export { OceanMaterial, type OceanShadingOptions } from './render/oceanMaterial';
 export {
   SHADING_MODES,
   REFRACTION_SOURCES,
+  REFLECTIONS,
   SHADING_OPTIONS,
   SUN_OPTIONS,
   DEFAULT_SHADING,
@@ -47,6 +49,7 @@ export {
   type ShadingChanges,
   type ShadingMode,
   type RefractionSource,
+  type Reflections,
   type ShadingOptions,
   type SunOptions,
 } from './parameters/sceneOptions';

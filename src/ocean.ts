@@ -13,6 +13,7 @@
  */
 import { Object3D, Vector3, type Object3DEventMap, type WebGLRenderer } from 'three';
 import { OceanSurface } from './render/oceanSurface';
+import type { ReflectionLayers } from './render/sceneReflection';
 import type { OceanShadingOptions } from './render/oceanMaterial';
 import { SkyBackground } from './render/skyBackground';
 import { SkyEnvironment, sunAnglesFromDirection, type SunAngles, type SunDirection } from './render/skyEnvironment';
@@ -341,6 +342,15 @@ export class Ocean extends Object3D<OceanEventMap> {
     this.checkAlive('setShading');
     if (!isOptionsObject(changes)) throw new ParameterError('setShading', changes, 'an object of shading options, such as { ior: 1.34 }');
     this.surface.material.setShading(changes);
+  }
+
+  /**
+   * Which objects the sea reflects with reflections 'scene' (OceanSurface.reflectionLayers): those
+   * whose layers meet this mask and the camera's; every layer by default. Change it in place.
+   */
+  get reflectionLayers(): ReflectionLayers {
+    this.checkAlive('reflectionLayers');
+    return this.surface.reflectionLayers;
   }
 
   /**

@@ -36,6 +36,7 @@ export function emitSummary(results, browserError, started) {
     frameMs256At1280x720: results.frame[256] ?? null,
     frameMs512At1280x720: results.frame[512] ?? null,
     livingCostMs: results.livingCost,
+    reflectionsCost: results.reflectionsCost,
     // The app as opened and at each quality level, beside the bare 3-cascade frame of the same size.
     appFrameMs: Object.fromEntries(Object.entries(results.app).map(([quality, { ms }]) => [quality, ms])),
     appAsOpenedFps: results.app['as opened']?.fps ?? null,

@@ -8,7 +8,7 @@
  * the same canvas; each round renders a frame of every one of them in turn, so machine noise hits
  * the cascade counts alike.
  */
-import { ACESFilmicToneMapping, PerspectiveCamera, Scene, Vector3, WebGLRenderer } from 'three';
+import { ACESFilmicToneMapping, BoxGeometry, Mesh, MeshBasicMaterial, PerspectiveCamera, Scene, Vector3, WebGLRenderer } from 'three';
 import type { PressureSource } from '../../src/layers/localWaves';
 import { Ocean, type OceanOptions } from '../../src/ocean';
 
@@ -25,7 +25,7 @@ export interface FrameOptions {
    * with `activeLocalWaves`, a hull circling ahead of the camera and a stone every second, so that
    * the local waves step every frame (the living-surface rows).
    */
-  variants?: { label: string; options: OceanOptions; activeLocalWaves: boolean }[];
+  variants?: { label: string; options: OceanOptions; activeLocalWaves: boolean; boxes?: boolean }[];
 }
 
 export interface FrameSamples {
@@ -51,9 +51,13 @@ async function frames(options: FrameOptions): Promise<FrameSamples[]> {
   camera.position.set(0, 12, 0);
   camera.lookAt(60, 0, -80);
   const variants =
-    options.variants ?? options.patchSizeSets.map((patchSizes) => ({ label: 'frame', options: patchSizes ? { patchSizes } : {}, activeLocalWaves: false }));
-  const subjects = variants.map(({ label, options: oceanOptions, activeLocalWaves }) => {
+    options.variants ?? options.patchSizeSets.map((patchSizes) => ({ label: 'frame', options: patchSizes ? { patchSizes } : {}, activeLocalWaves: false, boxes: false }));
+  const box = new BoxGeometry(6, 4, 6);
+  const red = new MeshBasicMaterial({ color: 0xc02020 });
+  const subjects = variants.map(({ label, options: oceanOptions, activeLocalWaves, boxes }) => {
     const scene = new Scene();
+    // With `boxes`: five boxes ahead of the camera, for the sea to reflect (the reflections rows).
+    if (boxes) for (let i = 0; i < 5; i++) scene.add(new Mesh(box, red).translateX(30 + 12 * i).translateY(2).translateZ(-40 - 10 * i));
     const ocean = new Ocean(renderer, { resolution: options.resolution, seed: 7, path: 'gpu', ...oceanOptions });
     scene.add(ocean);
     const hull: PressureSource | null = activeLocalWaves ? (ocean.localWaves?.addPressure({ length: 8, beam: 2.6, draft: 0.6 }, { x: 30, z: -40, heading: 0 }) ?? null) : null;
@@ -98,6 +102,8 @@ async function frames(options: FrameOptions): Promise<FrameSamples[]> {
     }));
   } finally {
     subjects.forEach(({ ocean }) => ocean.dispose());
+    box.dispose();
+    red.dispose();
     renderer.dispose();
     renderer.domElement.remove();
   }

@@ -2,12 +2,14 @@
 //   c = R·c_reflected + T·c_refracted + K·c_caustic  (+ the sun's specular glint),
 // with R the exact Fresnel reflectance, c_reflected / c_refracted sampled from the environment
 // cubemap along reflect() / refract(), the refracted light attenuated in the water volume, and K
-// Guardado's caustic term; then whitecap foam over it (foam.glsl).
+// Guardado's caustic term; then whitecap foam over it (foam.glsl). The reflection shows the scene's
+// objects too (sceneReflection.glsl) where the option reflections is 'scene'.
 #include "common/fresnel.glsl"
 #include "surface/choppyNormal.glsl"
 #include "surface/caustics.glsl"
 #include "surface/absorption.glsl"
 #include "sky/environmentLookup.glsl"
+#include "surface/sceneReflection.glsl"
 #include "surface/waveLayers.glsl"
 #include "surface/seaLighting.glsl"
 #include "surface/foam.glsl"
@@ -140,7 +142,7 @@ void main() {
   vec3 deepWater = skyDaylight * scatterColor;  // the light deep water scatters back, as the sky gives it
   vec3 sunLight = skySunVisibility * sunColor;
   #if SHADING_MODE == SHADING_REFLECTION
-  vec3 colour = environmentRadiance(reflected);
+  vec3 colour = reflectedRadiance(vFromEye, reflected, environmentRadiance(reflected));
   #elif SHADING_MODE == SHADING_REFRACTION
   vec3 colour = throughWater(environmentRadiance(refracted), refracted, absorption, deepWater, viewDepth);
   #else
@@ -155,7 +157,8 @@ void main() {
   }
   // The slopes this pixel's normal does not show spread the sky's reflection and the glint (seaLighting.glsl).
   float slopeVariance = subPixelSlopeVariance(footprintLevel(restPerPixelX, restPerPixelY));
-  vec3 sky = filteredSkyReflection(view, normal, slopeVariance, iorAir, iorWater, reflectance);
+  // The scene's objects in front of the sky, seen along the reflected ray (sceneReflection.glsl).
+  vec3 sky = reflectedRadiance(vFromEye, reflected, filteredSkyReflection(view, normal, slopeVariance, iorAir, iorWater, reflectance));
   vec3 water = throughWater(environmentRadiance(refracted), refracted, absorption, deepWater, viewDepth);
   #if SCENE_REFRACTIONS == 1
   // What lies under the surface (sceneRefraction.glsl); where an object meets the water, a line of

@@ -56,6 +56,7 @@ export function createAppOcean(renderer: WebGLRenderer, state: Readonly<AppState
     causticColor: state.causticColor,
     shadingMode: state.mode,
     refractions: state.refractions,
+    reflections: state.reflections,
   });
   ocean.surface.material.wireframe = state.wireframe;
   return ocean;

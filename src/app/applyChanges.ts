@@ -44,6 +44,7 @@ export function applyChanges({ ocean, state, loop, extras, overlay, applyQuality
     causticColor: changes.causticColor,
     shadingMode: changes.mode,
     refractions: changes.refractions,
+    reflections: changes.reflections,
   };
   if (Object.values(shading).some((value) => value !== undefined)) ocean.setShading(shading);
   if (has('sunElevation') || has('sunAzimuth')) {

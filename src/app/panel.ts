@@ -10,7 +10,7 @@
 import GUI, { type Controller } from 'lil-gui';
 import 'lil-gui/dist/lil-gui.css'; // as a file (see vite.config.ts): GUI's injected <style> breaks under a strict CSP
 import { Color } from 'three';
-import { colorToLinear, REFRACTION_SOURCES, SHADING_MODES } from '../parameters/sceneOptions';
+import { colorToLinear, REFLECTIONS, REFRACTION_SOURCES, SHADING_MODES } from '../parameters/sceneOptions';
 import { ParameterError, SPECTRUM_MODELS, SPREADING_MODELS, type SimulationParameters } from '../parameters/parameters';
 import { beaufortPreset, SEA_PRESETS } from '../spectrum/presets';
 import { MIN_TARGET_FPS } from '../parameters/qualityOptions';
@@ -119,6 +119,7 @@ export class Panel {
     this.number(look, 'sunAzimuth', 'sun azimuth (°)', -180, 180, 1);
     this.bind(look.add(state, 'mode', SHADING_MODES as unknown as string[]).name('shading mode'), 'mode');
     this.bind(look.add(state, 'refractions', REFRACTION_SOURCES as unknown as string[]).name('seen through the water'), 'refractions');
+    this.bind(look.add(state, 'reflections', REFLECTIONS as unknown as string[]).name('reflections'), 'reflections');
     this.number(look, 'ior', 'refractive index', 1.01, 2.5, 0.001);
     this.number(look, 'causticPower', 'caustic power p', 1, 256, 1);
     this.colour(look, 'causticColor', 'caustic colour');

@@ -15,6 +15,7 @@
  *                                                               British spellings, are read too
  *   mode       shading mode (full, fresnel, reflection, refraction, caustics, height)
  *   refractions  scene/sky: what is seen through the water (the scene's objects, or only the sky)
+ *   reflections  scene/sky  what the sea reflects (the scene's objects, or its sky alone)
  *   wireframe  1/0        inspector  1/0        path  auto/gpu/js        buoys  1/0   boat  1/0
  *   scene      sea (the open sea) or island (src/objects/island.ts; sceneChoice.ts)
  *   timeScale  -1000…1000 paused     1/0        t     simulation time in seconds
@@ -41,6 +42,7 @@ import {
   SHADING_OPTIONS,
   SUN_OPTIONS,
   type RefractionSource,
+  type Reflections,
   type Rgb,
   type ShadingMode,
 } from '../parameters/sceneOptions';
@@ -66,6 +68,7 @@ export interface AppState extends SimulationParameters {
   scatterColor: Rgb;
   mode: ShadingMode;
   refractions: RefractionSource;
+  reflections: Reflections;
   wireframe: boolean;
   inspector: boolean;
   /** A few floating buoys ahead of the camera (buoys.ts). */
@@ -99,6 +102,7 @@ export const DEFAULT_STATE: Readonly<AppState> = Object.freeze({
   scatterColor: DEFAULT_SHADING.scatterColor,
   mode: DEFAULT_SHADING.shadingMode,
   refractions: DEFAULT_SHADING.refractions,
+  reflections: DEFAULT_SHADING.reflections,
   wireframe: false,
   inspector: false,
   buoys: false,
@@ -155,6 +159,7 @@ export const URL_KEYS: readonly (keyof AppState)[] = [
   'scatterColor',
   'mode',
   'refractions',
+  'reflections',
   'wireframe',
   'inspector',
   'buoys',

@@ -14,7 +14,7 @@
  *     sun (SUN_OPTIONS): sun-elevation, sun-azimuth (degrees)             → ocean.setSun
  *     shading (SHADING_OPTIONS): ior, absorption="0.45,0.07,0.04", scatter-color and caustic-color
  *       ("#1a6b80", any CSS colour, or linear "r,g,b"), caustic-power, shading-mode (full,
- *       fresnel, reflection, refraction, caustics, height), refractions (scene, sky)
+ *       fresnel, reflection, refraction, caustics, height), refractions and reflections (scene, sky)
  *                                                                        → ocean.setShading
  *   path (auto, gpu, js)                      which simulation path runs
  *   time-scale (default 1)                    simulated seconds per real second, at most 1000 either way

@@ -22,6 +22,9 @@ export const DEFAULT_SUN: Readonly<SunOptions> = Object.freeze({ sunElevation: 3
 /** Shading modes; all but 'full' reproduce one of the course report's figures. */
 export const SHADING_MODES = ['full', 'fresnel', 'reflection', 'refraction', 'caustics', 'height'] as const;
 export type ShadingMode = (typeof SHADING_MODES)[number];
+/** What the sea reflects: the scene's objects over its sky, or its sky alone. */
+export const REFLECTIONS = ['scene', 'sky'] as const;
+export type Reflections = (typeof REFLECTIONS)[number];
 export type Rgb = [number, number, number];
 /** What the ray refracted into the water shows: the scene under the surface, or the sky alone. */
 export const REFRACTION_SOURCES = ['scene', 'sky'] as const;
@@ -100,6 +103,15 @@ export interface ShadingOptions {
    * level 'lowest' skips the capture (runtime/adaptiveQuality.ts). @defaultValue 'scene'
    */
   refractions: RefractionSource;
+  /**
+   * What the sea reflects: 'scene', the scene's objects (those on OceanSurface.reflectionLayers)
+   * over its sky, rendered from the camera mirrored in the sea and read along each wave's reflected
+   * ray (src/render/sceneReflection.ts); or 'sky', the sky alone. 'scene' shows the sky where the
+   * quality level turns reflections off (OceanSurface.reflectionScale 0: 'lowest'), for cameras
+   * that are not perspective ones and with a logarithmic or reversed depth buffer.
+   * @defaultValue 'scene'
+   */
+  reflections: Reflections;
 }
 
 export const SHADING_OPTIONS: OptionTable<ShadingOptions> = {
@@ -110,6 +122,7 @@ export const SHADING_OPTIONS: OptionTable<ShadingOptions> = {
   causticColor: { ...colorRule(100), aliases: ['causticColour'] },
   shadingMode: { type: 'choice', unit: '', allowed: `one of ${SHADING_MODES.join(', ')}`, check: oneOf(SHADING_MODES), choices: SHADING_MODES },
   refractions: { type: 'choice', unit: '', allowed: `one of ${REFRACTION_SOURCES.join(', ')}`, check: oneOf(REFRACTION_SOURCES), choices: REFRACTION_SOURCES },
+  reflections: { type: 'choice', unit: '', allowed: `one of ${REFLECTIONS.join(', ')}`, check: oneOf(REFLECTIONS), choices: REFLECTIONS },
 };
 
 export const DEFAULT_SHADING: Readonly<ShadingOptions> = Object.freeze({
@@ -120,6 +133,7 @@ export const DEFAULT_SHADING: Readonly<ShadingOptions> = Object.freeze({
   causticColor: [0.12, 0.12, 0.12],
   shadingMode: 'full',
   refractions: 'scene',
+  reflections: 'scene',
 } satisfies ShadingOptions);
 
 /**

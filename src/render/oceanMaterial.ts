@@ -4,7 +4,7 @@
  * absorption, Guardado caustics) plus a sun glint, and debug modes that reproduce the report's
  * figures. Typed setters check their values and keep the last good one when a value is bad.
  */
-import { Color, DoubleSide, ShaderMaterial, UniformsLib, UniformsUtils, Vector2, Vector3, type Texture } from 'three';
+import { Color, DoubleSide, Matrix4, ShaderMaterial, UniformsLib, UniformsUtils, Vector2, Vector3, type Texture } from 'three';
 import { COPY_OFFSET, largestPeriodicLayer, patchBlendUniforms } from '../layers/patchBlend';
 import type { Shore } from '../layers/shore';
 import type { WaveLayer } from '../layers/waveLayer';
@@ -45,8 +45,10 @@ export class OceanMaterial extends ShaderMaterial {
     super({
       // SHADING_MODE is a define, not a uniform: a mode change recompiles (rare), and the full
       // shading runs without the debug modes' branches (a few per cent of a SwiftShader frame).
-      // LAYER_COUNT too (bindLayers): the sums over layers are unrolled.
-      defines: { RING_COUNT, SHADING_MODE: 0, SCENE_REFRACTIONS: 1, LAYER_COUNT: 1, SLOPE_FILTER_LEVELS, ...foamPatternDefines(), ...defines },
+      // LAYER_COUNT too (bindLayers): the sums over layers are unrolled. SCENE_REFLECTIONS and
+      // SCENE_REFRACTIONS (the options reflections and refractions) leave the scene's lookups out of
+      // the program where they are 'sky'.
+      defines: { RING_COUNT, SHADING_MODE: 0, SCENE_REFLECTIONS: 1, SCENE_REFRACTIONS: 1, LAYER_COUNT: 1, SLOPE_FILTER_LEVELS, ...foamPatternDefines(), ...defines },
       vertexShader: withLayerCount(shaderSource('surface/ocean.vert'), 1),
       fragmentShader: withLayerCount(shaderSource('surface/ocean.frag'), 1),
       side: DoubleSide,
@@ -86,6 +88,12 @@ export class OceanMaterial extends ShaderMaterial {
           eyeSide: { value: EYE_SIDE.above },
           eyeInWater: { value: false },
           captureRestPoint: { value: false },
+          // Replaced by the surface's own (SceneReflection.uniforms); nothing is shown without it.
+          sceneReflectionColor: { value: null },
+          sceneReflectionDepth: { value: null },
+          sceneReflectionToClip: { value: new Matrix4() },
+          sceneReflectionFromClip: { value: new Matrix4() },
+          sceneReflectionShown: { value: false },
           captureWidth: { value: 1 },
           captureHeight: { value: 1 },
         },
@@ -189,10 +197,12 @@ export class OceanMaterial extends ShaderMaterial {
     u.causticPower.value = next.causticPower;
     u.causticColor.value.fromArray(next.causticColor);
     const mode = SHADING_MODES.indexOf(next.shadingMode);
-    // A define, as the mode: with 'sky' the shader has no capture lookups at all.
+    // Defines, as the mode: with 'sky' the shader has no capture lookups at all.
+    const sceneReflections = next.reflections === 'scene' ? 1 : 0;
     const sceneRefractions = next.refractions === 'scene' ? 1 : 0;
-    if (mode !== this.defines.SHADING_MODE || sceneRefractions !== this.defines.SCENE_REFRACTIONS) {
+    if (mode !== this.defines.SHADING_MODE || sceneReflections !== this.defines.SCENE_REFLECTIONS || sceneRefractions !== this.defines.SCENE_REFRACTIONS) {
       this.defines.SHADING_MODE = mode;
+      this.defines.SCENE_REFLECTIONS = sceneReflections;
       this.defines.SCENE_REFRACTIONS = sceneRefractions;
       this.needsUpdate = true;
     }
@@ -204,11 +214,17 @@ export class OceanMaterial extends ShaderMaterial {
   }
 
   /**
-   * Looks up the scene under the surface in this capture (SceneRefraction.uniforms, shared: its
-   * owner updates them) where the refractions option is 'scene'.
+   * Takes `uniforms` as they are, shared: their owner updates them (the scene's captures,
+   * SceneRefraction and SceneReflection, whose lookups the shader makes where the options
+   * refractions and reflections are 'scene').
    */
-  useSceneRefraction(uniforms: Record<string, { value: unknown }>): void {
+  shareUniforms<U extends { [K in keyof U]: { value: unknown } }>(uniforms: U): void {
     Object.assign(this.uniforms, uniforms);
+  }
+
+  /** Whether the sea reflects the scene's objects (the option reflections is 'scene'). */
+  get reflectsScene(): boolean {
+    return this.defines.SCENE_REFLECTIONS === 1;
   }
 
   /** Frees the program (ShaderMaterial) and the foam pattern's textures. */
@@ -228,6 +244,7 @@ export class OceanMaterial extends ShaderMaterial {
       causticColor: u.causticColor.value.toArray(),
       shadingMode: SHADING_MODES[this.defines.SHADING_MODE as number],
       refractions: this.defines.SCENE_REFRACTIONS === 1 ? 'scene' : 'sky',
+      reflections: this.defines.SCENE_REFLECTIONS === 1 ? 'scene' : 'sky',
     };
   }
 }

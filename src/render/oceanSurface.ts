@@ -2,14 +2,16 @@
  * The visible sea: a Mesh of the horizon grid (horizonGrid.ts) with the OceanMaterial, displaced
  * and shaded from the simulation's field textures. Add it to any scene; before each render it
  * places its rings around the rendering camera. The sea is the plane y = 0 of world space (the
- * mesh's own transform is not used). Owns its geometry, material and the capture of the scene
- * under it (SceneRefraction, for the `refractions: 'scene'` option).
+ * mesh's own transform is not used). Owns its geometry, material, scene reflection
+ * (SceneReflection, the `reflections: 'scene'` option) and the capture of the scene under it
+ * (SceneRefraction, the `refractions: 'scene'` option).
  */
 import { Mesh, Vector2, Vector3, type Camera, type Object3D, type Scene, type Texture, type WebGLRenderer } from 'three';
 import type { Shore } from '../layers/shore';
 import type { WaveLayer } from '../layers/waveLayer';
 import { ParameterError } from '../parameters/options';
 import { cellsPerRingForViewport, createHorizonGridGeometry, farEdgeDistance, FEWEST_CELLS_PER_RING, MOST_CELLS_PER_RING, RingFrames } from './horizonGrid';
+import { SceneReflection, type ReflectionLayers } from './sceneReflection';
 import { BACKGROUND_WATER } from './skyBackground';
 import { SceneRefraction } from './sceneRefraction';
 import { EYE_SIDE, OceanMaterial, type OceanMaterialInputs, type OceanShadingOptions } from './oceanMaterial';
@@ -30,8 +32,12 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
   readonly backgroundWater = { value: 0 };
   /** The scene as the refraction sees it (the `refractions` shading option), drawn before the sea. */
   readonly refraction = new SceneRefraction();
-  /** What the refraction's capture leaves out: this surface and what belongs with it (the Ocean's sky background). */
+  /**
+   * The objects of this sea that no reflection shows (of this sea or of another): the surface,
+   * and what its owner adds (the Ocean adds its sky background).
+   */
   readonly seaObjects: Object3D[] = [this];
+  private readonly reflection = new SceneReflection(this.seaObjects);
 
   /**
    * @param waves the layers to draw and the choppiness, asked before every render (they change
@@ -58,7 +64,33 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
     this.name = 'OceanSurface';
     this.frustumCulled = false; // the vertex shader moves every vertex; the sea is always in view
     this.cellsPerRing = 32;
-    this.material.useSceneRefraction(this.refraction.uniforms);
+    this.material.shareUniforms(this.refraction.uniforms);
+    this.material.shareUniforms(this.reflection.uniforms);
+  }
+
+  /**
+   * The size of the scene's reflection (the option reflections, 'scene') as a fraction of the
+   * drawing buffer's, from 0 to 1; 0 shows the sky instead and frees the reflection's render
+   * target. The quality levels set it (runtime/adaptiveQuality.ts: 0 at 'lowest').
+   * @defaultValue 0.5
+   */
+  get reflectionScale(): number {
+    return this.reflection.scale;
+  }
+
+  set reflectionScale(scale: number) {
+    if (!(typeof scale === 'number' && scale >= 0 && scale <= 1)) throw new ParameterError('reflectionScale', scale, 'a number from 0 to 1');
+    this.reflection.scale = scale;
+  }
+
+  /**
+   * Which objects the sea reflects (the option reflections, 'scene'): those whose layers meet this
+   * mask and the camera's. Change it in place (reflectionLayers.disable(1)). Lights must be on it
+   * too to light what is reflected.
+   * @defaultValue every layer
+   */
+  get reflectionLayers(): ReflectionLayers {
+    return this.reflection.layers;
   }
 
   /**
@@ -81,7 +113,8 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
 
   /**
    * Called by three.js before each render of the sea: resizes the grid to the drawing buffer's
-   * height if needed, centres the rings under `camera` (placeRings) and, with the refractions
+   * height if needed, centres the rings under `camera` (placeRings), renders the scene's reflection
+   * (sceneReflection.ts) or frees it where the sea reflects only its sky, and, with the refractions
    * option 'scene' and the full shading, draws the scene without the sea for the refraction.
    */
   override onBeforeRender(renderer: WebGLRenderer, scene: Scene, camera: Camera): void {
@@ -89,6 +122,8 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
     this.placeRings(camera);
     if (this.material.looksIntoScene) this.refraction.capture(renderer, scene, camera, this.seaObjects);
     else this.refraction.release();
+    if (this.material.reflectsScene) this.reflection.render(renderer, scene, camera);
+    else this.reflection.freeTarget();
   }
 
   /**
@@ -162,5 +197,6 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
     this.geometry.dispose();
     this.material.dispose();
     this.refraction.dispose();
+    this.reflection.dispose();
   }
 }

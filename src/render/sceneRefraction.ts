@@ -35,7 +35,7 @@ let capturing = false;
 const captureLayers = new Layers();
 
 export class SceneRefraction {
-  /** The uniforms of sceneRefraction.glsl, shared with the sea's material (OceanMaterial.useSceneRefraction). */
+  /** The uniforms of sceneRefraction.glsl, shared with the sea's material (OceanMaterial.shareUniforms). */
   readonly uniforms = {
     sceneColour: { value: null as Texture | null },
     sceneDepth: { value: null as Texture | null },

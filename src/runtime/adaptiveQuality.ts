@@ -47,13 +47,18 @@ export interface QualityStep {
    * the picture's; 0 draws none, and the sea shows only the sky through the water.
    */
   refractionScale: number;
+  /**
+   * The scene's reflection's size as a fraction of the drawing buffer's (OceanSurface.reflectionScale;
+   * 0: the sea reflects only its sky). Its render costs about the scene's own draw at that size.
+   */
+  reflectionScale: number;
 }
 
 export const QUALITY_STEPS: Readonly<Record<QualityLevel, QualityStep>> = {
-  high: { renderScale: 1, maxResolution: 1024, msaa: true, maxCascades: MAX_CASCADES, fewestGridCells: FEWEST_CELLS_PER_RING, refractionScale: 1 },
-  medium: { renderScale: 0.75, maxResolution: 128, msaa: false, maxCascades: MAX_CASCADES, fewestGridCells: FEWEST_CELLS_PER_RING, refractionScale: 0.5 },
-  low: { renderScale: 0.5, maxResolution: 64, msaa: false, maxCascades: 2, fewestGridCells: FEWEST_CELLS_PER_RING, refractionScale: 0.5 },
-  lowest: { renderScale: 0.3, maxResolution: 32, msaa: false, maxCascades: 2, fewestGridCells: 16, refractionScale: 0 },
+  high: { renderScale: 1, maxResolution: 1024, msaa: true, maxCascades: MAX_CASCADES, fewestGridCells: FEWEST_CELLS_PER_RING, refractionScale: 1, reflectionScale: 0.5 },
+  medium: { renderScale: 0.75, maxResolution: 128, msaa: false, maxCascades: MAX_CASCADES, fewestGridCells: FEWEST_CELLS_PER_RING, refractionScale: 0.5, reflectionScale: 0.5 },
+  low: { renderScale: 0.5, maxResolution: 64, msaa: false, maxCascades: 2, fewestGridCells: FEWEST_CELLS_PER_RING, refractionScale: 0.5, reflectionScale: 0.5 },
+  lowest: { renderScale: 0.3, maxResolution: 32, msaa: false, maxCascades: 2, fewestGridCells: 16, refractionScale: 0, reflectionScale: 0 },
 };
 
 /**

@@ -18,7 +18,7 @@ export interface QualityTarget {
 }
 
 /**
- * Sets the pixel ratio, MSAA, grid floor and refraction capture's scale of `step`, and has the ocean run the grid and the cascades `asked`
+ * Sets the pixel ratio, MSAA, grid floor, refraction capture's scale and reflection size of `step`, and has the ocean run the grid and the cascades `asked`
  * for within the step's (the ocean is rebuilt only when they change).
  */
 export function applyQualityStep({ renderer, output, ocean, pixelRatio }: QualityTarget, asked: Readonly<SimulationParameters>, step: QualityStep): void {
@@ -26,6 +26,7 @@ export function applyQualityStep({ renderer, output, ocean, pixelRatio }: Qualit
   output.msaa = step.msaa;
   ocean.surface.fewestCellsPerRing = step.fewestGridCells;
   ocean.surface.refraction.scale = step.refractionScale;
+  ocean.surface.reflectionScale = step.reflectionScale;
   const wanted = simulationAtQuality(asked, step);
   const running = ocean.parameters;
   const samePatches = running.patchSizes.length === wanted.patchSizes.length && running.patchSizes.every((size, i) => size === wanted.patchSizes[i]);

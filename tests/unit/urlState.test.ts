@@ -48,6 +48,7 @@ function changed(): AppState {
     scatterColor: [0, 0.04, 0.07],
     mode: 'height',
     refractions: 'sky',
+    reflections: 'sky',
     wireframe: true,
     inspector: true,
     buoys: true,

@@ -3,7 +3,7 @@
  * object on a renderer of the test's own, with pixel and memory probes for the Playwright tests
  * (embed.spec.ts, lifecycle.spec.ts).
  */
-import { PerspectiveCamera, Scene, WebGLRenderer } from 'three';
+import { BoxGeometry, Mesh, MeshBasicMaterial, PerspectiveCamera, Scene, WebGLRenderer } from 'three';
 import '../../../src/embed/register';
 import { defineFftOceanElement, FftOceanElement } from '../../../src/embed/fftOceanElement';
 import { Ocean } from '../../../src/index';
@@ -66,7 +66,7 @@ async function drawn(el: FftOceanElement, count = 1, timeout = 20_000): Promise<
   }
 }
 
-const harness = { Ocean, FftOceanElement, WebGLRenderer, Scene, PerspectiveCamera, defineFftOceanElement, pixels, frames, create, drawn };
+const harness = { Ocean, FftOceanElement, WebGLRenderer, Scene, PerspectiveCamera, Mesh, BoxGeometry, MeshBasicMaterial, defineFftOceanElement, pixels, frames, create, drawn };
 
 declare global {
   interface Window {

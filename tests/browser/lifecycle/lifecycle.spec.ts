@@ -89,6 +89,52 @@ test('50 Ocean create/dispose cycles on one renderer (with their refraction capt
   expect(errors).toEqual([]);
 });
 
+test('an Ocean reflecting the scene holds its reflection target while it reflects and frees it with the sea', async ({ page }) => {
+  const errors = await openPage(page);
+  const result = await page.evaluate(() => {
+    const { Ocean, WebGLRenderer, Scene, PerspectiveCamera, Mesh, BoxGeometry, MeshBasicMaterial } = window.embed;
+    const renderer = new WebGLRenderer();
+    renderer.setSize(160, 90);
+    const scene = new Scene();
+    const camera = new PerspectiveCamera(50, 16 / 9, 0.5, 1e5);
+    camera.position.set(0, 8, 0);
+    camera.lookAt(0, 0, -50);
+    const box = new Mesh(new BoxGeometry(4, 4, 4), new MeshBasicMaterial({ color: 0xff0000 }));
+    box.position.set(0, 3, -40);
+    scene.add(box);
+    const textures = () => renderer.info.memory.textures;
+    /** One sea's life: the textures it holds reflecting the box, and after its reflection is turned off. */
+    const cycle = (i: number) => {
+      const ocean = new Ocean(renderer, { resolution: 32, seed: i, localWaves: false, worker: false });
+      scene.add(ocean);
+      ocean.update(2 + i);
+      renderer.render(scene, camera);
+      const reflecting = textures();
+      ocean.setShading({ reflections: 'sky' });
+      renderer.render(scene, camera);
+      const sky = textures();
+      ocean.setShading({ reflections: 'scene' });
+      renderer.render(scene, camera);
+      scene.remove(ocean);
+      ocean.dispose();
+      return { reflecting, sky };
+    };
+    renderer.render(scene, camera); // the box alone
+    const baseline = { ...renderer.info.memory };
+    const lives = [0, 1, 2].map(cycle);
+    const after = { ...renderer.info.memory };
+    box.geometry.dispose();
+    box.material.dispose();
+    renderer.dispose();
+    return { baseline, lives, after };
+  });
+  // The reflection's render target is two textures (its colour and its depth), freed when the sea
+  // shows only its sky, and with the sea.
+  for (const { reflecting, sky } of result.lives) expect(reflecting - sky).toBe(2);
+  expect(result.after).toEqual(result.baseline);
+  expect(errors).toEqual([]);
+});
+
 test('a parameter change reuses the compiled shaders, and what it replaced is freed after the next update', async ({ page }) => {
   const errors = await openPage(page);
   const result = await page.evaluate(() => {

@@ -1,0 +1,212 @@
+/**
+ * The scene reflected in the sea: a render of the scene (without the sea, sceneCapture.ts) from the
+ * camera mirrored in the plane y = 0, with an oblique near plane on y = 0 so that nothing below the
+ * water (no object's underside) is in it, and its depth, which shaders/surface/sceneReflection.glsl
+ * reads along each wave's reflected ray. Made again before every render of the sea (the surface's
+ * onBeforeRender), at `scale` times the drawing buffer's size. Owns its camera and render target.
+ *
+ * The mirror: a point (x, y, z) is seen in calm water where its image (x, −y, z) would be seen
+ * (the law of reflection). The mirror camera is the camera reflected in y = 0, turned into a
+ * proper rotation (its x axis negated, so that faces keep their winding) with the projection's x
+ * flipped to match: the same picture as the main camera would take of the mirrored scene, mirrored
+ * left to right, which the shader's matrices account for.
+ */
+import {
+  Camera,
+  DepthTexture,
+  HalfFloatType,
+  Layers,
+  Matrix4,
+  Plane,
+  UnsignedByteType,
+  Vector2,
+  Vector3,
+  Vector4,
+  WebGLRenderTarget,
+  type Object3D,
+  type Scene,
+  type Texture,
+  type WebGLRenderer,
+} from 'three';
+import { renderSceneWithoutSea } from './sceneCapture';
+
+/** Seas whose objects every reflection hides (so that no sea is reflected in another), by owner. */
+const seas = new Map<SceneReflection, readonly Object3D[]>();
+/** True while a reflection renders: a sea drawn in it (one not registered) does not reflect again. */
+let capturing = false;
+
+/** Reflection in y = 0: (x, y, z) → (x, −y, z). */
+const MIRROR = new Matrix4().makeScale(1, -1, 1);
+/** The camera's own x axis negated, which makes the mirrored frame a rotation again. */
+const FLIP_X = new Matrix4().makeScale(-1, 1, 1);
+const WATER_PLANE = new Plane(new Vector3(0, 1, 0), 0);
+
+/**
+ * A three.js Layers object as the reflection takes it (OceanSurface.reflectionLayers): which of
+ * the 32 layers are reflected. The object is a THREE.Layers; change it in place.
+ */
+export interface ReflectionLayers {
+  /** One bit per layer. */
+  mask: number;
+  /** Only this layer. */
+  set(layer: number): void;
+  enable(layer: number): void;
+  disable(layer: number): void;
+  toggle(layer: number): void;
+  enableAll(): void;
+  disableAll(): void;
+  isEnabled(layer: number): boolean;
+}
+
+export interface SceneReflectionUniforms {
+  sceneReflectionColor: { value: Texture | null };
+  sceneReflectionDepth: { value: Texture | null };
+  sceneReflectionToClip: { value: Matrix4 };
+  sceneReflectionFromClip: { value: Matrix4 };
+  sceneReflectionShown: { value: boolean };
+}
+
+export class SceneReflection {
+  /** The mirror camera: its matrices are set here, never from a position and rotation. */
+  private readonly camera = new Camera();
+  private target: WebGLRenderTarget | null = null;
+  private readonly size = new Vector2();
+  private readonly plane = new Plane();
+  private readonly eye = new Vector3();
+  private readonly toEye = new Matrix4();
+  private readonly clipPlane = new Vector4();
+  private readonly corner = new Vector4();
+  /** The uniforms the surface's material shares (sceneReflection.glsl). */
+  readonly uniforms: SceneReflectionUniforms = {
+    sceneReflectionColor: { value: null },
+    sceneReflectionDepth: { value: null },
+    sceneReflectionToClip: { value: new Matrix4() },
+    sceneReflectionFromClip: { value: new Matrix4() },
+    sceneReflectionShown: { value: false },
+  };
+  /** Which objects are reflected: those whose layers meet these (and the camera's). All by default. */
+  readonly layers = new Layers();
+  /** The reflection's size as a fraction of the drawing buffer's; 0 shows the sky instead (no render target is kept). */
+  scale = 0.5;
+
+  /** @param sea the objects of this sea, hidden in every reflection (of this sea and of any other). */
+  constructor(sea: readonly Object3D[]) {
+    this.layers.enableAll();
+    this.camera.matrixWorldAutoUpdate = false;
+    seas.set(this, sea);
+  }
+
+  /**
+   * Renders the reflection of `scene` seen from `camera` (before the sea is drawn with it). Where it
+   * cannot (scale 0, inside another reflection, a camera that is not a perspective one, or a depth
+   * buffer that is logarithmic or reversed, whose depths the shader does not read back) the sea
+   * shows its sky; and where there is nothing but seas to reflect, nothing is rendered.
+   */
+  render(renderer: WebGLRenderer, scene: Scene, camera: Camera): void {
+    if (capturing) {
+      this.uniforms.sceneReflectionShown.value = false;
+      return;
+    }
+    const hidden = new Set([...seas.values()].flat());
+    const shown = this.scale > 0 && isPerspective(camera) && plainDepth(renderer) && !onlySea(scene, hidden);
+    this.uniforms.sceneReflectionShown.value = shown;
+    if (!shown) {
+      if (this.scale <= 0) this.freeTarget();
+      return;
+    }
+    const target = this.targetFor(renderer);
+    this.placeCamera(camera);
+    const mirror = this.camera;
+    mirror.layers.mask = this.layers.mask & camera.layers.mask;
+    capturing = true;
+    try {
+      renderSceneWithoutSea(renderer, scene, mirror, target, [...hidden], mirror.layers);
+    } finally {
+      capturing = false;
+    }
+    // The shader works from the eye (vFromEye): the matrices take the eye's position in double
+    // precision here, not in float32 there.
+    camera.getWorldPosition(this.eye);
+    const toClip = this.uniforms.sceneReflectionToClip.value;
+    toClip.multiplyMatrices(mirror.projectionMatrix, mirror.matrixWorldInverse).multiply(this.toEye.makeTranslation(this.eye));
+    this.uniforms.sceneReflectionFromClip.value.copy(toClip).invert();
+    this.uniforms.sceneReflectionColor.value = target.texture;
+    this.uniforms.sceneReflectionDepth.value = target.depthTexture;
+  }
+
+  /** Frees the render target (until the next render), for a sea that shows its sky. */
+  freeTarget(): void {
+    if (this.target === null) return;
+    this.target.depthTexture?.dispose();
+    this.target.dispose();
+    this.target = null;
+    this.uniforms.sceneReflectionColor.value = null;
+    this.uniforms.sceneReflectionDepth.value = null;
+  }
+
+  /** Frees the render target and forgets this sea. */
+  dispose(): void {
+    this.freeTarget();
+    seas.delete(this);
+  }
+
+  /**
+   * The mirror camera of `camera`: its frame M·C·F (M the mirror, F the x flip), its projection
+   * F·P·F, then the near plane made oblique on y = 0 (Lengyel 2005, "Oblique view frustum depth
+   * projection and clipping", J. Game Dev. 1(2): the third row of P replaced so that the near
+   * plane is the water's), which clips everything below the water.
+   */
+  private placeCamera(camera: Camera): void {
+    const mirror = this.camera;
+    mirror.matrixWorld.multiplyMatrices(MIRROR, camera.matrixWorld).multiply(FLIP_X);
+    mirror.matrixWorldInverse.copy(mirror.matrixWorld).invert();
+    const p = mirror.projectionMatrix.copy(camera.projectionMatrix).premultiply(FLIP_X).multiply(FLIP_X).elements;
+    const plane = this.plane.copy(WATER_PLANE).applyMatrix4(mirror.matrixWorldInverse);
+    const c = this.clipPlane.set(plane.normal.x, plane.normal.y, plane.normal.z, plane.constant);
+    // The frustum's corner opposite the plane, in view space (Lengyel's Q = P⁻¹·(sgn cx, sgn cy, 1, 1)).
+    const q = this.corner.set((Math.sign(c.x) + p[8]) / p[0], (Math.sign(c.y) + p[9]) / p[5], -1, (1 + p[10]) / p[14]);
+    c.multiplyScalar(2 / c.dot(q));
+    p[2] = c.x;
+    p[6] = c.y;
+    p[10] = c.z + 1;
+    p[14] = c.w;
+    mirror.projectionMatrixInverse.copy(mirror.projectionMatrix).invert();
+  }
+
+  /** The render target at `scale` times the drawing buffer, with a depth texture; made or resized as needed. */
+  private targetFor(renderer: WebGLRenderer): WebGLRenderTarget {
+    renderer.getDrawingBufferSize(this.size);
+    const width = Math.max(1, Math.round(this.size.x * this.scale));
+    const height = Math.max(1, Math.round(this.size.y * this.scale));
+    if (this.target === null) {
+      // Half floats keep the scene's HDR radiance (a sunlit white is above 1); 8 bits where the
+      // GPU cannot render into them.
+      const halfFloat = renderer.extensions.has('EXT_color_buffer_half_float') || renderer.extensions.has('EXT_color_buffer_float');
+      this.target = new WebGLRenderTarget(width, height, {
+        type: halfFloat ? HalfFloatType : UnsignedByteType,
+        depthTexture: new DepthTexture(width, height),
+      });
+      this.target.texture.name = 'SceneReflection';
+    } else if (this.target.width !== width || this.target.height !== height) {
+      this.target.setSize(width, height);
+    }
+    return this.target;
+  }
+}
+
+/** Whether `object` holds nothing but the seas' objects (an Ocean, a scene of Oceans): nothing to reflect. */
+function onlySea(object: Object3D, sea: ReadonlySet<Object3D>): boolean {
+  if (sea.has(object)) return true;
+  return object.children.length > 0 && (object.type === 'Object3D' || object.type === 'Scene' || object.type === 'Group') && object.children.every((child) => onlySea(child, sea));
+}
+
+/** A perspective projection (three's isPerspectiveMatrix: its w is −z). */
+function isPerspective(camera: Camera): boolean {
+  return camera.projectionMatrix.elements[11] === -1;
+}
+
+/** Whether `renderer` writes depths as a plain perspective projection does (not logarithmic, not reversed). */
+function plainDepth(renderer: WebGLRenderer): boolean {
+  const depth = renderer.state.buffers.depth as { getReversed?: () => boolean };
+  return !renderer.capabilities.logarithmicDepthBuffer && depth.getReversed?.() !== true;
+}
