@@ -117,6 +117,7 @@ export class Panel {
     const look = gui.addFolder('Sun & shading');
     this.number(look, 'sunElevation', 'sun elevation (°)', -10, 90, 0.5);
     this.number(look, 'sunAzimuth', 'sun azimuth (°)', -180, 180, 1);
+    this.number(look, 'cloudCover', 'cloud cover', 0, 1, 0.05);
     this.bind(look.add(state, 'mode', SHADING_MODES as unknown as string[]).name('shading mode'), 'mode');
     this.bind(look.add(state, 'refractions', REFRACTION_SOURCES as unknown as string[]).name('seen through the water'), 'refractions');
     this.bind(look.add(state, 'reflections', REFLECTIONS as unknown as string[]).name('reflections'), 'reflections');
