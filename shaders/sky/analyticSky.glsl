@@ -1,7 +1,8 @@
 // The analytic sky: skyRadiance(direction) is the linear-RGB radiance seen in a world direction
 // (unit vector, y up). SkyEnvironment (src/render/skyEnvironment.ts) renders it into a cube map;
-// scripts/make-skybox-faces.mjs is a JS port of this file (keep the two in step — the browser test
-// tests/browser/sky/sky.spec.ts compares the shipped faces with this shader in many directions).
+// scripts/make-skybox-faces.mjs is a JS port of this file's clear sky, cloudCover 0 (keep the two in
+// step — the browser test tests/browser/sky/sky.spec.ts compares the shipped faces with this shader
+// in many directions).
 //
 // Above the horizon, single scattering after Hoffman & Preetham, "Rendering Outdoor Light
 // Scattering in Real Time" (GDC 2002), the model also behind three.js's Sky object: the
