@@ -77,7 +77,7 @@ async function loadSeaStates() {
     optimizeDeps: { noDiscovery: true },
   });
   try {
-    const { SEA_PRESETS, beaufortPreset } = await server.ssrLoadModule('/src/spectrum/presets.ts');
+    const { SEA_PRESETS, beaufortPreset, presetCloudCover } = await server.ssrLoadModule('/src/spectrum/presets.ts');
     const { seaState } = await server.ssrLoadModule('/src/spectrum/seaState.ts');
     const states = [
       ...Object.entries(SEA_PRESETS),
@@ -87,6 +87,7 @@ async function loadSeaStates() {
       name,
       file: `${name.toLowerCase().replace(/\s+/g, '-')}.png`,
       parameters,
+      cloudCover: presetCloudCover(parameters),
       ...seaState(parameters),
     }));
   } finally {
@@ -108,6 +109,8 @@ function shotArguments(state) {
   for (const [key, value] of Object.entries(state.parameters)) {
     args.push(`--${key.replace(/[A-Z]/g, (c) => `-${c.toLowerCase()}`)}`, optionText(value));
   }
+  // The sky the preset goes with (overcast from force 8), as the app's preset menu sets it.
+  args.push('--cloud-cover', String(state.cloudCover));
   args.push('--seed', String(SEED), '--time', String(TIME), '--size', SIZE, '--cam', state.cam);
   args.push('--out', join(OUT_DIR, state.file), '--no-build');
   return args;

@@ -22,7 +22,7 @@ export {
 export { createCascadeSpectra, type InitialSpectrum } from './spectrum/initialSpectrum';
 export { phillips } from './spectrum/phillips';
 export { seaState, waveNumberSpectrum, frequencySpectrum } from './spectrum/seaState';
-export { SEA_PRESETS, beaufortPreset } from './spectrum/presets';
+export { SEA_PRESETS, beaufortPreset, presetCloudCover, OVERCAST_FROM_FORCE } from './spectrum/presets';
 export { cascadeBands, type CascadeBand } from './spectrum/cascadeBands';
 export { orderLayers, type WaveLayer, type LayerFrame, type LayerFieldsOnCpu, type LayerQueryFields } from './layers/waveLayer';
 export { FftCascade, type FftBackend } from './layers/fftCascade';

@@ -24,7 +24,7 @@ import { checkThreeRelease, checkWebGLRenderer } from './fft/threeInternals';
 import { heightAt, normalAt, velocityAt } from './layers/surfaceQuery';
 import { checkCoordinates, surfaceHeightAt, surfaceHeightsAt, surfaceNormalAt, surfaceVectorsAt, surfaceVelocityAt, warmUpQueries } from './oceanQueries';
 import { SeaStatistics } from './oceanStatistics';
-import { checkOptionNames, DisposedError, isOptionsObject, optionAliases } from './parameters/options';
+import { checkOption, checkOptionNames, DisposedError, isOptionsObject, optionAliases } from './parameters/options';
 import { ParameterError, SIMULATION_OPTIONS, type SimulationParameters } from './parameters/parameters';
 import { DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ShadingChanges, type ShadingOptions } from './parameters/sceneOptions';
 import { createSeabedMap, type Seabed } from './layers/seabed';
@@ -35,6 +35,8 @@ export interface OceanOptions extends Partial<SimulationParameters>, OceanShadin
   sunElevation?: number;
   /** Sun azimuth in degrees from +x towards +z. @defaultValue 40 */
   sunAzimuth?: number;
+  /** How much of the sky is cloud, [0, 1]: 0 clear, 1 overcast (SunOptions.cloudCover); see Ocean.setSun. @defaultValue 0 */
+  cloudCover?: number;
   /**
    * Direction towards the sun instead of sunElevation and sunAzimuth: a Vector3 or [x, y, z] in
    * world space (y up), any length; see Ocean.setSun.
@@ -59,6 +61,8 @@ export interface SunPosition {
    * elevation or azimuth. @defaultValue undefined (the sun is at elevation and azimuth)
    */
   direction?: SunDirection;
+  /** How much of the sky is cloud, [0, 1]: 0 clear, 1 overcast (SunOptions.cloudCover). @defaultValue the cover in force */
+  cloudCover?: number;
 }
 
 export { DisposedError };
@@ -78,7 +82,7 @@ const OCEAN_OPTION_KEYS: readonly string[] = [
   'localWaves',
   'seabed',
 ];
-const SUN_POSITION_KEYS: readonly string[] = ['elevation', 'azimuth', 'direction'];
+const SUN_POSITION_KEYS: readonly string[] = ['elevation', 'azimuth', 'direction', 'cloudCover'];
 
 /** What the batch queries write into. */
 export type WritableNumbers = { length: number; [index: number]: number };
@@ -142,7 +146,7 @@ export class Ocean extends Object3D<OceanEventMap> {
     // Checked before anything is allocated: a bad seabed throws with nothing to free.
     this.shore.setMap(options.seabed === undefined || options.seabed === null ? null : createSeabedMap(options.seabed, renderer));
     this.simulation = new OceanSimulation(renderer, simulationParameters, { path: options.path, worker: options.worker, localWaves: options.localWaves });
-    this.sky = new SkyEnvironment(renderer, { sunElevation: sun.elevation, sunAzimuth: sun.azimuth });
+    this.sky = new SkyEnvironment(renderer, { sunElevation: sun.elevation, sunAzimuth: sun.azimuth, cloudCover: options.cloudCover });
     const sim = this.simulation;
     this.surface = new OceanSurface(
       { environment: this.sky.environment, sunDirection: this.sky.skyUniforms.skySunDirection, daylight: this.sky.skyUniforms },
@@ -358,7 +362,8 @@ export class Ocean extends Object3D<OceanEventMap> {
    * azimuth) or setSun({ elevation, azimuth }) (a missing one stays), or by the direction towards
    * it, setSun({ direction }): a Vector3 or [x, y, z] (y up, any length but 0), which becomes
    * elevation atan2(y, √(x² + z²)) and azimuth atan2(z, x), from +x towards +z. Bad values throw a
-   * ParameterError and the sun stays.
+   * ParameterError and the sun stays. setSun({ cloudCover }) clouds the sky over (0 clear … 1
+   * overcast, SunOptions.cloudCover): the sky greys and the sun, its glint and caustics dim.
    */
   setSun(elevation: number, azimuth: number): void;
   setSun(sun: SunPosition): void;
@@ -368,7 +373,9 @@ export class Ocean extends Object3D<OceanEventMap> {
     const sun = typeof sunOrElevation === 'number' ? { elevation: sunOrElevation, azimuth } : sunOrElevation;
     checkOptionNames(sun, SUN_POSITION_KEYS, 'setSun', { allowed: '{ elevation, azimuth } (degrees), { direction } or (elevation, azimuth)' });
     const { elevation, azimuth: angle } = sunAngles(sun, current, 'direction');
+    if (sun.cloudCover !== undefined) checkOption(SUN_OPTIONS, 'cloudCover', sun.cloudCover); // before anything moves
     this.sky.setSun(elevation, angle);
+    if (sun.cloudCover !== undefined) this.sky.setCloudCover(sun.cloudCover);
   }
 
   /**

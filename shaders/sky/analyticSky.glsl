@@ -1,7 +1,8 @@
 // The analytic sky: skyRadiance(direction) is the linear-RGB radiance seen in a world direction
 // (unit vector, y up). SkyEnvironment (src/render/skyEnvironment.ts) renders it into a cube map;
-// scripts/make-skybox-faces.mjs is a JS port of this file (keep the two in step — the browser test
-// tests/browser/sky/sky.spec.ts compares the shipped faces with this shader in many directions).
+// scripts/make-skybox-faces.mjs is a JS port of this file's clear sky, cloudCover 0 (keep the two in
+// step — the browser test tests/browser/sky/sky.spec.ts compares the shipped faces with this shader
+// in many directions).
 //
 // Above the horizon, single scattering after Hoffman & Preetham, "Rendering Outdoor Light
 // Scattering in Real Time" (GDC 2002), the model also behind three.js's Sky object: the
@@ -37,6 +38,9 @@ uniform vec3 skySunColor;       // linear RGB colour of sunlight above the atmos
 uniform float skySunIntensity;  // E_sun: scales sky and sun together
 uniform vec3 skyDeepWaterColor; // linear RGB radiance of the deep water below the horizon
 uniform float skyDaylight;      // the sky's light as a fraction of the day's (src/render/daylight.ts)
+uniform float skyCloudCover;    // 0 clear … 1 overcast: the weight of the overcast sky below
+uniform float skyOvercastZenith; // the overcast zenith's luminance per unit of E_sun (daylight.ts, Krochmann & Seidl 1974)
+uniform float skyCloudSun;      // the direct sunlight the clouds let through (daylight.ts, Kasten & Czeplak 1980)
 
 const float SKY_PI = 3.141592653589793;
 // Zenith optical depths at sea level (β·H) for 680, 550 and 440 nm: Rayleigh β = (5.8, 13.5,
@@ -92,7 +96,12 @@ vec3 skyRadiance(vec3 direction) {
   float limb = 1.0 - 0.6 * (1.0 - sqrt(1.0 - r * r));
   float disk = (1.0 - smoothstep(SKY_SUN_RADIUS - SKY_SUN_EDGE, SKY_SUN_RADIUS + SKY_SUN_EDGE, gamma)) * limb;
   disk *= smoothstep(-SKY_SUN_EDGE, SKY_SUN_EDGE, d.y);
-  vec3 sky = inScattered + SKY_SUN_DISK_GAIN * disk * sunIrradiance * sunTransmittance;
+  vec3 sky = inScattered + SKY_SUN_DISK_GAIN * skyCloudSun * disk * sunIrradiance * sunTransmittance;
+  // Clouds: towards the CIE standard overcast sky (Moon & Spencer 1942), grey and the same in every
+  // azimuth, L(θ) = L_z·(1 + 2·cos θ)/3 with θ from the zenith, three times brighter overhead than
+  // at the horizon. The clear sky's own scattering, and its sun disk, fade under it.
+  vec3 overcast = sunIrradiance * skyOvercastZenith * (1.0 + 2.0 * max(d.y, 0.0)) / 3.0;
+  sky = mix(sky, overcast, skyCloudCover);
 
   if (skyWeight >= 1.0) return sky;
   const vec3 darkest = vec3(1e-6); // keeps log finite (a sky with the sun far below the horizon is 0)

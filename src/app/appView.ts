@@ -49,6 +49,7 @@ export function createAppOcean(renderer: WebGLRenderer, state: Readonly<AppState
     path: state.path,
     sunElevation: state.sunElevation,
     sunAzimuth: state.sunAzimuth,
+    cloudCover: state.cloudCover,
     ior: state.ior,
     absorption: state.absorption,
     scatterColor: state.scatterColor,

@@ -47,8 +47,8 @@ export function applyChanges({ ocean, state, loop, extras, overlay, applyQuality
     reflections: changes.reflections,
   };
   if (Object.values(shading).some((value) => value !== undefined)) ocean.setShading(shading);
-  if (has('sunElevation') || has('sunAzimuth')) {
-    ocean.setSun(changes.sunElevation ?? state.sunElevation, changes.sunAzimuth ?? state.sunAzimuth);
+  if (has('sunElevation') || has('sunAzimuth') || has('cloudCover')) {
+    ocean.setSun({ elevation: changes.sunElevation ?? state.sunElevation, azimuth: changes.sunAzimuth ?? state.sunAzimuth, cloudCover: changes.cloudCover ?? state.cloudCover });
   }
   if (changes.path !== undefined) ocean.simulation.pathPreference = changes.path;
   if (changes.wireframe !== undefined) ocean.surface.material.wireframe = changes.wireframe;

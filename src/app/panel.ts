@@ -11,18 +11,25 @@ import GUI, { type Controller } from 'lil-gui';
 import 'lil-gui/dist/lil-gui.css'; // as a file (see vite.config.ts): GUI's injected <style> breaks under a strict CSP
 import { Color } from 'three';
 import { colorToLinear, REFLECTIONS, REFRACTION_SOURCES, SHADING_MODES } from '../parameters/sceneOptions';
-import { ParameterError, SPECTRUM_MODELS, SPREADING_MODELS, type SimulationParameters } from '../parameters/parameters';
-import { beaufortPreset, SEA_PRESETS } from '../spectrum/presets';
+import { ParameterError, SPECTRUM_MODELS, SPREADING_MODELS } from '../parameters/parameters';
+import { beaufortPreset, presetCloudCover, SEA_PRESETS } from '../spectrum/presets';
 import { MIN_TARGET_FPS } from '../parameters/qualityOptions';
 import { PATH_PREFERENCES } from '../layers/oceanSimulation';
 import { assignState, cloneState, urlRounded, type AppState, type Rgb } from './urlState';
 import { QUALITY_SETTINGS, type QualitySetting } from '../runtime/adaptiveQuality';
 
-/** The presets the panel offers: the named sea states, then Beaufort forces 0–12. */
-export const PANEL_PRESETS: Readonly<Record<string, Partial<SimulationParameters>>> = Object.freeze({
-  ...SEA_PRESETS,
-  ...Object.fromEntries(Array.from({ length: 13 }, (_, force) => [`Beaufort ${force}`, beaufortPreset(force)])),
-});
+/**
+ * The presets the panel offers: the named sea states, then Beaufort forces 0–12, each with the sky
+ * it goes with (presetCloudCover: overcast from force 8).
+ */
+export const PANEL_PRESETS: Readonly<Record<string, Partial<AppState>>> = Object.freeze(
+  Object.fromEntries(
+    Object.entries({
+      ...SEA_PRESETS,
+      ...Object.fromEntries(Array.from({ length: 13 }, (_, force) => [`Beaufort ${force}`, beaufortPreset(force)])),
+    }).map(([name, preset]) => [name, { ...preset, cloudCover: presetCloudCover(preset) }]),
+  ),
+);
 
 export const RESOLUTIONS = [16, 32, 64, 128, 256, 512, 1024];
 
@@ -117,6 +124,7 @@ export class Panel {
     const look = gui.addFolder('Sun & shading');
     this.number(look, 'sunElevation', 'sun elevation (°)', -10, 90, 0.5);
     this.number(look, 'sunAzimuth', 'sun azimuth (°)', -180, 180, 1);
+    this.number(look, 'cloudCover', 'cloud cover', 0, 1, 0.05);
     this.bind(look.add(state, 'mode', SHADING_MODES as unknown as string[]).name('shading mode'), 'mode');
     this.bind(look.add(state, 'refractions', REFRACTION_SOURCES as unknown as string[]).name('seen through the water'), 'refractions');
     this.bind(look.add(state, 'reflections', REFLECTIONS as unknown as string[]).name('reflections'), 'reflections');
@@ -176,7 +184,7 @@ export class Panel {
     for (const controller of this.gui.controllersRecursive()) controller.updateDisplay();
   }
 
-  /** Applies a preset's simulation parameters (all or nothing). */
+  /** Applies a preset's simulation parameters and its sky's cloud cover (all or nothing). */
   preset(name: string): void {
     this.changeMany(PANEL_PRESETS[name], `preset ${name}`);
     this.presetProxy.preset = '';

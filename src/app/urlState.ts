@@ -8,6 +8,7 @@
  *                                                           SIMULATION_OPTIONS (src/parameters/parameters.ts),
  *                                                           written as parseParameterText reads them
  *   sunElevation sunAzimuth                                   — degrees
+ *   cloudCover 0 (clear) … 1 (overcast)
  *   ior causticPower causticColor absorption scatterColor     — shading; absorption is "r,g,b";
  *                                                               colours are "r,g,b" (linear, ≥ 0)
  *                                                               or CSS ("%231a6b80" is #1a6b80, sRGB);
@@ -61,6 +62,7 @@ export type SceneChoice = (typeof SCENES)[number];
 export interface AppState extends SimulationParameters {
   sunElevation: number;
   sunAzimuth: number;
+  cloudCover: number;
   ior: number;
   causticPower: number;
   causticColor: Rgb;
@@ -152,6 +154,7 @@ export const URL_KEYS: readonly (keyof AppState)[] = [
   ...SIMULATION_KEYS,
   'sunElevation',
   'sunAzimuth',
+  'cloudCover',
   'ior',
   'causticPower',
   'causticColor',

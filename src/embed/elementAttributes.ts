@@ -193,7 +193,11 @@ function applyOption(target: AttributeTarget, group: Group, key: string, name: s
       ocean?.setParameters({ [key]: optionSetting(settings, group, key, next) });
     }
   } else if (group === 'sun') {
-    ocean?.setSun(optionSetting(settings, group, 'sunElevation', next) as number, optionSetting(settings, group, 'sunAzimuth', next) as number);
+    ocean?.setSun({
+      elevation: optionSetting(settings, group, 'sunElevation', next) as number,
+      azimuth: optionSetting(settings, group, 'sunAzimuth', next) as number,
+      cloudCover: optionSetting(settings, group, 'cloudCover', next) as number,
+    });
   } else {
     ocean?.setShading({ [key]: optionSetting(settings, group, key, next) });
   }

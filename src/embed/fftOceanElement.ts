@@ -11,7 +11,7 @@
  *   them (an alias in kebab case too: scatter-colour is scatter-color):
  *     simulation (SIMULATION_OPTIONS): wind-speed, spectrum, fetch, patch-sizes="13.7,79.3,457",
  *       depth="deep", …                                                   → ocean.setParameters
- *     sun (SUN_OPTIONS): sun-elevation, sun-azimuth (degrees)             → ocean.setSun
+ *     sun (SUN_OPTIONS): sun-elevation, sun-azimuth (degrees), cloud-cover → ocean.setSun
  *     shading (SHADING_OPTIONS): ior, absorption="0.45,0.07,0.04", scatter-color and caustic-color
  *       ("#1a6b80", any CSS colour, or linear "r,g,b"), caustic-power, shading-mode (full,
  *       fresnel, reflection, refraction, caustics, height), refractions and reflections (scene, sky)

@@ -10,14 +10,22 @@ export interface SunOptions {
   sunElevation: number;
   /** Sun azimuth in degrees from +x towards +z. @defaultValue 40 */
   sunAzimuth: number;
+  /**
+   * How much of the sky is cloud, [0, 1]: 0 a clear sky, 1 overcast. The generated sky greys
+   * towards the CIE standard overcast sky (Moon & Spencer 1942: three times brighter at the zenith
+   * than at the horizon) and the sun's disk and direct light (glint, caustics) dim as Kasten &
+   * Czeplak (1980) measured under N/8 oktas of cloud, to nothing when overcast. @defaultValue 0
+   */
+  cloudCover: number;
 }
 
 export const SUN_OPTIONS: OptionTable<SunOptions> = {
   sunElevation: { type: 'number', unit: '°', allowed: 'a number of degrees from -90 to 90', check: between(-90, 90) },
   sunAzimuth: { type: 'number', unit: '°', allowed: 'a finite angle in degrees (at most 1e6 in size)', check: finiteAngle },
+  cloudCover: { type: 'number', unit: '', allowed: 'a fraction of the sky from 0 (clear) to 1 (overcast)', check: between(0, 1) },
 };
 
-export const DEFAULT_SUN: Readonly<SunOptions> = Object.freeze({ sunElevation: 30, sunAzimuth: 40 });
+export const DEFAULT_SUN: Readonly<SunOptions> = Object.freeze({ sunElevation: 30, sunAzimuth: 40, cloudCover: 0 });
 
 /** Shading modes; all but 'full' reproduce one of the course report's figures. */
 export const SHADING_MODES = ['full', 'fresnel', 'reflection', 'refraction', 'caustics', 'height'] as const;

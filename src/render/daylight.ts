@@ -29,3 +29,39 @@ export function sunAboveHorizon(sunElevationDeg: number): number {
   const t = Math.min(Math.max((sunElevationDeg + SUN_DISK_RADIUS_DEGREES) / (2 * SUN_DISK_RADIUS_DEGREES), 0), 1);
   return t * t * (3 - 2 * t);
 }
+
+/**
+ * The direct sunlight left under a cloud cover c (0 clear to 1 overcast) as a fraction of the
+ * clear sky's, from Kasten & Czeplak (1980), "Solar and terrestrial radiation dependent on the
+ * amount and type of cloud", Solar Energy 24: 177–189, for N oktas (c = N/8): the global
+ * irradiance G(c) = G(0)·(1 − 0.75·c^3.4) and its diffuse share D/G = 0.3 + 0.7·c², so the direct
+ * beam B = G − D = G(0)·(1 − 0.75·c^3.4)·0.7·(1 − c²), and under a clear sky B(0) = 0.7·G(0):
+ *   B(c)/B(0) = (1 − 0.75·c^3.4)·(1 − c²)   (1 clear, 0 overcast).
+ */
+export function cloudSunTransmittance(cloudCover: number): number {
+  return (1 - 0.75 * cloudCover ** 3.4) * (1 - cloudCover * cloudCover);
+}
+
+/**
+ * The CIE standard overcast sky (Moon & Spencer 1942, "Illumination from a non-uniform sky",
+ * Illuminating Engineering 37: 707–726; CIE S 011/E:2003 sky type 16): the luminance at zenith
+ * angle θ is L(θ) = L_z·(1 + 2·cos θ)/3, three times brighter at the zenith than at the horizon,
+ * the same in every azimuth. Returned relative to L_z, for cos θ (the direction's y, ≥ 0).
+ * shaders/sky/analyticSky.glsl draws the same law (skyOvercast); this is its reference for tests.
+ */
+export function overcastLuminance(cosZenith: number): number {
+  return (1 + 2 * Math.max(cosZenith, 0)) / 3;
+}
+
+/**
+ * The overcast sky's zenith luminance relative to the solar illuminance above the atmosphere, for
+ * the sun at this elevation (degrees): Krochmann & Seidl (1974), "Quantitative data on daylight
+ * for illuminating engineering", Lighting Research & Technology 6(3): 165–171, L_z = 123 +
+ * 8600·sin h cd/m² (h the sun's elevation, 0 below the horizon, where the twilight of skyDaylight
+ * takes over), over the solar illuminance constant of 128 klx (Darula, Kittler & Gueymard 2005,
+ * "Reference luminous solar constant and solar luminance for illuminance calculations", Solar
+ * Energy 79: 559–565; 133.8 klx there, 128 klx in the CIE's older figure), per steradian.
+ */
+export function overcastZenithLuminance(sunElevationDeg: number): number {
+  return (123 + 8600 * Math.max(Math.sin((sunElevationDeg * Math.PI) / 180), 0)) / 128000;
+}

@@ -47,7 +47,7 @@ import {
   type Texture,
   type WebGLRenderer,
 } from 'three';
-import { skyDaylight, sunAboveHorizon } from './daylight';
+import { cloudSunTransmittance, overcastZenithLuminance, skyDaylight, sunAboveHorizon } from './daylight';
 import { shaderSource } from '../shaderSource';
 import { checkOption, checkOptionNames, DisposedError, ParameterError } from '../parameters/options';
 import { DEFAULT_SUN, SUN_OPTIONS } from '../parameters/sceneOptions';
@@ -67,6 +67,8 @@ export interface SkyEnvironmentOptions {
   sunElevation?: number;
   /** Degrees from +x towards +z. @defaultValue 40 */
   sunAzimuth?: number;
+  /** How much of the sky is cloud, [0, 1]: 0 a clear sky, 1 overcast (see SunOptions.cloudCover). @defaultValue 0 */
+  cloudCover?: number;
   /** Cube face size in texels, up to the renderer's largest cube map. @defaultValue 256 */
   resolution?: number;
 }
@@ -75,7 +77,7 @@ export interface SkyEnvironmentOptions {
 export const DEFAULT_SKY_ENVIRONMENT: Readonly<Required<SkyEnvironmentOptions>> = Object.freeze({ ...DEFAULT_SUN, resolution: 256 });
 
 /** The names SkyEnvironmentOptions has: any other is a misspelling. */
-const SKY_ENVIRONMENT_OPTION_KEYS: readonly (keyof SkyEnvironmentOptions)[] = ['sunElevation', 'sunAzimuth', 'resolution'];
+const SKY_ENVIRONMENT_OPTION_KEYS: readonly (keyof SkyEnvironmentOptions)[] = ['sunElevation', 'sunAzimuth', 'cloudCover', 'resolution'];
 
 /**
  * The face set shipped in public/skybox/ and where its sun is: pass these to setSun() so
@@ -144,8 +146,14 @@ export class SkyEnvironment {
     skyDeepWaterColor: { value: Color };
     /** The sky's light as a fraction of the day's: 1 with the sun up, falling through twilight (daylight.ts). */
     skyDaylight: { value: number };
-    /** The fraction of the sun's disk above the horizon: the direct sunlight (daylight.ts). */
+    /** The direct sunlight: the fraction of the sun's disk above the horizon times what the clouds let through (daylight.ts). */
     skySunVisibility: { value: number };
+    /** The cloud cover, 0 clear … 1 overcast: the overcast sky's weight in the generated sky. */
+    skyCloudCover: { value: number };
+    /** The overcast sky's zenith luminance per unit of the sun's irradiance (daylight.ts). */
+    skyOvercastZenith: { value: number };
+    /** The direct sunlight the clouds let through, 1 clear … 0 overcast (daylight.ts). */
+    skyCloudSun: { value: number };
   };
 
   private readonly target: WebGLCubeRenderTarget;
@@ -157,6 +165,7 @@ export class SkyEnvironment {
   private readonly sun = new Vector3();
   private elevation = 0;
   private azimuth = 0;
+  private cloud = 0;
   private loaded: CubeTexture | null = null;
   /** Bumped by every loadFaces, useGeneratedSky and dispose: a load that finishes late is stale. */
   private generation = 0;
@@ -177,8 +186,9 @@ export class SkyEnvironment {
   ) {
     checkOptionNames(options, SKY_ENVIRONMENT_OPTION_KEYS, 'SkyEnvironment options', { prefix: 'SkyEnvironment ' });
     const defaults = DEFAULT_SKY_ENVIRONMENT;
-    const { sunElevation = defaults.sunElevation, sunAzimuth = defaults.sunAzimuth, resolution = defaults.resolution } = options;
+    const { sunElevation = defaults.sunElevation, sunAzimuth = defaults.sunAzimuth, cloudCover = defaults.cloudCover, resolution = defaults.resolution } = options;
     validateSun(sunElevation, sunAzimuth);
+    checkOption(SUN_OPTIONS, 'cloudCover', cloudCover);
     if (!Number.isInteger(resolution) || resolution < 1 || resolution > renderer.capabilities.maxCubemapSize) {
       throw new ParameterError('SkyEnvironment resolution', resolution, `an integer in [1, ${renderer.capabilities.maxCubemapSize}]`);
     }
@@ -203,6 +213,9 @@ export class SkyEnvironment {
       skyDeepWaterColor: { value: new Color(0.004, 0.01, 0.035) },
       skyDaylight: { value: 1 },
       skySunVisibility: { value: 1 },
+      skyCloudCover: { value: 0 },
+      skyOvercastZenith: { value: 0 },
+      skyCloudSun: { value: 1 },
     };
     const cubeMaterial = (name: string, fragmentShader: string, uniforms: ShaderMaterial['uniforms']) =>
       new ShaderMaterial({
@@ -221,6 +234,7 @@ export class SkyEnvironment {
     this.box.frustumCulled = false;
     this.scene.add(this.box);
 
+    this.cloud = cloudCover;
     this.applySun(sunElevation, sunAzimuth);
     // (embed work) Redraw the cube after a context loss; removed in dispose(). An OffscreenCanvas
     // is an EventTarget too, but guard anyway for canvas-like objects without listeners.
@@ -238,6 +252,24 @@ export class SkyEnvironment {
 
   get sunAzimuth(): number {
     return this.azimuth;
+  }
+
+  /** How much of the sky is cloud, 0 clear … 1 overcast. */
+  get cloudCover(): number {
+    return this.cloud;
+  }
+
+  /**
+   * Clouds the generated sky over: 0 a clear sky, 1 overcast (SunOptions.cloudCover), greying it
+   * towards the CIE overcast sky and dimming the sun's disk and its light (the glint, the caustics,
+   * SunLight). Throws a ParameterError naming cloudCover, keeping the old cover, for a value
+   * outside [0, 1]. A loaded face set keeps its own sky; the sun's light still dims.
+   */
+  setCloudCover(cloudCover: number): void {
+    if (this.disposed) throw new DisposedError('SkyEnvironment.setCloudCover', 'SkyEnvironment');
+    checkOption(SUN_OPTIONS, 'cloudCover', cloudCover);
+    this.cloud = cloudCover;
+    this.applySun(this.elevation, this.azimuth);
   }
 
   /** Whether a loaded face set (rather than the generated sky) is in use. */
@@ -335,7 +367,11 @@ export class SkyEnvironment {
     this.azimuth = azimuthDeg;
     sunDirectionFromAngles(elevationDeg, azimuthDeg, this.sun);
     this.skyUniforms.skyDaylight.value = skyDaylight(elevationDeg);
-    this.skyUniforms.skySunVisibility.value = sunAboveHorizon(elevationDeg);
+    const cloudSun = cloudSunTransmittance(this.cloud);
+    this.skyUniforms.skySunVisibility.value = sunAboveHorizon(elevationDeg) * cloudSun;
+    this.skyUniforms.skyCloudCover.value = this.cloud;
+    this.skyUniforms.skyOvercastZenith.value = overcastZenithLuminance(elevationDeg);
+    this.skyUniforms.skyCloudSun.value = cloudSun;
     if (!this.loaded) this.render();
   }
 

@@ -72,6 +72,21 @@ const SEA_STATE_DEFAULTS: Partial<SimulationParameters> = Object.fromEntries(
   SEA_STATE_KEYS.map((key) => [key, DEFAULT_PARAMETERS[key]]),
 );
 
+/** The Beaufort force from which a preset's sky is overcast (presetCloudCover): force 8, a gale. */
+export const OVERCAST_FROM_FORCE = 8;
+
+/**
+ * The cloud cover (SunOptions.cloudCover, a sun option, so not part of the preset itself, which
+ * Ocean.setParameters takes) that the app shows with a preset: overcast, 1, from a gale (force 8,
+ * 17.2 m/s) up, else clear, 0. Not a law of the sea: gales blow round deep depressions, whose
+ * fronts and cloud shields usually cover the sky, and a storm under a clear blue sky does not read
+ * as one (issue 26). Users of the library can pair them the same way:
+ *   ocean.setParameters(SEA_PRESETS.storm); ocean.setSun({ cloudCover: presetCloudCover(SEA_PRESETS.storm) });
+ */
+export function presetCloudCover(preset: Partial<SimulationParameters>): number {
+  return (preset.windSpeed ?? DEFAULT_PARAMETERS.windSpeed) >= BEAUFORT_WIND_RANGES[OVERCAST_FROM_FORCE][0] ? 1 : 0;
+}
+
 /** A JONSWAP sea for a Beaufort force: the middle of its wind range, blowing over 500 km. */
 export function beaufortPreset(force: number): Partial<SimulationParameters> {
   return seaPreset({ spectrum: 'jonswap', windSpeed: beaufortWindSpeed(force), fetch: BEAUFORT_FETCH_KM });

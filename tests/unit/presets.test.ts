@@ -3,7 +3,7 @@
  * and the "probable wave height" in the open sea), and the named presets.
  */
 import { describe, expect, it } from 'vitest';
-import { BEAUFORT_WIND_RANGES, beaufortPreset, beaufortWindSpeed, SEA_PRESETS } from '../../src/spectrum/presets';
+import { BEAUFORT_WIND_RANGES, beaufortPreset, beaufortWindSpeed, presetCloudCover, SEA_PRESETS } from '../../src/spectrum/presets';
 import { ParameterError, validateParameters } from '../../src/parameters/parameters';
 import { seaState } from '../../src/spectrum/seaState';
 
@@ -83,5 +83,17 @@ describe('named presets', () => {
     expect(result('shallow bay').significantWaveHeight).toBeLessThan(
       seaState({ ...bay, spectrum: 'jonswap', depth: Infinity }).significantWaveHeight,
     );
+  });
+});
+
+describe('the sky a preset goes with (presetCloudCover)', () => {
+  it('is overcast from Beaufort force 8 (a gale, 17.2 m/s and up) and on the storm preset, clear below', () => {
+    const covers = Array.from({ length: 13 }, (_, force) => presetCloudCover(beaufortPreset(force)));
+    expect(covers).toEqual([0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1]);
+    expect(presetCloudCover(SEA_PRESETS.storm)).toBeGreaterThanOrEqual(0.8);
+    for (const name of ['calm', 'breeze', 'long swell', 'shallow bay']) expect(presetCloudCover(SEA_PRESETS[name]), name).toBe(0);
+    // At the edge: the lowest force-8 wind is overcast, the highest force-7 wind is not.
+    expect(presetCloudCover({ windSpeed: 17.2 })).toBe(1);
+    expect(presetCloudCover({ windSpeed: 17.1 })).toBe(0);
   });
 });

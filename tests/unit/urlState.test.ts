@@ -41,6 +41,7 @@ function changed(): AppState {
     foamPersistence: 6,
     sunElevation: 12.5,
     sunAzimuth: -100,
+    cloudCover: 0.6,
     ior: 1.34,
     causticPower: 64,
     causticColor: [0.2, 0.25, 0.3],

@@ -5,7 +5,7 @@
  */
 import { expect, test, type Page } from '@playwright/test';
 import { DEFAULT_PARAMETERS } from '../../../src/parameters/parameters';
-import { beaufortPreset, SEA_PRESETS } from '../../../src/spectrum/presets';
+import { beaufortPreset, presetCloudCover, SEA_PRESETS } from '../../../src/spectrum/presets';
 import { seaState } from '../../../src/spectrum/seaState';
 import { boatWake } from '../shared/boatWake';
 import { slowAppFramesUntil, slowFrames } from '../shared/slowFrames';
@@ -363,8 +363,10 @@ test.describe('the app', () => {
       await menu.selectOption(name);
       const applied = await page.evaluate(() => {
         const { ocean } = window.oceanApp;
-        return { parameters: ocean.parameters, cascades: ocean.simulation.cascades.map((layer) => layer.spectrum.patchSize), heightRms: ocean.heightRms };
+        return { parameters: ocean.parameters, cascades: ocean.simulation.cascades.map((layer) => layer.spectrum.patchSize), heightRms: ocean.heightRms, cloudCover: ocean.sky.cloudCover };
       });
+      // The sky it goes with: the storm overcast, the others clear (presetCloudCover).
+      expect(applied.cloudCover).toBe(presetCloudCover(preset));
       // Every sea-state value of the preset (the swell and the depth of the URL are reset), and the
       // cascades it asks for; the grid's resolution, the seed and the choppiness stay.
       expect(applied.parameters).toMatchObject({ ...preset, resolution: 32, seed: 3, choppiness: 1.3 });

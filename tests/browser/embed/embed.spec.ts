@@ -91,11 +91,13 @@ test('attributes apply live; a bad value warns, naming the attribute, and keeps 
     el.setAttribute('wind-direction', '-45');
     el.setAttribute('choppiness', '1.5');
     el.setAttribute('sun-azimuth', '200');
+    el.setAttribute('cloud-cover', '0.5');
     el.setAttribute('shading-mode', 'height');
     el.setAttribute('patch-sizes', '20,100');
     const changed = {
       ...ocean.parameters,
       sunAzimuth: ocean.sky.sunAzimuth,
+      cloudCover: ocean.sky.cloudCover,
       mode: ocean.shading.shadingMode,
       cascades: ocean.simulation.cascades.map((layer) => layer.spectrum.patchSize),
     };
@@ -103,18 +105,19 @@ test('attributes apply live; a bad value warns, naming the attribute, and keeps 
     el.setAttribute('resolution', '100');
     el.setAttribute('patch-sizes', '100,20');
     el.setAttribute('sun-elevation', '95');
+    el.setAttribute('cloud-cover', '2');
     el.setAttribute('shading-mode', 'shiny');
     el.setAttribute('time-scale', 'NaN');
     el.setAttribute('time-scale', '1e308'); // finite, but a frame's step would overflow
-    const kept = { ...ocean.parameters, sun: ocean.sky.sunElevation, mode: ocean.shading.shadingMode };
+    const kept = { ...ocean.parameters, sun: ocean.sky.sunElevation, cloudCover: ocean.sky.cloudCover, mode: ocean.shading.shadingMode };
     el.removeAttribute('wind-speed'); // back to the default
     const defaulted = ocean.parameters.windSpeed;
     return { initial, changed, kept, defaulted, sameOcean: el.ocean === ocean };
   });
   expect(result.initial).toMatchObject({ resolution: 64, windSpeed: 6, seed: 9, sun: 10 });
-  expect(result.changed).toMatchObject({ windSpeed: 20, windDirection: -45, choppiness: 1.5, sunAzimuth: 200, mode: 'height', patchSizes: [20, 100] });
+  expect(result.changed).toMatchObject({ windSpeed: 20, windDirection: -45, choppiness: 1.5, sunAzimuth: 200, cloudCover: 0.5, mode: 'height', patchSizes: [20, 100] });
   expect(result.changed.cascades).toEqual([20, 100]);
-  expect(result.kept).toMatchObject({ windSpeed: 20, resolution: 64, sun: 10, mode: 'height', patchSizes: [20, 100] });
+  expect(result.kept).toMatchObject({ windSpeed: 20, resolution: 64, sun: 10, cloudCover: 0.5, mode: 'height', patchSizes: [20, 100] });
   expect(result.defaulted).toBe(DEFAULT_PARAMETERS.windSpeed);
   expect(result.sameOcean).toBe(true);
   const warnings = log.warnings.join('\n');
@@ -122,6 +125,7 @@ test('attributes apply live; a bad value warns, naming the attribute, and keeps 
     ['wind-speed', 'fast'],
     ['resolution', '100'],
     ['sun-elevation', '95'],
+    ['cloud-cover', '2'],
     ['shading-mode', 'shiny'],
     ['time-scale', 'NaN'],
     ['time-scale', '1e308'],

@@ -25,6 +25,8 @@ export interface ViewRequest {
   fov: number;
   sunElevation: number;
   sunAzimuth: number;
+  /** SunOptions.cloudCover, 0 clear … 1 overcast (0 when left out). */
+  cloudCover?: number;
   time: number;
   /** Keep a PNG of the picture (for looking at it). */
   png?: boolean;
@@ -68,7 +70,7 @@ function render(request: ViewRequest): ViewResult {
   }
   const o = ocean!;
   o.surface.fewestCellsPerRing = step.fewestGridCells;
-  o.setSun(request.sunElevation, request.sunAzimuth);
+  o.setSun({ elevation: request.sunElevation, azimuth: request.sunAzimuth, cloudCover: request.cloudCover ?? 0 });
   const k = request.supersample ?? 1;
   // The level's render scale as the app applies it (applyQuality.ts), times the supersampling.
   const scale = step.renderScale * k;

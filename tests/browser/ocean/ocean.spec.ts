@@ -421,7 +421,8 @@ test.describe('the Ocean API', () => {
       const elevationOnly = sunOf(ocean);
       ocean.setSun(25, 60);
       const errors: string[] = [];
-      for (const bad of [{ direction: [0, 0, 0] }, { direction: [NaN, 1, 0] }, { direction: [1, 1, 1], elevation: 5 }, { elevaton: 5 }]) {
+      ocean.setSun({ cloudCover: 0.4 });
+      for (const bad of [{ direction: [0, 0, 0] }, { direction: [NaN, 1, 0] }, { direction: [1, 1, 1], elevation: 5 }, { elevaton: 5 }, { elevation: 70, cloudCover: 2 }, { cloudCover: NaN }]) {
         try {
           ocean.setSun(bad as never);
         } catch (error) {
@@ -435,8 +436,9 @@ test.describe('the Ocean API', () => {
         constructorError = `${error instanceof ParameterError}: ${(error as Error).message}`;
       }
       const kept = sunOf(ocean);
+      const clouded = ocean.sky.cloudCover;
       ocean.dispose();
-      return { constructed, byVector, elevationOnly, errors, constructorError, kept };
+      return { constructed, byVector, elevationOnly, errors, constructorError, kept, clouded };
     });
     expect(result.constructed.elevation).toBeCloseTo(45, 10);
     expect(result.constructed.azimuth).toBeCloseTo(90, 10);
@@ -453,8 +455,11 @@ test.describe('the Ocean API', () => {
       'true: direction must be a finite, non-zero direction towards the sun: a Vector3 or [x, y, z], y up; got [0, 0, 0]',
       'true: direction must be a finite, non-zero direction towards the sun: a Vector3 or [x, y, z], y up; got [NaN, 1, 0]',
       'true: direction must be given without an elevation or azimuth (it sets both); got [1, 1, 1]',
-      expect.stringMatching(/^true: elevaton must be one of elevation, azimuth, direction \(did you mean elevation\?\)/),
+      expect.stringMatching(/^true: elevaton must be one of elevation, azimuth, direction, cloudCover \(did you mean elevation\?\)/),
+      expect.stringMatching(/^true: cloudCover must be a fraction of the sky from 0 \(clear\) to 1 \(overcast\); got 2/),
+      expect.stringMatching(/^true: cloudCover must be a fraction of the sky from 0 \(clear\) to 1 \(overcast\); got NaN/),
     ]);
+    expect(result.clouded).toBe(0.4); // setSun({ cloudCover }) reaches the sky, and the bad ones above kept it
     expect(result.constructorError).toMatch(/^true: sunDirection must be a finite, non-zero direction/);
     expect([result.kept.elevation, result.kept.azimuth]).toEqual([25, 60]);
   });

@@ -169,6 +169,16 @@ const skyHarness = {
     sky = new SkyEnvironment(renderer, options);
   },
 
+  /** setCloudCover's error as "<name>: <message>", or null; and the cover in force after. */
+  setCloudCover(cloudCover: number): { error: string | null; cloudCover: number } {
+    try {
+      current().setCloudCover(cloudCover);
+      return { error: null, cloudCover: current().cloudCover };
+    } catch (error) {
+      return { error: error instanceof Error ? `${error.name}: ${error.message}` : String(error), cloudCover: current().cloudCover };
+    }
+  },
+
   /** A view of the environment in use along `direction`. */
   view(direction: Vec3, options: ViewOptions = {}): ViewSummary {
     return render(direction, options);
