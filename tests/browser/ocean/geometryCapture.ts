@@ -2,11 +2,12 @@
  * The ocean test page's surface read back from its real vertex shader, vertex by vertex, against
  * the layers' fields on the CPU.
  */
-import { FloatType, Points, RGBAFormat, Scene, Vector3, WebGLRenderTarget } from 'three';
+import { Vector3 } from 'three';
 import { OceanMaterial } from '../../../src/render/oceanMaterial';
 import { finestTexel } from '../../../src/render/horizonGrid';
 import { blendAngle, COPY_OFFSET, patchBlendUniforms } from '../../../src/layers/patchBlend';
 import { camera, current, environment, renderer, scene, sunDirection } from './oceanPage';
+import { captureVertices } from '../shared/vertexCapture';
 
 /**
  * Draws the horizon grid as points with the real vertex shader (define CAPTURE_POSITIONS), one
@@ -22,8 +23,6 @@ export function geometryCheck(t: number, withRestPoints = false) {
   sim.update(t);
   mesh.onBeforeRender(renderer, scene, camera); // the viewport's ring size, and the rings under the camera
   const count = mesh.geometry.getAttribute('position').count;
-  const captureWidth = 1024;
-  const captureHeight = Math.ceil(count / captureWidth);
   const material = new OceanMaterial({ environment, sunDirection: { value: sunDirection } }, {}, { CAPTURE_POSITIONS: 1 });
   const { choppiness } = sim.parameters;
   // Bound as the surface binds them (the local waves first: zero here, no source has touched them).
@@ -31,27 +30,7 @@ export function geometryCheck(t: number, withRestPoints = false) {
   for (const name of ['ringFrames', 'ringLayerUvOrigins', 'ringOffsets', 'halfRingCells', 'patchBlend']) {
     material.uniforms[name].value = mesh.material.uniforms[name].value;
   }
-  material.uniforms.captureWidth.value = captureWidth;
-  material.uniforms.captureHeight.value = captureHeight;
-  const points = new Points(mesh.geometry, material);
-  points.frustumCulled = false;
-  const captureScene = new Scene().add(points);
-  const target = new WebGLRenderTarget(captureWidth, captureHeight, { type: FloatType, format: RGBAFormat, depthBuffer: false });
-  const read = (rest: boolean): Float32Array => {
-    material.uniforms.captureRestPoint.value = rest;
-    renderer.setRenderTarget(target);
-    renderer.setClearColor(0x000000, 0);
-    renderer.clear();
-    renderer.render(captureScene, camera);
-    const pixels = new Float32Array(4 * captureWidth * captureHeight);
-    renderer.readRenderTargetPixels(target, 0, 0, captureWidth, captureHeight, pixels);
-    renderer.setRenderTarget(null);
-    return pixels;
-  };
-  const displaced = read(false);
-  const rest = read(true);
-  target.dispose();
-  material.dispose();
+  const { displaced, rest } = captureVertices(renderer, camera, mesh.geometry, material);
 
   const layers = sim.layers
     .filter((layer) => layer.frame.periodic)

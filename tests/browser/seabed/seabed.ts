@@ -7,17 +7,13 @@
  */
 import {
   ACESFilmicToneMapping,
-  FloatType,
   Mesh,
   MeshLambertMaterial,
   PerspectiveCamera,
   PlaneGeometry,
-  Points,
-  RGBAFormat,
   Scene,
   SRGBColorSpace,
   Vector3,
-  WebGLRenderTarget,
   WebGLRenderer,
   AmbientLight,
   DirectionalLight,
@@ -27,6 +23,7 @@ import { Ocean, type OceanOptions } from '../../../src/ocean';
 import type { Shore } from '../../../src/layers/shore';
 import { breakingHeight } from '../../../src/spectrum/shoaling';
 import { OceanMaterial } from '../../../src/render/oceanMaterial';
+import { captureVertices } from '../shared/vertexCapture';
 
 const WIDTH = 480;
 const HEIGHT = 270;
@@ -87,8 +84,6 @@ const harness = {
     const o = ocean!;
     const surface = o.surface;
     const count = surface.geometry.getAttribute('position').count;
-    const captureWidth = 1024;
-    const captureHeight = Math.ceil(count / captureWidth);
     const defines: Record<string, unknown> = { CAPTURE_POSITIONS: 1 };
     if (surface.material.defines.SEABED !== undefined) defines.SEABED = '';
     const material = new OceanMaterial({ environment: { value: null }, sunDirection: { value: new Vector3(0, 1, 0) } }, {}, defines);
@@ -97,27 +92,7 @@ const harness = {
     for (const name of ['ringFrames', 'ringLayerUvOrigins', 'ringOffsets', 'halfRingCells', 'patchBlend', ...shoreUniforms]) {
       if (surface.material.uniforms[name]) material.uniforms[name] = surface.material.uniforms[name];
     }
-    material.uniforms.captureWidth.value = captureWidth;
-    material.uniforms.captureHeight.value = captureHeight;
-    const points = new Points(surface.geometry as BufferGeometry, material);
-    points.frustumCulled = false;
-    const captureScene = new Scene().add(points);
-    const target = new WebGLRenderTarget(captureWidth, captureHeight, { type: FloatType, format: RGBAFormat, depthBuffer: false });
-    const read = (rest: boolean): Float32Array => {
-      material.uniforms.captureRestPoint.value = rest;
-      renderer.setRenderTarget(target);
-      renderer.setClearColor(0x000000, 0);
-      renderer.clear();
-      renderer.render(captureScene, camera);
-      const pixels = new Float32Array(4 * captureWidth * captureHeight);
-      renderer.readRenderTargetPixels(target, 0, 0, captureWidth, captureHeight, pixels);
-      renderer.setRenderTarget(null);
-      return pixels;
-    };
-    const displaced = read(false);
-    const rest = read(true);
-    target.dispose();
-    material.dispose();
+    const { displaced, rest } = captureVertices(renderer, camera, surface.geometry as BufferGeometry, material);
     const eye = camera.position;
     const vertices: number[][] = [];
     for (let v = 0; v < count; v++) {
