@@ -34,6 +34,12 @@ export interface ViewRequest {
   linear?: boolean;
   /** False: the sun's light on the water (glint, foam, crests) left out, the sky's reflection kept. */
   sunlit?: boolean;
+  /**
+   * False: the slopes the mip levels filter out of the normal are left out of the light
+   * (seaLighting.ts' per-level variances set to 0; the slopes finer than the grid stay), the
+   * reference the flicker test compares with.
+   */
+  filteredSlopes?: boolean;
 }
 
 export interface ViewResult {
@@ -89,6 +95,16 @@ function render(request: ViewRequest): ViewResult {
   const sunColor = o.surface.material.uniforms.sunColor.value;
   const sun = sunColor.clone();
   if (request.sunlit === false) sunColor.setRGB(0, 0, 0);
+  // The lighting's uniforms are set as the layers are bound, before each draw (bindLayers): the
+  // per-level variances are zeroed after that, for this render only.
+  const material = o.surface.material;
+  const bindLayers = material.bindLayers;
+  if (request.filteredSlopes === false) {
+    material.bindLayers = (...args) => {
+      bindLayers.apply(material, args);
+      material.uniforms.layerFilteredSlopes.value = (material.uniforms.layerFilteredSlopes.value as number[]).map(() => 0);
+    };
+  }
   let raw: Uint8Array | Float32Array;
   if (request.linear) {
     // Into a float target three.js applies no tone mapping and no output colour space.
@@ -106,6 +122,7 @@ function render(request: ViewRequest): ViewResult {
     gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, raw);
   }
   sunColor.copy(sun);
+  material.bindLayers = bindLayers;
   const png = request.png ? canvas.toDataURL('image/png') : null;
   return { pixels: resample(raw, w, h, request.width, request.height), width: request.width, height: request.height, png };
 }

@@ -277,7 +277,14 @@ test.describe('from altitude no tiling is visible', () => {
   // view from 4 km straight down, and there the largest cascade's slopes show as brightness: the
   // picture's autocorrelation at the 457 m patch period is R = 0.594 (1 km: 0.040). The glitter
   // covers a few patches only, over which the blend's angle θ (patchBlend.ts) changes too little to
-  // decorrelate them; larger blend amplitudes (×1.8) did not help (R = 0.711). Issue 26.
+  // decorrelate them; larger blend amplitudes (×1.8) did not help (R = 0.711). A likely reason
+  // (not proven): the blend makes the slopes at x + L cos Δθ·S(x) plus an uncorrelated part, and
+  // what depends on the slope evenly (Δθ = π gives −S(x)) correlates as E[cos² Δθ], about ½ for
+  // any broad spread of Δθ, whatever the amplitudes. Measured once, not kept: with the largest
+  // cascade's slopes left out of the normal, R at 457 m is 0.387 and the 79.3 m patch shows
+  // instead (R = 0.729); fading every cascade's slopes into σ² where the largest patch spans
+  // 16–128 pixels gave 0.534 here and flattened the 45° view from 4 km. Three or more copies
+  // (E[ρ²] = 1/n for n independent weights) are the way left to try. Issue 26.
   const GLITTER_TILES = 'from 4 km the glitter shows the 457 m patch (R = 0.594): issue 26';
   const groups: [string, View[], string?][] = [
     ['1 km up, straight down', [{ name: '1 km up, straight down', height: 1000, pitch: 90 }]],
