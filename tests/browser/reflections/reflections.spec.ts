@@ -200,7 +200,7 @@ function speckles(red: Float32Array, threshold: number): [number, number][] {
   return found;
 }
 
-test('on a 20 m/s sea the box\'s reflection has few lone speckles: the mirror lookup is spread by the slopes a pixel does not show', async ({ browserName: _ }, info) => {
+test('on a 20 m/s sea the box\'s reflection has few lone speckles: the mirror lookup fades by the slopes a pixel does not show', async ({ browserName: _ }, info) => {
   const rough = await roughSea();
   const scene = await render(rough);
   const sky = await render({ ...rough, reflections: 'sky' });
