@@ -142,7 +142,7 @@ void main() {
   vec3 deepWater = skyDaylight * scatterColor;  // the light deep water scatters back, as the sky gives it
   vec3 sunLight = skySunVisibility * sunColor;
   #if SHADING_MODE == SHADING_REFLECTION
-  vec3 colour = reflectedRadiance(vFromEye, reflected, environmentRadiance(reflected));
+  vec3 colour = reflectedRadiance(vFromEye, reflected, environmentRadiance(reflected), 0.0);
   #elif SHADING_MODE == SHADING_REFRACTION
   vec3 colour = throughWater(environmentRadiance(refracted), refracted, absorption, deepWater, viewDepth);
   #else
@@ -158,7 +158,7 @@ void main() {
   // The slopes this pixel's normal does not show spread the sky's reflection and the glint (seaLighting.glsl).
   float slopeVariance = subPixelSlopeVariance(footprintLevel(restPerPixelX, restPerPixelY));
   // The scene's objects in front of the sky, seen along the reflected ray (sceneReflection.glsl).
-  vec3 sky = reflectedRadiance(vFromEye, reflected, filteredSkyReflection(view, normal, slopeVariance, iorAir, iorWater, reflectance));
+  vec3 sky = reflectedRadiance(vFromEye, reflected, filteredSkyReflection(view, normal, slopeVariance, iorAir, iorWater, reflectance), slopeVariance);
   vec3 water = throughWater(environmentRadiance(refracted), refracted, absorption, deepWater, viewDepth);
   #if SCENE_REFRACTIONS == 1
   // What lies under the surface (sceneRefraction.glsl); where an object meets the water, a line of

@@ -49,9 +49,40 @@ vec4 sceneReflectionRayPoint(vec3 fromEye, vec3 ray, vec2 uv) {
 // (it is elsewhere, e.g. in front of the surface point) and the sky shows instead.
 #define SCENE_REFLECTION_MISS vec2(0.05, 0.2)
 
+// The slopes a pixel's normal does not show (seaLighting.glsl's subPixelSlopeVariance, σ²) spread
+// the rays its facets reflect: a facet tilted by ε in the plane of incidence turns the reflected ray
+// by 2ε, one tilted by ε across it by 2ε·cos θi (the law of reflection). Returns the share of those
+// rays that meet what the mirror render shows, read around the converged point Q at the distance
+// `along` it lies along R (0: it shows nothing there, and the rays are read at infinity) in four rays of the Gaussian spread, the
+// rule filteredSkyReflection takes for the sky: 3-point Gauss–Hermite in the plane of incidence
+// (±√3·s, weights ⅙; Abramowitz & Stegun 25.4.46), its middle node split across it (±√(3/2)·s,
+// ⅓ each), s² = σ²/2 per axis. On calm water (σ² = 0) the four rays are R.
+float sceneReflectionSpreadCoverage(vec3 fromEye, vec3 ray, float along, float variance) {
+  vec3 facet = normalize(ray - normalize(fromEye));  // the normal that reflects the view into R
+  float cosIncident = clamp(dot(ray, facet), 0.0, 1.0);
+  vec3 across = cross(ray, facet);
+  across = dot(across, across) > 1e-8 ? normalize(across) : normalize(cross(ray, vec3(1.0, 0.0, 0.0)));
+  vec3 inPlane = cross(across, ray);
+  float s = sqrt(0.5 * variance);
+  float coverage = 0.0;
+  for (int tap = 0; tap < 4; tap++) {
+    float side = tap % 2 == 0 ? 1.0 : -1.0;
+    bool alongPlane = tap < 2;
+    vec3 turned = normalize(ray + side * 2.0 * s * (alongPlane ? 1.7320508 * inPlane : 1.2247449 * cosIncident * across));
+    vec4 point = along > 0.0 ? vec4(fromEye + along * turned, 1.0) : vec4(turned, 0.0);
+    coverage += (alongPlane ? 1.0 / 6.0 : 1.0 / 3.0) * texture(sceneReflectionColor, clamp(sceneReflectionUv(point).xy, 0.0, 1.0)).a;
+  }
+  return coverage;
+}
+
 // The scene's radiance along `ray` (unit, upwards) from the surface point `fromEye`, premultiplied
-// by its coverage (alpha): blend as rgb + (1 − a)·sky.
-vec4 sceneReflection(vec3 fromEye, vec3 ray) {
+// by its coverage (alpha): blend as rgb + (1 − a)·sky. `variance`, the pixel's sub-pixel slope
+// variance σ², fades it to the share of the pixel's facets whose rays meet the scene there
+// (sceneReflectionSpreadCoverage; never above what R alone sees): a lone crest pixel whose ray
+// alone grazes an object, a speckle among its neighbours, keeps only that share, while the
+// reflection's body, where the spread rays meet the object too, stays whole. It is not spread into
+// pixels whose own ray misses: the colour is R's.
+vec4 sceneReflection(vec3 fromEye, vec3 ray, float variance) {
   if (!sceneReflectionShown) return vec4(0.0);
   vec3 uv = sceneReflectionUv(vec4(fromEye, 1.0));
   for (int i = 0; i < SCENE_REFLECTION_STEPS; i++) {
@@ -63,22 +94,25 @@ vec4 sceneReflection(vec3 fromEye, vec3 ray) {
   // Whether the ray meets what the mirror render shows there (where it shows depth: transparent
   // objects that write none are taken as far away, as the sky is).
   float depth = texture(sceneReflectionDepth, uv.xy).r;
+  float along = 0.0;
   if (depth < 1.0) {
     vec4 scene = sceneReflectionFromClip * vec4(vec3(uv.xy, depth) * 2.0 - 1.0, 1.0);
     vec3 toScene = scene.xyz / scene.w - fromEye;
-    float along = dot(toScene, ray);
+    along = dot(toScene, ray);
     float off = length(toScene - along * ray);
     weight *= along > 0.0 ? 1.0 - smoothstep(SCENE_REFLECTION_MISS.x, SCENE_REFLECTION_MISS.y, off / along) : 0.0;
   }
-  return weight * texture(sceneReflectionColor, uv.xy);
+  vec4 seen = texture(sceneReflectionColor, uv.xy);
+  return weight * seen * min(1.0, sceneReflectionSpreadCoverage(fromEye, ray, max(along, 0.0), variance) / max(seen.a, 1e-4));
 }
 
 // The light the sea reflects along `ray` (unit, upwards) from `fromEye`: the scene's where the
-// mirror render has it (premultiplied by its coverage), in front of `sky`, the sky's light the sea
-// reflects there (SCENE_REFLECTIONS: the option reflections, 'scene').
-vec3 reflectedRadiance(vec3 fromEye, vec3 ray, vec3 sky) {
+// mirror render has it (premultiplied by its coverage, faded by the sub-pixel slope variance
+// `variance`), in front of `sky`, the sky's light the sea reflects there (SCENE_REFLECTIONS: the
+// option reflections, 'scene').
+vec3 reflectedRadiance(vec3 fromEye, vec3 ray, vec3 sky, float variance) {
 #if SCENE_REFLECTIONS
-  vec4 scene = sceneReflection(fromEye, ray);
+  vec4 scene = sceneReflection(fromEye, ray, variance);
   return scene.rgb + (1.0 - scene.a) * sky;
 #else
   return sky;

@@ -11,6 +11,7 @@ import { jonswapParameters, jonswapShapeIntegral } from '../../src/spectrum/freq
 import { phillips } from '../../src/spectrum/phillips';
 import {
   frequencySpectrum,
+  frictionVelocity,
   groupVelocity,
   SEA_STATE_KEYS,
   seaState,
@@ -437,11 +438,14 @@ describe('seaState().meanSquareSlope against Cox & Munk (1954)', () => {
   /**
    * Cox & Munk (1954), "Measurement of the roughness of the sea surface from photographs of the
    * sun's glitter", J. Opt. Soc. Am. 44: 838–850: clean surface, σ² = 0.003 + 5.12·10⁻³·U
-   * (U in m/s at 12.5 m; the fit's rms deviation is 0.004).
+   * (U in m/s at 12.5 m; the fit's rms deviation is 0.004). The sea's windSpeed is at 10 m: under
+   * the neutral logarithmic profile U(z) = u*·ln(z/z0) / κ (Prandtl–von Kármán, κ = 0.4),
+   * U12.5 = U10 + u*·ln(12.5/10) / κ, with u* from Wu (1982) as seaState takes it: 1.8 % more at
+   * 3 m/s, 2.6 % at 20 m/s, which a 10 % comparison must not leave out.
    */
-  const coxMunk = (windSpeed: number) => 0.003 + 5.12e-3 * windSpeed;
+  const coxMunk = (windSpeed: number) => 0.003 + 5.12e-3 * (windSpeed + (frictionVelocity(windSpeed) / 0.4) * Math.log(12.5 / 10));
 
-  it('is within 10 % of the clean-surface law from 7 to 20 m/s, and within 25 % from 3 to 5 m/s', () => {
+  it('is within 10 % of the clean-surface law from 5 to 20 m/s, and within 25 % at 3 and 4 m/s', () => {
     const rows = [3, 4, 5, 7, 10, 12, 15, 20].map((windSpeed) => {
       const parameters = sea({ windSpeed });
       const resolved = spectralMoments(parameters).slopeVariance;
@@ -449,14 +453,16 @@ describe('seaState().meanSquareSlope against Cox & Munk (1954)', () => {
       return { windSpeed, resolved, total, coxMunk: coxMunk(windSpeed), ratio: total / coxMunk(windSpeed) };
     });
     console.log(
-      ['| U10 (m/s) | model ∫k²S dω (ℓ = 1 cm) | + shorter waves (Elfouhaily) = mss | Cox–Munk σ² | ratio |', '|---|---|---|---|---|']
+      ['| U10 (m/s) | model ∫k²S dω (ℓ = 1 cm) | + shorter waves (Elfouhaily) = mss | Cox–Munk σ² (U12.5) | ratio |', '|---|---|---|---|---|']
         .concat(rows.map((r) => `| ${r.windSpeed} | ${r.resolved.toFixed(4)} | ${r.total.toFixed(4)} | ${r.coxMunk.toFixed(4)} | ${r.ratio.toFixed(3)} |`))
         .join('\n'),
     );
     for (const row of rows) {
-      // Below 7 m/s the JONSWAP tail (α ≥ 0.0081 up to k = 1/ℓ) alone carries more slope than
-      // Cox–Munk measured: a limit of the simulated spectrum, not of the cutoff (see docs).
-      const tolerance = row.windSpeed >= 7 ? 0.1 : 0.25;
+      // At 3 and 4 m/s the JONSWAP tail (α = 0.0089 up to k = 1/ℓ) alone carries 1.05 and 0.92 of
+      // Cox–Munk's slope, and Elfouhaily et al.'s own spectrum, whose short-wave part seaState adds,
+      // gives 1.20 and 1.15 of it by itself: a limit of the published spectra at light winds, not
+      // of the cutoff (see docs/physics-validation.md).
+      const tolerance = row.windSpeed >= 5 ? 0.1 : 0.25;
       expect(Math.abs(row.ratio - 1), `U10 = ${row.windSpeed} m/s`).toBeLessThan(tolerance);
     }
     rows.slice(1).forEach((row, i) => expect(row.total).toBeGreaterThan(rows[i].total));

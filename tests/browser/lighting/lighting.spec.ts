@@ -121,15 +121,78 @@ test('the glitter towards a sun 30° high widens with the wind as Cox & Munk’s
   measured.slice(1).forEach((m, i) => expect(m.sigma).toBeGreaterThan(measured[i].sigma));
 });
 
+test('backlit crests glow in the scatter colour, and not without it (Atlas, GDC 2019)', async () => {
+  // seaLighting.glsl's crestGlow, after Mihelich & Tcheblokov, "Wakes, Explosions and Lighting:
+  // Interactive Water Simulation in Atlas" (GDC 2019): sunlight crosses the thin tops of the waves
+  // and leaves them in the colour the water scatters, towards an eye that looks at a low sun. A
+  // sun 5° high, 30° to the right of the view, out of the picture (its glitter too); the sun's own
+  // light on the water is the picture less the same picture without it, in linear radiance,
+  // projected on the scatter colour's direction. Crest pixels (the highest tenth of the near
+  // band's displaced heights, read in the 'height' mode) must show more of it than trough pixels
+  // (the lower half), by at least 4 % of what the troughs show along that direction; with the
+  // scatter colour black the difference must go (below a tenth of it), and what the scatter adds
+  // there must have no red, as the scatter colour has none.
+  const request: ViewRequest = { ...BASE, eyeHeight: 6, pitch: 6, yaw: 0, sunElevation: 5, sunAzimuth: 50, linear: true, time: 5 };
+  const heights = await view({ ...request, shadingMode: 'height' });
+  const near: number[] = [];
+  for (let y = 0; y < request.height; y++) {
+    for (let x = 0; x < request.width; x++) {
+      const d = pixelRay(request, x, y);
+      if (d[1] >= 0) continue;
+      const distance = (request.eyeHeight / -d[1]) * Math.hypot(d[0], d[2]);
+      if (distance >= 10 && distance <= 100) near.push(y * request.width + x);
+    }
+  }
+  const sorted = near.map((i) => heights.pixels[4 * i]).sort((a, b) => a - b);
+  const [trough, crest] = [sorted[Math.floor(0.5 * sorted.length)], sorted[Math.floor(0.9 * sorted.length)]];
+  const scatter: Vec3 = [0.0, 0.035, 0.06];
+  const along = normalize(scatter);
+  const sunsLight = async (scatterColor: Vec3) => {
+    const [lit, unlit] = [await view({ ...request, scatterColor }), await view({ ...request, scatterColor, sunlit: false })];
+    const sums = { crest: [0, 0, 0, 0], trough: [0, 0, 0, 0], troughSeen: [0, 0, 0] };
+    for (const i of near) {
+      const height = heights.pixels[4 * i];
+      const group = height >= crest ? sums.crest : height <= trough ? sums.trough : null;
+      if (!group) continue;
+      for (let c = 0; c < 3; c++) group[c] += lit.pixels[4 * i + c] - unlit.pixels[4 * i + c];
+      group[3]++;
+      if (group === sums.trough) for (let c = 0; c < 3; c++) sums.troughSeen[c] += lit.pixels[4 * i + c];
+    }
+    const mean = (g: number[]) => [0, 1, 2].map((c) => g[c] / g[3]) as Vec3;
+    const [crestLight, troughLight] = [mean(sums.crest), mean(sums.trough)];
+    const difference = [0, 1, 2].map((c) => crestLight[c] - troughLight[c]) as Vec3;
+    const seen = mean([...sums.troughSeen, sums.trough[3]]);
+    const project = (v: Vec3) => v[0] * along[0] + v[1] * along[1] + v[2] * along[2];
+    return { difference, alongScatter: project(difference), troughAlong: project(seen), counts: [sums.crest[3], sums.trough[3]] };
+  };
+  const glowing = await sunsLight(scatter);
+  keep('crests', await view({ ...request, linear: false, png: true }));
+  const black = await sunsLight([0, 0, 0]);
+  const added = [0, 1, 2].map((c) => glowing.difference[c] - black.difference[c]);
+  console.log(
+    `crest − trough of the sun's light on the water (linear RGB), ${glowing.counts[0]} crest and ${glowing.counts[1]} trough pixels:\n` +
+      `  scatter ${scatter.join(', ')}: ${glowing.difference.map((c) => c.toExponential(2)).join(', ')} (along the scatter colour ${glowing.alongScatter.toExponential(2)}, ${((100 * glowing.alongScatter) / glowing.troughAlong).toFixed(1)} % of the troughs' whole radiance along it)\n` +
+      `  scatter 0: ${black.difference.map((c) => c.toExponential(2)).join(', ')} (along it ${black.alongScatter.toExponential(2)})`,
+  );
+  expect(glowing.counts[0]).toBeGreaterThan(100);
+  // Measured: 7.7 % of the troughs' radiance along the scatter colour (scatter 0: −0.4 %).
+  expect(glowing.alongScatter).toBeGreaterThan(0.04 * glowing.troughAlong);
+  expect(Math.abs(black.alongScatter)).toBeLessThan(0.1 * glowing.alongScatter);
+  expect(Math.abs(added[0])).toBeLessThan(0.05 * added[2]);
+});
+
 test('every quality level shows the sea as bright as \'high\' does, far within 3 levels, near within 4', async () => {
   // The levels' grids (adaptiveQuality.ts: N 1024 … 32, 3 or 2 cascades) and render scales
   // (1 … 0.3) differ; the slopes a grid leaves out are in the light (resolved + unresolved =
   // Cox–Munk), so the mean colour of a band of the sea must not move with them. The sun 30° high,
   // 120° to the left: no glitter in view, the sky's reflection and the water's colour. Near, 'low'
-  // and 'lowest' (which drop the 13.7 m cascade) measure 3.7 levels darker in red at t = 3 s and 4.0
-  // at t = 11 s (main: 5.2 at t = 3 s): the resolved choppy normals of the finest cascade seem to
-  // carry a little more light than its Gaussian statistics do. The near band is held to 4 levels,
-  // the far one to 3.
+  // and 'lowest' measure 3.7 levels darker in red at t = 3 s and 4.0 at t = 11 s (main: 5.2 at
+  // t = 3 s). Most of it is the render scale, not the grid: 'high''s grid (foam off) at a render
+  // scale of 0.5 is 2.9 levels darker in red than at 1, while 'low''s grid (N = 64, no 13.7 m
+  // cascade) at a scale of 1 is 1.2 darker; foam adds about as much at every level. A larger
+  // footprint moves resolved slopes into the Gaussian taps of seaLighting.glsl (mip filtering),
+  // and at 10 m/s those carry less light than the resolved choppy normals did (at 3 m/s the sign
+  // turns: +1.2 levels at a scale of 0.5). The near band is held to 4 levels, the far one to 3.
   const request: Partial<ViewRequest> = { eyeHeight: 20, pitch: 4, yaw: 120, png: true };
   const bands = [] as { level: string; near: Vec3; far: Vec3 }[];
   for (const quality of ['high', 'medium', 'low', 'lowest'] as const) {

@@ -7,6 +7,7 @@
 import { ACESFilmicToneMapping, FloatType, PerspectiveCamera, Scene, SRGBColorSpace, Vector3, WebGLRenderer, WebGLRenderTarget } from 'three';
 import { Ocean } from '../../../src/ocean';
 import { DEFAULT_PARAMETERS } from '../../../src/parameters/parameters';
+import { DEFAULT_SHADING, type ShadingMode } from '../../../src/parameters/sceneOptions';
 import { QUALITY_STEPS, simulationAtQuality, type QualityLevel } from '../../../src/runtime/adaptiveQuality';
 import { fitFarPlane } from '../../../src/runtime/farPlane';
 
@@ -40,6 +41,11 @@ export interface ViewRequest {
    * reference the flicker test compares with.
    */
   filteredSlopes?: boolean;
+
+  /** ShadingOptions.scatterColor, linear RGB (DEFAULT_SHADING's when left out). */
+  scatterColor?: [number, number, number];
+  /** ShadingOptions.shadingMode ('full' when left out); 'height' shows each pixel's height. */
+  shadingMode?: ShadingMode;
 }
 
 export interface ViewResult {
@@ -77,6 +83,7 @@ function render(request: ViewRequest): ViewResult {
   const o = ocean!;
   o.surface.fewestCellsPerRing = step.fewestGridCells;
   o.setSun({ elevation: request.sunElevation, azimuth: request.sunAzimuth, cloudCover: request.cloudCover ?? 0 });
+  o.setShading({ scatterColor: request.scatterColor ?? DEFAULT_SHADING.scatterColor, shadingMode: request.shadingMode ?? 'full' });
   const k = request.supersample ?? 1;
   // The level's render scale as the app applies it (applyQuality.ts), times the supersampling.
   const scale = step.renderScale * k;
