@@ -66,13 +66,14 @@ void main() {
 #ifdef SEABED
   float depth = seabedAt(point.fromEye).x;
   float deepHeight = 0.0;  // the sea's height before shoaling: what the swash follows (swash.glsl)
+  vec4 layerDisplacement;  // declared out here: the unrolled loop's bodies share one scope
 #endif
   #pragma unroll_loop_start
   for (int i = 0; i < LAYER_COUNT; i++) {
     vLayerUv[ i ] = ringLayerUvOrigins[point.frameRing * LAYER_COUNT + UNROLLED_LOOP_INDEX] + point.fromCentre / layerSizes[ i ];
 #ifdef SEABED
     vShoaling[ i ] = shoalingFactor(UNROLLED_LOOP_INDEX, depth);
-    vec4 layerDisplacement = textureLod(tLayerDisplacement[ i ], vLayerUv[ i ], point.lod + layerLodBias[ i ]);
+    layerDisplacement = textureLod(tLayerDisplacement[ i ], vLayerUv[ i ], point.lod + layerLodBias[ i ]);
     displacement += vShoaling[ i ] * layerDisplacement;
     deepHeight += layerDisplacement.y;
 #else
