@@ -6,13 +6,14 @@
 //
 //   in Node      fft2d, fields, cascades (the JS path; Vite loads the TypeScript sources)
 //   in Chromium  the `browser` row (what its WebGL2 supports; bench/lib/browser.mjs), then fields,
-//                cascades, frame, living, reflections, queries (with query-frames and parameter-change), app
+//                cascades, frame, living, reflections, island, queries (with query-frames and parameter-change), app
 //                (with compare), and last the fields row with RGBA16F
 //   always       targets, summary
 //
 // If the browser part fails, the Node rows and the summary are still printed and the exit code is 1.
 // `npm run bench -- --only=queries,living` runs only the groups named (fft2d, fields, cascades,
-// frame, living, reflections, queries, app); the summary then has nulls for the others.
+// frame, living, reflections, island, queries, app); the summary then has nulls for the others.
+// `--island-rounds=3` times only that many frames in the island rows (a quick check that they run).
 // `--compare=<dir>` (or BENCH_COMPARE=<dir>) times dli/waves beside the app (bench/groups/compare.mjs);
 // `--query-frames=256` sets the grids of the query-frames rows.
 // BENCH_PORT=<port> sets the first port tried for the servers (default 5180; the next free ones after it).
@@ -28,6 +29,7 @@ import { COMPARE_CLONE } from './groups/compare.mjs';
 import * as fft2d from './groups/fft2d.mjs';
 import * as fields from './groups/fields.mjs';
 import * as frame from './groups/frame.mjs';
+import * as island from './groups/island.mjs';
 import * as living from './groups/living.mjs';
 import * as reflections from './groups/reflections.mjs';
 import * as parameterChange from './groups/parameter-change.mjs';
@@ -43,8 +45,12 @@ const FIRST_PORT = process.env.BENCH_PORT ? Number(process.env.BENCH_PORT) : 518
 if (!Number.isInteger(FIRST_PORT) || FIRST_PORT < 1024 || FIRST_PORT > 65000) throw new Error(`BENCH_PORT: not a port from 1024 to 65000: '${process.env.BENCH_PORT}'`);
 
 /** The grids of the query-frames rows (`--query-frames=256` for one). */
+/** Frames timed per island row (`--island-rounds=<n>`; FRAME_ROUNDS by default). */
+const islandArgument = process.argv.find((a) => a.startsWith('--island-rounds='));
+const ISLAND_ROUNDS = islandArgument ? Number(islandArgument.slice(16)) : undefined;
+if (ISLAND_ROUNDS !== undefined && !(Number.isInteger(ISLAND_ROUNDS) && ISLAND_ROUNDS > 0)) throw new Error(`--island-rounds: not a whole number of frames above 0: '${islandArgument}'`);
 const QUERY_FRAME_RESOLUTIONS = (process.argv.find((a) => a.startsWith('--query-frames='))?.slice(15) ?? '256,512,1024').split(',').map(Number);
-const GROUPS = ['fft2d', 'fields', 'cascades', 'frame', 'living', 'reflections', 'queries', 'app'];
+const GROUPS = ['fft2d', 'fields', 'cascades', 'frame', 'living', 'reflections', 'island', 'queries', 'app'];
 const compareArgument = process.argv.slice(2).find((argument) => argument.startsWith('--compare='));
 /** The directory of a dli/waves checkout to time beside the app, or null. */
 const compareDir = compareArgument ? resolve(compareArgument.slice('--compare='.length)) : process.env.BENCH_COMPARE ? resolve(process.env.BENCH_COMPARE) : null;
@@ -78,6 +84,7 @@ const BROWSER_STEPS = [
   ['frame', frame.browser],
   ['living', living.browser],
   ['reflections', reflections.browser],
+  ['island', island.browser],
   ['queries', queries.browser],
   ['queries', queryFrames.browser],
   ['queries', parameterChange.browser],
@@ -97,7 +104,7 @@ async function nodeBenchmarks(results) {
 
 async function browserBenchmarks(results) {
   await withBenchBrowser(FIRST_PORT, async (opened) => {
-    const context = { ...opened, results, firstPort: FIRST_PORT, compareDir, queryFrameResolutions: QUERY_FRAME_RESOLUTIONS };
+    const context = { ...opened, results, firstPort: FIRST_PORT, compareDir, queryFrameResolutions: QUERY_FRAME_RESOLUTIONS, islandRounds: ISLAND_ROUNDS };
     for (const [group, step] of BROWSER_STEPS) if (group === null || wanted(group)) await step(context);
   });
 }
@@ -115,6 +122,8 @@ const results = {
   frameByCascades: {},
   livingCost: null,
   reflectionsCost: null,
+  /** island-cost per quality and seabed-cost (bench/groups/island.mjs). */
+  island: null,
   queries: null,
   app: {},
   /** dli/waves: { ms, N }, or { error }; null when not asked for (no --compare). */

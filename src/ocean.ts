@@ -452,7 +452,7 @@ export class Ocean extends Object3D<OceanEventMap> {
   private preparedShore(): Shore | null {
     if (!this.shore.active) return null;
     const sim = this.simulation;
-    this.shore.prepare(sim.layers, sim.cascades, sim.parameters.depth, 4 * this.heightRms);
+    this.shore.prepare(sim.layers, sim.cascades, sim.parameters.depth, 4 * this.heightRms, this.statistics.seaState.peakPeriod);
     return this.shore;
   }
 

@@ -11,6 +11,7 @@
 import { ACESFilmicToneMapping, BoxGeometry, Mesh, MeshBasicMaterial, PerspectiveCamera, Scene, Vector3, WebGLRenderer } from 'three';
 import type { PressureSource } from '../../src/layers/localWaves';
 import { Ocean, type OceanOptions } from '../../src/ocean';
+import { islandFrames } from './island';
 
 export interface FrameOptions {
   resolution: number;
@@ -279,8 +280,8 @@ async function parameterChanges(options: { resolution: number; rounds: number; w
 
 declare global {
   interface Window {
-    frameBench: { frames: typeof frames; queries: typeof queries; queryFrames: typeof queryFrames; parameterChanges: typeof parameterChanges };
+    frameBench: { frames: typeof frames; queries: typeof queries; queryFrames: typeof queryFrames; parameterChanges: typeof parameterChanges; islandFrames: typeof islandFrames };
   }
 }
-window.frameBench = { frames, queries, queryFrames, parameterChanges };
+window.frameBench = { frames, queries, queryFrames, parameterChanges, islandFrames };
 document.title = 'ready';

@@ -8,6 +8,7 @@
 #include "surface/waveLayers.glsl"
 #ifdef SEABED
 #include "surface/shoaling.glsl"
+#include "surface/swash.glsl"
 // Each layer's shoaling factor at the rest point, for the fragment stage's slopes; the breaking
 // limit's dη_limited/dη there; the foam the shore adds (shoaling.glsl).
 varying float vShoaling[LAYER_COUNT];
@@ -63,14 +64,18 @@ void main() {
   vec4 blend = blendWeights(point.fromEye);
   vec4 displacement = vec4(0.0);
 #ifdef SEABED
-  float depth = seabedDepth(point.fromEye);
+  float depth = seabedAt(point.fromEye).x;
+  float deepHeight = 0.0;  // the sea's height before shoaling: what the swash follows (swash.glsl)
+  vec4 layerDisplacement;  // declared out here: the unrolled loop's bodies share one scope
 #endif
   #pragma unroll_loop_start
   for (int i = 0; i < LAYER_COUNT; i++) {
     vLayerUv[ i ] = ringLayerUvOrigins[point.frameRing * LAYER_COUNT + UNROLLED_LOOP_INDEX] + point.fromCentre / layerSizes[ i ];
 #ifdef SEABED
     vShoaling[ i ] = shoalingFactor(UNROLLED_LOOP_INDEX, depth);
-    displacement += vShoaling[ i ] * textureLod(tLayerDisplacement[ i ], vLayerUv[ i ], point.lod + layerLodBias[ i ]);
+    layerDisplacement = textureLod(tLayerDisplacement[ i ], vLayerUv[ i ], point.lod + layerLodBias[ i ]);
+    displacement += vShoaling[ i ] * layerDisplacement;
+    deepHeight += layerDisplacement.y;
 #else
     displacement += textureLod(tLayerDisplacement[ i ], vLayerUv[ i ], point.lod + layerLodBias[ i ]);
 #endif
@@ -84,6 +89,7 @@ void main() {
   // The largest layer's copies, and their blend's slope, shoal with it.
   float largestShoaling = vShoaling[LAYER_COUNT - 1];
   displacement += largestShoaling * ((blend.x - 1.0) * first + blend.y * copy);
+  deepHeight += (blend.x - 1.0) * first.y + blend.y * copy.y;
 #else
   displacement += (blend.x - 1.0) * first + blend.y * copy;
 #endif
@@ -96,10 +102,13 @@ void main() {
 #endif
   displacement.xzw *= choppiness;
 #ifdef SEABED
-  // Breaking is limited by the water column under the surface point, where the rest point moved to.
-  float columnDepth = seabedDepth(point.fromEye + displacement.xz);
+  // Breaking is limited by the water column under the surface point, where the rest point moved to:
+  // the depth there raised by the swash level ζ_t, on which the waves ride (swash.glsl).
+  vec2 column = seabedAt(point.fromEye + displacement.xz);
+  float swash = swashLevel(deepHeight, column.x, column.y);
+  float columnDepth = column.x + swash;
   vec3 broken = breaking(displacement.y, columnDepth);
-  displacement.y = broken.x;
+  displacement.y = swash + broken.x;
   vBreakingSlope = broken.y;
   vShoreFoam = shoreFoam(columnDepth, broken.z);
   vFoam = clamp(vFoam + vShoreFoam, 0.0, 1.0);

@@ -3,7 +3,7 @@
 // are in src/spectrum/shoaling.ts (linear shoaling Ks = √(c_g,ref / c_g(d)), Dean & Dalrymple 1991
 // eq. 4.82; McCowan's 1894 limit H ≤ 0.78·d); the queries (surfaceQuery.ts) apply the same ones to
 // the same tables. Included only with the SEABED define.
-uniform sampler2D tSeabed;          // depths (m) at the map's nodes, R32F, read with texelFetch
+uniform sampler2D tSeabed;          // (depth m, slope |∇d|) at the map's nodes, RG32F, read with texelFetch
 uniform vec4 seabedFrame;           // (eye's node coordinates x, z; nodes per metre x, z), see Shore.setEye
 uniform vec2 seabedNodes;           // nodes along x and z
 uniform float seabedOutsideDepth;   // the `depth` option (1e30 for deep water)
@@ -17,17 +17,17 @@ uniform float breakerDepth;         // Hs / 0.78: where the sea's significant wa
 #define BREAKING_KNEE 0.7
 #define LAND_DROP 0.3
 
-// Depth (m) under the rest point `fromEye` (metres from the eye): bilinear between the map's nodes
-// (SeabedMap.depthAt), the `depth` option outside it.
-float seabedDepth(vec2 fromEye) {
+// Depth (m) and the bottom's slope |∇d| under the point `fromEye` (metres from the eye): bilinear
+// between the map's nodes (SeabedMap.depthAt, slopeAt), the `depth` option and a flat bottom outside it.
+vec2 seabedAt(vec2 fromEye) {
   vec2 node = seabedFrame.xy + fromEye * seabedFrame.zw;
-  if (any(lessThan(node, vec2(0.0))) || any(greaterThan(node, seabedNodes - 1.0))) return seabedOutsideDepth;
+  if (any(lessThan(node, vec2(0.0))) || any(greaterThan(node, seabedNodes - 1.0))) return vec2(seabedOutsideDepth, 0.0);
   ivec2 cell = min(ivec2(floor(node)), ivec2(seabedNodes) - 2);
   vec2 f = node - vec2(cell);
-  float d00 = texelFetch(tSeabed, cell, 0).r;
-  float d10 = texelFetch(tSeabed, cell + ivec2(1, 0), 0).r;
-  float d01 = texelFetch(tSeabed, cell + ivec2(0, 1), 0).r;
-  float d11 = texelFetch(tSeabed, cell + ivec2(1, 1), 0).r;
+  vec2 d00 = texelFetch(tSeabed, cell, 0).rg;
+  vec2 d10 = texelFetch(tSeabed, cell + ivec2(1, 0), 0).rg;
+  vec2 d01 = texelFetch(tSeabed, cell + ivec2(0, 1), 0).rg;
+  vec2 d11 = texelFetch(tSeabed, cell + ivec2(1, 1), 0).rg;
   return mix(mix(d00, d10, f.x), mix(d01, d11, f.x), f.y);
 }
 

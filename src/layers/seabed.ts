@@ -17,7 +17,7 @@ import {
   Mesh,
   NearestFilter,
   OrthographicCamera,
-  RedFormat,
+  RGFormat,
   RGBAFormat,
   Scene,
   ShaderMaterial,
@@ -68,8 +68,13 @@ const DEFAULT_RESOLUTION = 256;
 const LARGEST_RESOLUTION = 4096;
 
 export class SeabedMap {
-  /** The depths' texture (R32F, nearest: the shader interpolates it itself), owned and freed here. */
+  /**
+   * The depths and the bottom's slope |∇d| at each node (RG32F: depth, slope; nearest: the shader
+   * interpolates it itself), owned and freed here.
+   */
   readonly texture: DataTexture;
+  /** |∇d| at node (i, j) at [j·width + i]: central differences (one-sided at the edges). */
+  readonly slopes: Float32Array;
 
   constructor(
     readonly bounds: SeabedBounds,
@@ -78,13 +83,28 @@ export class SeabedMap {
     /** Depth at node (i, j) at [j·width + i], m. */
     readonly depths: Float32Array,
   ) {
-    this.texture = new DataTexture(depths, width, height, RedFormat, FloatType);
+    this.slopes = nodeSlopes(depths, width, height, bounds);
+    const texels = new Float32Array(2 * width * height);
+    for (let at = 0; at < width * height; at++) {
+      texels[2 * at] = depths[at];
+      texels[2 * at + 1] = this.slopes[at];
+    }
+    this.texture = new DataTexture(texels, width, height, RGFormat, FloatType);
     this.texture.minFilter = this.texture.magFilter = NearestFilter;
     this.texture.needsUpdate = true;
   }
 
   /** Depth (m) at the world point (x, z): bilinear between nodes, `outside` beyond the bounds. */
   depthAt(x: number, z: number, outside: number): number {
+    return this.bilinear(this.depths, x, z, outside);
+  }
+
+  /** The bottom's slope |∇d| at the world point (x, z), bilinear between nodes; 0 beyond the bounds (flat). */
+  slopeAt(x: number, z: number): number {
+    return this.bilinear(this.slopes, x, z, 0);
+  }
+
+  private bilinear(d: Float32Array, x: number, z: number, outside: number): number {
     const [xMin, zMin, xMax, zMax] = this.bounds;
     const u = ((x - xMin) / (xMax - xMin)) * (this.width - 1);
     const v = ((z - zMin) / (zMax - zMin)) * (this.height - 1);
@@ -93,7 +113,6 @@ export class SeabedMap {
     const j = Math.min(Math.floor(v), this.height - 2);
     const fu = u - i;
     const fv = v - j;
-    const d = this.depths;
     const at = j * this.width + i;
     return (1 - fv) * ((1 - fu) * d[at] + fu * d[at + 1]) + fv * ((1 - fu) * d[at + this.width] + fu * d[at + this.width + 1]);
   }
@@ -101,6 +120,26 @@ export class SeabedMap {
   dispose(): void {
     this.texture.dispose();
   }
+}
+
+/** |∇d| at every node of a width × height map over `bounds`: central differences, one-sided at the edges. */
+function nodeSlopes(depths: Float32Array, width: number, height: number, bounds: SeabedBounds): Float32Array {
+  const [xMin, zMin, xMax, zMax] = bounds;
+  const stepX = (xMax - xMin) / (width - 1);
+  const stepZ = (zMax - zMin) / (height - 1);
+  const slopes = new Float32Array(width * height);
+  for (let j = 0; j < height; j++) {
+    const below = Math.max(j - 1, 0);
+    const above = Math.min(j + 1, height - 1);
+    for (let i = 0; i < width; i++) {
+      const left = Math.max(i - 1, 0);
+      const right = Math.min(i + 1, width - 1);
+      const gx = (depths[j * width + right] - depths[j * width + left]) / ((right - left) * stepX);
+      const gz = (depths[above * width + i] - depths[below * width + i]) / ((above - below) * stepZ);
+      slopes[j * width + i] = Math.hypot(gx, gz);
+    }
+  }
+  return slopes;
 }
 
 /** The depth map a Seabed describes; throws a ParameterError naming what is wrong. */

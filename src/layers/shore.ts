@@ -2,12 +2,13 @@
  * The shore: a seabed's depth map (seabed.ts) and, for each wave layer, its shoaling factors F_c(d)
  * over depth (src/spectrum/shoaling.ts), which the surface (shaders/surface/shoaling.glsl) and the
  * queries (surfaceQuery.ts) apply alike: each layer's fields × F_layer(d) at the rest point, then
- * the height limited by breaking. FFT cascades shoal by their spectrum; other layers (local waves,
+ * the height limited by breaking, riding on the swash level (src/spectrum/swash.ts). FFT cascades shoal by their spectrum; other layers (local waves,
  * the user's) are left as they are (factor 1). Owns the depth map and the factors' texture.
  */
 import { DataTexture, FloatType, NearestFilter, RedFormat, Vector2, Vector3, Vector4 } from 'three';
 import type { InitialSpectrum } from '../spectrum/initialSpectrum';
 import { BREAKER_INDEX, cascadeShoalingRow, shoalingDepths, shoalingFactor, SHOALING_DEPTHS, type ShoalingDepths } from '../spectrum/shoaling';
+import { swashLength, swashLevel } from '../spectrum/swash';
 import type { SeabedMap } from './seabed';
 import type { WaveLayer } from './waveLayer';
 
@@ -35,6 +36,8 @@ export class Shore {
     shoalingDepths: { value: new Vector3() },
     // Depth at which the sea's significant wave breaks, Hs/κ (McCowan): where the surf zone begins.
     breakerDepth: { value: 1 },
+    // (√(H0·L0) m, Hs m) of the sea, for the swash (shaders/surface/swash.glsl); x = 0: none.
+    swashSea: { value: new Vector2(0, 1) },
   };
 
   /** Whether there is a seabed (else the surface and the queries are as without a shore). */
@@ -56,13 +59,15 @@ export class Shore {
 
   /**
    * Makes the factors for these layers (`cascades` those of them that shoal by their spectrum) in
-   * a sea made for `referenceDepth`, with significant wave height `significantHeight` (m); nothing
-   * to do when neither the list nor the depth changed since the last call.
+   * a sea made for `referenceDepth`, with significant wave height `significantHeight` (m) and peak
+   * period `peakPeriod` (s; the swash's scale); nothing more to do when neither the list nor the
+   * depth changed since the last call.
    */
-  prepare(layers: readonly WaveLayer[], cascades: readonly (WaveLayer & { spectrum: InitialSpectrum })[], referenceDepth: number, significantHeight: number): void {
+  prepare(layers: readonly WaveLayer[], cascades: readonly (WaveLayer & { spectrum: InitialSpectrum })[], referenceDepth: number, significantHeight: number, peakPeriod: number): void {
     this.outside = referenceDepth;
     this.uniforms.seabedOutsideDepth.value = Math.min(referenceDepth, DEEP);
     this.uniforms.breakerDepth.value = Math.max(significantHeight / BREAKER_INDEX, 0.01);
+    this.uniforms.swashSea.value.set(swashLength(significantHeight, peakPeriod), significantHeight);
     if (layers === this.preparedFor.layers && referenceDepth === this.preparedFor.referenceDepth) return;
     this.preparedFor = { layers, referenceDepth };
     const longest = Math.max(1, ...cascades.map((cascade) => cascade.spectrum.patchSize));
@@ -97,6 +102,15 @@ export class Shore {
   /** Depth (m) under the world point (x, z): the map's, or the `depth` option's outside it. */
   depthAt(x: number, z: number): number {
     return this.map === null ? this.outside : this.map.depthAt(x, z, this.outside);
+  }
+
+  /**
+   * The swash level ζ_t (m, src/spectrum/swash.ts) at the world point (x, z) of depth `depth`,
+   * where the sea's height before shoaling is `deepHeight`.
+   */
+  swashLevel(deepHeight: number, x: number, z: number, depth: number): number {
+    const sea = this.uniforms.swashSea.value;
+    return this.map === null ? 0 : swashLevel(deepHeight, depth, this.map.slopeAt(x, z), sea.x, sea.y);
   }
 
   /** F of layer `layer` (its index in the prepared list) at depth d. */

@@ -26,6 +26,8 @@ export interface SurfaceShore {
   depthAt(x: number, z: number): number;
   /** F of layers[layer] at depth d. */
   layerFactor(layer: number, depth: number): number;
+  /** The swash level ζ_t (m) at (x, z) of depth d where the sea's height before shoaling is `deepHeight`. */
+  swashLevel(deepHeight: number, x: number, z: number, depth: number): number;
 }
 
 /** The summed fields at one rest point: displacement, slopes and the Jacobian terms of the choppy map. */
@@ -46,6 +48,15 @@ interface SurfaceSample {
   restZ: number;
   /** dη_limited/dη of the breaking limit there (1 without a seabed; set by surfacePointOver). */
   breaking: number;
+  /**
+   * Over a seabed (set by surfacePointOver): the water column's depth under the point, the swash
+   * level that raised it, the sea's height there before shoaling, and the shoaled height before the
+   * breaking limit.
+   */
+  column: number;
+  swash: number;
+  deepHeight: number;
+  sea: number;
 }
 
 /**
@@ -113,7 +124,7 @@ export function velocityAt<T extends { x: number; y: number; z: number }>(
   const rest = surfacePointOver(layers, choppiness, t, x, z, shore === null ? FIELDS.newton : FIELDS.height, shore);
   const blended = prepareBlend(layers);
   const depth = shore === null ? 0 : shore.depthAt(rest.restX, rest.restZ);
-  velocity.x = velocity.y = velocity.z = 0;
+  velocity.x = velocity.y = velocity.z = velocity.deepY = 0;
   for (let i = 0; i < layers.length; i++) {
     const fields = layers[i].queryFields(t);
     const n = fields.resolution;
@@ -122,26 +133,48 @@ export function velocityAt<T extends { x: number; y: number; z: number }>(
     const texels = fields.velocities();
     const factor = shore === null ? 1 : shore.layerFactor(i, depth);
     if (i !== blended) {
-      addVelocity(texels, n, at.u, at.v, factor);
+      addVelocity(texels, n, at.u, at.v, factor, 1);
       continue;
     }
     const theta = blendAngle(blendUniforms, rest.restX, rest.restZ);
-    addVelocity(texels, n, at.u, at.v, factor * Math.cos(theta));
-    addVelocity(texels, n, at.u + COPY_OFFSET[0] * n, at.v + COPY_OFFSET[1] * n, factor * Math.sin(theta));
+    addVelocity(texels, n, at.u, at.v, factor * Math.cos(theta), Math.cos(theta));
+    addVelocity(texels, n, at.u + COPY_OFFSET[0] * n, at.v + COPY_OFFSET[1] * n, factor * Math.sin(theta), Math.sin(theta));
   }
   out.x = choppiness * velocity.x;
-  out.y = rest.breaking * velocity.y;
+  out.y = shore === null ? velocity.y : shoreHeightRate(rest, shore, x, z);
   out.z = choppiness * velocity.z;
   return out;
 }
 
-const velocity = { x: 0, y: 0, z: 0 };
+/**
+ * ∂h/∂t of the surface over a seabed at (x, z), h = ζ_t + η_limited(η, D), D = d + ζ_t (the column):
+ * ∂η_limited/∂η·∂η/∂t + (1 + ∂η_limited/∂D)·∂ζ_t/∂t. ζ_t is linear in the sea's height before
+ * shoaling (swash.ts), so its rate is exactly ζ_t(η_deep + ∂η_deep/∂t·1 s) − ζ_t; ∂η_limited/∂D
+ * is a central difference over COLUMN_STEP.
+ */
+function shoreHeightRate(rest: SurfaceSample, shore: SurfaceShore, x: number, z: number): number {
+  const swashRate = shore.swashLevel(rest.deepHeight + velocity.deepY, x, z, rest.column - rest.swash) - rest.swash;
+  const rate = rest.breaking * velocity.y;
+  if (swashRate === 0) return rate;
+  const columnSlope = (breakingHeight(rest.sea, rest.column + COLUMN_STEP) - breakingHeight(rest.sea, rest.column - COLUMN_STEP)) / (2 * COLUMN_STEP);
+  return rate + (1 + columnSlope) * swashRate;
+}
 
-/** Adds `weight` × the velocity texels' (∂Dx/∂t, ∂h/∂t, ∂Dz/∂t) at texel coordinates (u, v). */
-function addVelocity(texels: Float32Array, n: number, u: number, v: number, weight: number): void {
+/** m: the limit bends over tenths of the depth; a millimetre resolves it. */
+const COLUMN_STEP = 1e-3;
+
+const velocity = { x: 0, y: 0, z: 0, deepY: 0 };
+
+/**
+ * Adds `weight` × the velocity texels' (∂Dx/∂t, ∂h/∂t, ∂Dz/∂t) at texel coordinates (u, v), and
+ * `deepWeight` × ∂h/∂t to the sea's vertical velocity before shoaling (deepY).
+ */
+function addVelocity(texels: Float32Array, n: number, u: number, v: number, weight: number, deepWeight: number): void {
   placeTaps(primary, n, u, v);
   velocity.x += weight * tap(texels, primary, 0);
-  velocity.y += weight * tap(texels, primary, 1);
+  const rate = tap(texels, primary, 1);
+  velocity.y += weight * rate;
+  velocity.deepY += deepWeight * rate;
   velocity.z += weight * tap(texels, primary, 2);
 }
 
@@ -159,7 +192,9 @@ function layerTexel(frame: LayerFrame, resolution: number, x: number, z: number)
   return texel;
 }
 
-const sample: SurfaceSample = { dx: 0, height: 0, dz: 0, slopeX: 0, slopeZ: 0, dxdx: 0, dzdz: 0, dxdz: 0, dzdx: 0, restX: 0, restZ: 0, breaking: 1 };
+const sample: SurfaceSample = { dx: 0, height: 0, dz: 0, slopeX: 0, slopeZ: 0, dxdx: 0, dzdz: 0, dxdz: 0, dzdx: 0, restX: 0, restZ: 0, breaking: 1, column: 0, swash: 0, deepHeight: 0, sea: 0 };
+/** The sea's fields before shoaling, for the swash. */
+const deepSample: SurfaceSample = { ...sample };
 
 /**
  * The summed fields at the rest point x0 that the choppy displacement moves onto (x, z),
@@ -202,12 +237,17 @@ function surfacePointOver(layers: readonly WaveLayer[], choppiness: number, t: n
   sample.restZ = restZ;
   sample.breaking = 1;
   if (shore !== null && what !== FIELDS.newton) {
-    // McCowan's limit (shoaling.ts) for the water column under the surface point (x, z), as
-    // shoaling.glsl draws it; the slopes follow its derivative.
+    // McCowan's limit (shoaling.ts) for the water column under the surface point (x, z), raised by
+    // the swash level (swash.ts) the waves ride on, as ocean.vert draws it; the slopes follow its derivative.
+    sampleLayers(layers, blended, t, restX, restZ, deepSample, FIELDS.height, null);
     const depth = shore.depthAt(x, z);
+    sample.deepHeight = deepSample.height;
+    sample.swash = shore.swashLevel(deepSample.height, x, z, depth);
+    sample.column = depth + sample.swash;
     const raw = sample.height;
-    sample.height = breakingHeight(raw, depth);
-    sample.breaking = breakingSlope(raw, depth);
+    sample.sea = raw;
+    sample.height = sample.swash + breakingHeight(raw, sample.column);
+    sample.breaking = breakingSlope(raw, sample.column);
     sample.slopeX *= sample.breaking;
     sample.slopeZ *= sample.breaking;
   }

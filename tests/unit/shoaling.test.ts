@@ -25,6 +25,8 @@ import type { WaveLayer } from '../../src/layers/waveLayer';
 import { ParameterError } from '../../src/parameters/options';
 import { validateParameters } from '../../src/parameters/parameters';
 import { createCascadeSpectra, type InitialSpectrum } from '../../src/spectrum/initialSpectrum';
+import { spectralMoments } from '../../src/spectrum/seaState';
+import { runup2, swashLength, swashScale } from '../../src/spectrum/swash';
 import {
   breakingHeight,
   breakingSlope,
@@ -78,6 +80,8 @@ describe('(a) the shoaling coefficient', () => {
 
 const parameters = validateParameters({ resolution: 64 });
 const spectra = createCascadeSpectra(parameters);
+/** The sea's peak period Tp (s), from its spectrum's moments: the swash's scale L0 = g·Tp²/(2π). */
+const peakPeriod = (2 * Math.PI) / spectralMoments(parameters, parameters.patchSizes[parameters.patchSizes.length - 1]).peakFrequency;
 
 /** Σ over a cascade's modes of |h̃0|² (both halves of each texel) × g(|k|). */
 function modeSum(s: InitialSpectrum, g: (k: number) => number): number {
@@ -155,7 +159,7 @@ describe('(c) the queries over a 1:50 beach', () => {
   const shore = new Shore();
   shore.setMap(createSeabedMap(beach, null));
   const deepRms = Math.sqrt(spectra.reduce((sum, s) => sum + modeSum(s, () => 1), 0));
-  shore.prepare(layers, layers, Infinity, 4 * deepRms);
+  shore.prepare(layers, layers, Infinity, 4 * deepRms, peakPeriod);
 
   it('follow linear shoaling of the spectrum: the RMS height at 40, 15 and 8 m within 15 %', () => {
     const depths = [40, 15, 8];
@@ -176,8 +180,10 @@ describe('(c) the queries over a 1:50 beach', () => {
     });
   });
 
-  it('never let crest to trough exceed 0.78·d where d ≤ 3 m', () => {
-    for (const d of [0.5, 1, 2, 3]) {
+  // Shallower than SWASH_END·S (1.11 m for this sea) the swash level moves the water too (e).
+  it('never let crest to trough exceed 0.78·d where 1.5·S < d ≤ 3 m', () => {
+    expect(1.5 * swashScale(swashLength(4 * deepRms, peakPeriod), SLOPE).swash).toBeLessThan(1.5);
+    for (const d of [1.5, 2, 3]) {
       let highest = -Infinity;
       let lowest = Infinity;
       for (let step = 0; step < 200; step++) {
@@ -197,7 +203,7 @@ describe('(c) the queries over a 1:50 beach', () => {
   it('are bit-identical to those without a seabed where the seabed is not', () => {
     const elsewhere = new Shore();
     elsewhere.setMap(createSeabedMap({ depthAt: () => 2, bounds: [1e5, 1e5, 1e5 + 10, 1e5 + 10] }, null));
-    elsewhere.prepare(layers, layers, Infinity, 4 * deepRms);
+    elsewhere.prepare(layers, layers, Infinity, 4 * deepRms, peakPeriod);
     const a = { x: 0, y: 0, z: 0 };
     const b = { x: 0, y: 0, z: 0 };
     for (let p = 0; p < 20; p++) {
@@ -209,10 +215,65 @@ describe('(c) the queries over a 1:50 beach', () => {
     elsewhere.dispose();
   });
 
-  it('put the water under the ground over land', () => {
-    expect(heightAt(layers, parameters.choppiness, 3, -50, 0, shore)).toBe(-0.3);
+  it('put the water under the ground over land beyond the swash', () => {
+    // 3 m above the sea, beyond any runup of this sea (R2 ≈ 0.5 m): the water LAND_DROP under its level.
+    for (let step = 0; step < 50; step++) expect(heightAt(layers, parameters.choppiness, 1.3 * step, -150, 0, shore)).toBeLessThan(1.5);
     expect(shore.depthAt(-50, 0)).toBeCloseTo(-1, 5);
     expect(shore.depthAt(1e4, 0)).toBe(Infinity);
+  });
+});
+
+describe('(e) swash on the 1:50 beach', () => {
+  const layers = spectra.map(cascadeLayer);
+  const shore = new Shore();
+  shore.setMap(createSeabedMap(beach, null));
+  const deepRms = Math.sqrt(spectra.reduce((sum, s) => sum + modeSum(s, () => 1), 0));
+  shore.prepare(layers, layers, Infinity, 4 * deepRms, peakPeriod);
+
+  it('Stockdon et al. 2006 eq. 19, written out: R2 = 1.1·(0.35·β·√(H0·L0) + ½·√(H0·L0·(0.563·β² + 0.004)))', () => {
+    // H0 = 2 m, Tp = 10 s: L0 = g·T²/(2π) = 156.13 m (Dean & Dalrymple eq. 3.35), √(H0·L0) = 17.671 m.
+    const root = Math.sqrt(2 * ((9.81 * 100) / (2 * Math.PI)));
+    expect(swashLength(2, 10)).toBeCloseTo(root, 9);
+    for (const beta of [0.01, 0.02, 0.1]) {
+      expect(runup2(root, beta)).toBeCloseTo(1.1 * (0.35 * beta * root + 0.5 * Math.sqrt(root * root * (0.563 * beta * beta + 0.004))), 9);
+    }
+    expect(runup2(root, 0.02)).toBeCloseTo(0.768, 3); // by hand: 1.1·(0.1237 + 0.5743)
+    expect(swashLength(0, 10)).toBe(0); // no waves, no swash
+  });
+
+  it('moves the queried waterline up and down the beach by the swash Stockdon et al. predict (within 20 %)', () => {
+    // Where the water meets the ground along a line across the beach at time t: the first place,
+    // going out to sea, where heightAt is above the ground (−depth), by 0.5 m steps and bisection.
+    const wet = (x: number, z: number, t: number) => heightAt(layers, parameters.choppiness, t, x, z, shore) > -shore.depthAt(x, z);
+    const waterline = (z: number, t: number) => {
+      let x = -80;
+      while (!wet(x, z, t)) x += 0.5;
+      let [dry, water] = [x - 0.5, x];
+      for (let i = 0; i < 12; i++) {
+        const mid = 0.5 * (dry + water);
+        if (wet(mid, z, t)) water = mid;
+        else dry = mid;
+      }
+      return 0.5 * (dry + water);
+    };
+    const elevations: number[] = [];
+    for (let line = 0; line < 4; line++) {
+      for (let step = 0; step < 100; step++) elevations.push(-SLOPE * waterline(-500 + 283 * line, 3.7 * step));
+    }
+    const mean = elevations.reduce((a, b) => a + b, 0) / elevations.length;
+    const swash = 4 * Math.sqrt(elevations.reduce((a, b) => a + (b - mean) ** 2, 0) / elevations.length);
+    const sorted = [...elevations].sort((a, b) => a - b);
+    const exceeded = sorted[Math.floor(0.98 * sorted.length)];
+    const length = swashLength(4 * deepRms, peakPeriod);
+    const expected = swashScale(length, SLOPE);
+    const r2 = runup2(length, SLOPE);
+    console.log(
+      `waterline elevation over ${elevations.length} instants: mean ${mean.toFixed(3)} m (setup ${expected.setup.toFixed(3)}), 4σ ${swash.toFixed(3)} m (S ${expected.swash.toFixed(3)}), ` +
+        `2 % exceeded ${exceeded.toFixed(3)} m (R2 ${r2.toFixed(3)}), range ${sorted[0].toFixed(3)} to ${sorted[sorted.length - 1].toFixed(3)} m: ${((sorted[sorted.length - 1] - sorted[0]) / SLOPE).toFixed(1)} m along the beach`,
+    );
+    expect(Math.abs(swash / expected.swash - 1)).toBeLessThan(0.2);
+    expect(Math.abs(exceeded / r2 - 1)).toBeLessThan(0.2);
+    expect(Math.abs(mean - expected.setup)).toBeLessThan(0.1 * expected.swash);
   });
 });
 

@@ -2,7 +2,9 @@
  * Shores on the real GPU path (src/layers/shore.ts, shaders/surface/shoaling.glsl): over a 1:50
  * plane beach the surface the vertex shader draws is the one the queries describe (heightAt at each
  * displaced vertex, within 2 cm, against 2 mm without a seabed as a control of the method), and the drawn
- * waterline lies where the queried surface meets the beach, within one cell of the grid. The shoaling
+ * waterline lies where the queried surface meets the beach, within one cell of the grid, also while
+ * the swash runs it up and down the beach (tests/unit/shoaling.test.ts (e) checks its size against
+ * Stockdon et al. 2006 on the queries). The shoaling
  * and breaking laws themselves are proven on the queries (tests/unit/shoaling.test.ts). A seabed
  * from meshes is drawn from above and read back; bad seabeds are refused and the last good one
  * stays. The picture of the beach is written to test-results-<port>/seabed/ for a person to look at.
@@ -28,7 +30,7 @@ test('the drawn surface over a beach is the queried one, and so is its waterline
     h.setup(true, 11.3, view.position, view.target, single);
     const formula = h.shoreFormula(plain, h.capture());
     h.setup(true, 11.3, view.position, view.target);
-    const offsets = h.waterline(h.capture());
+    const { offsets } = h.waterline(h.capture());
     return { formula, offsets, picture: h.picture() };
   }, view);
   mkdirSync(OUTPUT, { recursive: true });
@@ -43,6 +45,55 @@ test('the drawn surface over a beach is the queried one, and so is its waterline
   expect(formula.worst).toBeLessThan(2e-3);
   expect(offsets.length).toBeGreaterThan(20);
   expect(worstShore).toBeLessThanOrEqual(1);
+});
+
+// Swash (src/spectrum/swash.ts): the drawn waterline runs up and down the beach with the waves.
+// Stockdon et al. 2006 (Coastal Engineering 53, eqs. 11–12) give this sea on a 1:50 beach a
+// significant swash S = √(H0·L0·(0.563β² + 0.004)) = 0.75 m, four standard deviations of the
+// waterline's elevation. Eight instants a quarter of the peak period (6.2 s) apart span nearly two
+// waves: below 0.2·S (7 m along the beach) the waterline would be standing still, above 1.5·S it
+// would run further than Stockdon's runup. At every instant the drawn
+// waterline is where the queried one is, within one cell.
+test('the drawn waterline runs up and down the beach with the waves, where heightAt puts it', async ({ page }) => {
+  await page.goto('/tests/browser/seabed/seabed.html');
+  await expect(page).toHaveTitle('ready');
+  // Near the beach: the waterline at |z| < 30 m lies in the finest rings, at the queries' mip level.
+  const view = { position: [-30, 12, -50], target: [10, 0, 0] };
+  const result = await page.evaluate((view) => {
+    const h = window.seabed;
+    const instants = [];
+    h.setup(true, 0, view.position, view.target);
+    for (const t of [3, 4.6, 6.2, 7.8, 9.4, 11, 12.6, 14.2]) {
+      h.advance(t);
+      const { offsets, drawn } = h.waterline(h.capture());
+      // The runup's edge along the line z = 0 across the beach (heightAt; every drawn crossing is checked
+      // against heightAt's above), and for the record the drawn crossing within a metre of the line nearest it.
+      const z = 0;
+      const queried = h.queriedWaterline(z);
+      const nearest = drawn.filter(([, zz]) => Math.abs(zz - z) < 1).reduce((best, [x]) => (Math.abs(x - queried) < Math.abs(best - queried) ? x : best), Infinity);
+      const nearby = drawn.map((p, i) => [...p, offsets[i]]).filter(([, zz]) => Math.abs(zz) < 30);
+      instants.push({ t, z, queried, nearest, offsets: nearby.map(([, , offset]) => offset), crossings: nearby.length, swash: h.stockdonSwash() });
+    }
+    return { instants, picture: h.picture() };
+  }, view);
+  mkdirSync(OUTPUT, { recursive: true });
+  writeFileSync(join(OUTPUT, 'swash.png'), Buffer.from(result.picture.split(',')[1], 'base64'));
+  // Elevation above still water of the queried runup edge (−depth = x/50).
+  const elevations = result.instants.map((i) => -i.queried / 50);
+  const range = Math.max(...elevations) - Math.min(...elevations);
+  const swash = result.instants[0].swash;
+  for (const i of result.instants) {
+    console.log(
+      `t = ${i.t} s: runup edge at z = ${i.z.toFixed(1)} m ${(-i.queried / 50).toFixed(3)} m above still water (x = ${i.queried.toFixed(2)} m), nearest drawn crossing at x = ${i.nearest.toFixed(2)} m; ` +
+        `${i.crossings} drawn crossings at |z| < 30 m, worst ${Math.max(...i.offsets).toFixed(2)} cells from heightAt's`,
+    );
+    expect(i.crossings).toBeGreaterThan(0);
+    expect(Math.max(...i.offsets)).toBeLessThanOrEqual(1);
+  }
+  console.log(`runup edge's elevation range over ${elevations.length} instants: ${range.toFixed(3)} m (${(range * 50).toFixed(1)} m along the beach); Stockdon's S ${swash.toFixed(3)} m`);
+  expect(swash).toBeCloseTo(0.75, 1);
+  expect(range).toBeGreaterThan(0.2 * swash);
+  expect(range).toBeLessThan(1.5 * swash);
 });
 
 test('a seabed from meshes is drawn from above; bad seabeds are refused and the last good one stays; its textures are freed', async ({ page }) => {

@@ -22,6 +22,7 @@ import {
 import { Ocean, type OceanOptions } from '../../../src/ocean';
 import type { Shore } from '../../../src/layers/shore';
 import { breakingHeight } from '../../../src/spectrum/shoaling';
+import { swashLength, swashScale } from '../../../src/spectrum/swash';
 import { OceanMaterial } from '../../../src/render/oceanMaterial';
 import { captureVertices } from '../shared/vertexCapture';
 
@@ -76,6 +77,12 @@ const harness = {
     renderer.render(scene, camera); // places the rings under the camera and binds the shore
   },
 
+  /** The same Ocean at time t. */
+  advance(t: number): void {
+    ocean!.update(t, camera);
+    renderer.render(scene, camera);
+  },
+
   /**
    * Every vertex of the drawn surface, from the real vertex shader: its displaced position and its
    * rest point, world coordinates (x, y, z, rest x, rest z, mip level) per vertex; the skirt left out.
@@ -88,7 +95,7 @@ const harness = {
     if (surface.material.defines.SEABED !== undefined) defines.SEABED = '';
     const material = new OceanMaterial({ environment: { value: null }, sunDirection: { value: new Vector3(0, 1, 0) } }, {}, defines);
     material.bindLayers(o.simulation.layers, o.parameters.choppiness, o.simulation.foam.texture);
-    const shoreUniforms = ['tSeabed', 'seabedFrame', 'seabedNodes', 'seabedOutsideDepth', 'tShoaling', 'shoalingDepths', 'breakerDepth'];
+    const shoreUniforms = ['tSeabed', 'seabedFrame', 'seabedNodes', 'seabedOutsideDepth', 'tShoaling', 'shoalingDepths', 'breakerDepth', 'swashSea'];
     for (const name of ['ringFrames', 'ringLayerUvOrigins', 'ringOffsets', 'halfRingCells', 'patchBlend', ...shoreUniforms]) {
       if (surface.material.uniforms[name]) material.uniforms[name] = surface.material.uniforms[name];
     }
@@ -106,8 +113,10 @@ const harness = {
   /**
    * The shore's part of the vertex shader, checked vertex by vertex on a sea of one layer: with the
    * seabed each vertex must be the same vertex without it (`plain`, same rest point, same mip
-   * level) with its displacement × F(d at the rest point) and its height then limited at the depth
-   * under the displaced point (Shore.layerFactor, breakingHeight: what the queries apply).
+   * level) with its displacement × F(d at the rest point) and its height then limited in the water
+   * column under the displaced point, d raised by the swash level ζ_t, and riding on it
+   * (Shore.layerFactor, Shore.swashLevel of the height without the seabed, breakingHeight: what the
+   * queries apply).
    * Returns the worst difference (m) over the vertices above the seabed, how many, and their RMS height.
    */
   shoreFormula(plain: number[][], over: number[][]) {
@@ -124,7 +133,9 @@ const harness = {
       const factor = shore.layerFactor(0, depth);
       const ex = rx + factor * (x - rx);
       const ez = rz + factor * (z - rz);
-      const ey = breakingHeight(factor * y, shore.depthAt(ex, ez));
+      const column = shore.depthAt(ex, ez);
+      const swash = shore.swashLevel(y, ex, ez, column);
+      const ey = swash + breakingHeight(factor * y, column + swash);
       worst = Math.max(worst, Math.abs(o[0] - ex), Math.abs(o[1] - ey), Math.abs(o[2] - ez));
       compared++;
       sumSquares += o[1] * o[1];
@@ -136,18 +147,21 @@ const harness = {
    * Along each line of rest points of constant z, where the drawn water meets the beach (going out
    * to sea, between a vertex whose water lies under the ground and the next, above it: y > −depth)
    * against the nearest place where the queried surface meets it (heightAt), in units of the
-   * distance between the two vertices (a cell of the grid); Infinity where none is near.
+   * distance between the two vertices (a cell of the grid); Infinity where none is near. With each,
+   * where the drawn one is (x, z).
    */
-  waterline(vertices: number[][]) {
+  waterline(vertices: number[][]): { offsets: number[]; drawn: [number, number][] } {
     const o = ocean!;
-    const rows = new Map<number, number[][]>();
+    // A line of one ring: where two rings overlap, their vertices share rest points at different mip levels.
+    const rows = new Map<string, number[][]>();
     for (const vertex of vertices) {
-      const key = Math.round(vertex[4] * 1000);
+      const key = `${Math.round(vertex[4] * 1000)} ${vertex[5]}`;
       if (!rows.has(key)) rows.set(key, []);
       rows.get(key)!.push(vertex);
     }
     const wet = (p: number[]) => p[1] > -o.depthAt(p[0], p[2]);
     const offsets: number[] = [];
+    const crossings: [number, number][] = [];
     for (const row of rows.values()) {
       row.sort((a, b) => a[3] - b[3]);
       for (let i = 1; i < row.length; i++) {
@@ -166,9 +180,10 @@ const harness = {
           before = now;
         }
         offsets.push(nearest / cell);
+        crossings.push([drawn, z]);
       }
     }
-    return offsets;
+    return { offsets, drawn: crossings };
   },
 
   /**
@@ -194,6 +209,29 @@ const harness = {
     cycled.dispose();
     renderer.render(scene, camera);
     return { before, after: memory() };
+  },
+
+  /**
+   * Where the queried water first meets the beach going out to sea along the line of constant z
+   * (x from −80 m, by 0.5 m steps, then bisection to a centimetre): the runup's edge.
+   */
+  queriedWaterline(z: number): number {
+    const o = ocean!;
+    const wet = (x: number) => o.heightAt(x, z) > -o.depthAt(x, z);
+    let x = -80;
+    while (!wet(x)) x += 0.5;
+    let [dry, water] = [x - 0.5, x];
+    while (water - dry > 0.01) {
+      const mid = 0.5 * (dry + water);
+      if (wet(mid)) water = mid;
+      else dry = mid;
+    }
+    return 0.5 * (dry + water);
+  },
+
+  /** Stockdon et al. 2006's significant swash S (m) on the 1:50 beach for the simulated sea (Hs = 4·heightRms, as the Ocean gives the shore). */
+  stockdonSwash(): number {
+    return swashScale(swashLength(4 * ocean!.heightRms, ocean!.seaState.peakPeriod), SLOPE).swash;
   },
 
   /** The frame, as a PNG data URL. */

@@ -1,0 +1,111 @@
+/**
+ * The island benchmark (bench/groups/island.mjs): examples/island.html's scene (src/objects/island.ts:
+ * the terrain, the reef, the pier and the moored boat, with its seabed under the sea, lit by the
+ * sea's sun) seen from ISLAND_VIEW, timed per frame as the frame page times the open sea
+ * (frame.ts): from an idle GPU through ocean.update(t), island.update and renderer.render() to a
+ * 1-pixel readPixels, the Oceans of one call interleaved round by round. A quality level is put
+ * in force as applyQuality.ts does, but for its MSAA (this page draws straight into an unsampled
+ * canvas): the pixel ratio, the simulation's grid and cascades, the refraction capture's and the
+ * reflection's scale. Each frame's ocean.update(t) is also timed alone (the simulation's share).
+ */
+import { ACESFilmicToneMapping, PerspectiveCamera, Scene, WebGLRenderer } from 'three';
+import { Island, ISLAND_VIEW } from '../../src/objects/island';
+import { SunLight } from '../../src/objects/sunLight';
+import { fitFarPlane, Ocean } from '../../src/index';
+import { ParameterError } from '../../src/parameters/options';
+import { QUALITY_STEPS, simulationAtQuality, type QualityLevel } from '../../src/runtime/adaptiveQuality';
+
+export interface IslandFrameOptions {
+  width: number;
+  height: number;
+  warmup: number;
+  rounds: number;
+  quality: QualityLevel;
+  /** One Ocean each: reflections and refractions 'scene' (else 'sky'), with the island's seabed or none. */
+  variants: { label: string; scene: boolean; seabed: boolean }[];
+}
+
+export interface IslandFrameSamples {
+  label: string;
+  samples: number[];
+  updateSamples: number[];
+  resolution: number;
+  cascades: number;
+  pixelRatio: number;
+  calls: number;
+}
+
+export async function islandFrames(options: IslandFrameOptions): Promise<IslandFrameSamples[]> {
+  const step = QUALITY_STEPS[options.quality];
+  const renderer = new WebGLRenderer({ antialias: false });
+  renderer.setPixelRatio(step.renderScale);
+  renderer.setSize(options.width, options.height);
+  renderer.toneMapping = ACESFilmicToneMapping;
+  document.body.appendChild(renderer.domElement);
+  const gl = renderer.getContext();
+  const camera = new PerspectiveCamera(50, options.width / options.height, 0.5, 1e4);
+  camera.position.fromArray(ISLAND_VIEW.position);
+  camera.lookAt(...ISLAND_VIEW.target);
+  // One island, moved into the scene of the Ocean being drawn (an Object3D has one parent).
+  const island = new Island();
+  const subjects = options.variants.map(({ label, scene: withScene, seabed }) => {
+    const source = withScene ? 'scene' : 'sky';
+    // examples/island.html's sea.
+    const ocean = new Ocean(renderer, { seed: 5, windSpeed: 7, windDirection: -75, resolution: 128, sunElevation: 14, sunAzimuth: 60, path: 'gpu', reflections: source, refractions: source });
+    const wanted = simulationAtQuality(ocean.parameters, step);
+    try {
+      ocean.setParameters(wanted);
+    } catch (error) {
+      if (!(error instanceof ParameterError)) throw error;
+      ocean.setParameters({ patchSizes: wanted.patchSizes }); // as applyQuality.ts falls back
+    }
+    ocean.surface.refraction.scale = step.refractionScale;
+    ocean.surface.reflectionScale = step.reflectionScale;
+    if (seabed) ocean.setSeabed(island.seabed);
+    const light = new SunLight(ocean);
+    light.update();
+    const scene = new Scene();
+    scene.add(ocean, light);
+    return { label, scene, ocean, samples: [] as number[], updateSamples: [] as number[], calls: 0 };
+  });
+  const pixel = new Uint8Array(4);
+  const sync = () => gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+  try {
+    let t = 3;
+    for (let round = 0; round < options.warmup + options.rounds; round++) {
+      t += 1 / 30;
+      for (const subject of subjects) {
+        subject.scene.add(island);
+        sync();
+        const start = performance.now();
+        subject.ocean.update(t, camera);
+        const updated = performance.now();
+        island.update(subject.ocean);
+        fitFarPlane(camera, subject.ocean);
+        renderer.render(subject.scene, camera);
+        sync();
+        if (round >= options.warmup) {
+          subject.samples.push(performance.now() - start);
+          subject.updateSamples.push(updated - start);
+        }
+        subject.calls = renderer.info.render.calls;
+        await new Promise((resolve) => setTimeout(resolve, 0));
+      }
+    }
+    return subjects.map(({ label, ocean, samples, updateSamples, calls }) => ({
+      label,
+      samples,
+      updateSamples,
+      resolution: ocean.parameters.resolution,
+      cascades: ocean.parameters.patchSizes.length,
+      pixelRatio: renderer.getPixelRatio(),
+      calls,
+    }));
+  } finally {
+    subjects.forEach(({ ocean }) => ocean.dispose());
+    island.removeFromParent();
+    island.dispose();
+    renderer.dispose();
+    renderer.domElement.remove();
+  }
+}
