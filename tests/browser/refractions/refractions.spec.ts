@@ -154,3 +154,37 @@ test('where a box pierces calm water, a line of foam forms within 0.3 m of it, a
   expect(farther[0]).toBeLessThan(0.2);
   expect(farther[0]).toBeLessThan(0.5 * farther[2]);
 });
+
+/** Pictures compared pixel for pixel: 480×270, a 6 m/s sea under the generated sky, tone-mapped. */
+const OPEN_SEA: SetupOptions = {
+  ocean: { windSpeed: 6, resolution: 32, seed: 3, localWaves: false },
+  output: 'display',
+  content: 'none',
+  width: 480,
+  height: 270,
+  camera: { position: [0, 4, 0], lookAt: [0, 0, -20], fov: 50 },
+};
+
+test('over a scene of nothing but seas no capture is drawn, and the picture is the one drawn over empty captures, pixel for pixel', async () => {
+  await page.evaluate((options) => window.refractionHarness.setup(options), OPEN_SEA);
+  const skipped = await page.evaluate(() => window.refractionHarness.picture(2));
+  // An object neither the camera nor the captures draw: both captures are drawn, and are empty.
+  await page.evaluate(() => window.refractionHarness.withUnseenObject(true));
+  const empty = await page.evaluate(() => window.refractionHarness.picture(2));
+  await page.evaluate(() => window.refractionHarness.withUnseenObject(false));
+  expect(skipped.captured).toBe(false);
+  expect(empty.captured).toBe(true);
+  expect(Buffer.from(skipped.pixels, 'base64').equals(Buffer.from(empty.pixels, 'base64'))).toBe(true);
+});
+
+test("two Oceans in one scene: one sea's capture hides the other sea, as its own (the same picture with the second sea as without)", async () => {
+  await page.evaluate((options) => window.refractionHarness.setup(options), { ...OPEN_SEA, content: 'box', camera: { position: [0, 2, 0], lookAt: [0, 0, -6], fov: 50 } } satisfies SetupOptions);
+  const alone = await page.evaluate(() => window.refractionHarness.withSecondSea(false, 2));
+  const withSecond = await page.evaluate(() => window.refractionHarness.withSecondSea(true, 2));
+  expect(alone.captured).toBe(true);
+  expect(withSecond.captured).toBe(true);
+  const [a, b] = [alone, withSecond].map((p) => Buffer.from(p.pixels, 'base64'));
+  let differing = 0;
+  for (let i = 0; i < a.length; i += 4) if (a[i] !== b[i] || a[i + 1] !== b[i + 1] || a[i + 2] !== b[i + 2]) differing++;
+  expect(differing).toBe(0);
+});
