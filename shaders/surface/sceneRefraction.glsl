@@ -71,10 +71,13 @@ vec3 sceneThroughWater(vec3 surfaceView, vec3 refracted, vec2 pixel, vec3 skyThr
     // (a bed), where the undistorted pixel's longer path would show a seam.
     vec2 next = clamp(screenPosition(surfaceView + refracted * length(point - surfaceView)), vec2(0.0), vec2(1.0));
     vec3 found = capturedViewPoint(next);
-    // An object above the water drawn there (in front of what the ray meets under it): the
-    // undistorted pixel instead. A point under the water nearer the eye than the surface is what
-    // a ray bent towards the vertical meets.
-    if (heightAboveEye(found) > waterHeight) {
+    // What is drawn there may hide what the ray meets: an object above the water (in front of
+    // what lies under it), or one on the far side of the surface point's depth from where the ray
+    // goes (its view depth only grows, or only shrinks, along P + s·t, s > 0: nothing the ray meets
+    // lies on the other side; the near face of an object under the water, seen from the water
+    // beyond its top edge, would otherwise show its colour there as a halo). The undistorted
+    // pixel instead: the scene straight behind the surface point.
+    if (heightAboveEye(found) > waterHeight || (found.z - surfaceView.z) * refracted.z < 0.0) {
       uv = straightUv;
       point = behind;
       break;

@@ -37,9 +37,10 @@ export interface SetupOptions {
   output: 'linear' | 'display';
   /**
    * 'plate': a white plate (MeshBasicMaterial); 'box': a dark grey 2 m cube half under the water
-   * at (0, 0, −6); 'showcase': a lit reef, a box through the surface; 'none': the sea alone.
+   * at (0, 0, −6); 'sunk': a red 2 m cube under the water, its top 0.5 m down, at (0, −1.5, −6);
+   * 'showcase': a lit reef, a box through the surface; 'none': the sea alone.
    */
-  content: 'plate' | 'box' | 'showcase' | 'none';
+  content: 'plate' | 'box' | 'sunk' | 'showcase' | 'none';
   width: number;
   height: number;
   camera: { position: Vec3; lookAt: Vec3; fov: number };
@@ -53,6 +54,8 @@ const plate = new Mesh(new PlaneGeometry(60, 60), new MeshBasicMaterial({ color:
 plate.rotation.x = -Math.PI / 2;
 const box = new Mesh(new BoxGeometry(2, 2, 2), new MeshBasicMaterial({ color: new Color(0.1, 0.1, 0.1), toneMapped: false }));
 box.position.set(0, 0, -6);
+const sunk = new Mesh(new BoxGeometry(2, 2, 2), new MeshBasicMaterial({ color: new Color(1, 0, 0), toneMapped: false }));
+sunk.position.set(0, -1.5, -6);
 
 /** A one-colour image as a data URL (the sky's faces). */
 function greyImage(level: number): string {
@@ -111,6 +114,7 @@ async function setup(options: SetupOptions): Promise<void> {
   }
   if (options.content === 'plate') scene.add(plate);
   else if (options.content === 'box') scene.add(box);
+  else if (options.content === 'sunk') scene.add(sunk);
   else if (options.content === 'showcase') showcase();
   camera.fov = options.camera.fov;
   camera.aspect = options.width / options.height;
