@@ -257,3 +257,70 @@ test('a red box under calm water shows only where the refracted rays meet it: no
   expect(missing.length).toBeLessThan(0.15 * onBox.length);
   expect(halo.filter((y) => y > onBox[onBox.length - 1][1])).toEqual([]);
 });
+
+test("from under calm water a red box above it is seen in Snell's window, where the refracted rays meet it, and nothing of it outside the window", async ({ browserName: _ }, info) => {
+  const [W, H, FOV] = [480, 270, 70];
+  const eye: Vec3 = [0, -2, 0];
+  const target: Vec3 = [2, 0, 0];
+  await page.evaluate(
+    (options) => window.refractionHarness.setup(options),
+    { ...PLATE_SETUP, content: 'raised', width: W, height: H, camera: { position: eye, lookAt: target, fov: FOV } } satisfies SetupOptions,
+  );
+  const { pixels } = await page.evaluate(() => window.refractionHarness.picture(1));
+  save(info, 'snell-window', pixels, W, H);
+  const data = Buffer.from(pixels, 'base64');
+  // The camera's frame (three's lookAt with up = +y) and each pixel's ray through its centre.
+  const sub = (a: Vec3, b: Vec3): Vec3 => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+  const cross = (a: Vec3, b: Vec3): Vec3 => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+  const unit = (a: Vec3): Vec3 => ((l) => [a[0] / l, a[1] / l, a[2] / l] as Vec3)(Math.hypot(...a));
+  const back = unit(sub(eye, target));
+  const right = unit(cross([0, 1, 0], back));
+  const up = cross(back, right);
+  const tanHalf = Math.tan((FOV / 2) * (Math.PI / 180));
+  const rayOf = (x: number, y: number): Vec3 => {
+    const u = (((x + 0.5) / W) * 2 - 1) * tanHalf * (W / H);
+    const v = (((y + 0.5) / H) * 2 - 1) * tanHalf;
+    return unit([0, 1, 2].map((a) => -back[a] + u * right[a] + v * up[a]) as Vec3);
+  };
+  // Water to air at the level surface: Snell's law n_w·sin θi = n_a·sin θt in vector form (GLSL
+  // refract(d, N, η) with N = −y facing the eye, η = n_w/n_a); none beyond the critical angle
+  // asin(n_a/n_w) = 48.6°, where k = 1 − η²(1 − cos² θi) < 0 (total internal reflection). With
+  // N = −y: t = η·d − (η·(N·d) + √k)·N = (η·dx, √k, η·dz).
+  const intoAir = (d: Vec3): { from: Vec3; along: Vec3 } | null => {
+    if (d[1] <= 0) return null;
+    const s = -eye[1] / d[1];
+    const eta = N_WATER;
+    const k = 1 - eta * eta * (1 - d[1] * d[1]);
+    if (k < 0) return null;
+    return { from: [eye[0] + s * d[0], 0, eye[2] + s * d[2]], along: [eta * d[0], Math.sqrt(k), eta * d[2]] };
+  };
+  const predicted: [number, number][] = [];
+  const red: [number, number][] = [];
+  const outsideWindow: [number, number][] = [];
+  for (let y = 0; y < H; y++) {
+    for (let x = 0; x < W; x++) {
+      const d = rayOf(x, y);
+      const ray = intoAir(d);
+      // The box: 1 m, centred at (3, 1.5, 0) (refractions.ts).
+      if (ray !== null && rayMeetsBox(ray.from, ray.along, [2.5, 1, -0.5], [3.5, 2, 0.5])) predicted.push([x, y]);
+      const i = 4 * (y * W + x);
+      const [r, g, b] = [data[i] / 255, data[i + 1] / 255, data[i + 2] / 255];
+      if (r > 0.1 && r > 2 * g && r > 2 * b) {
+        red.push([x, y]);
+        if (ray === null) outsideWindow.push([x, y]);
+      }
+    }
+  }
+  const bounds = (points: [number, number][]) => ({
+    left: Math.min(...points.map((p) => p[0])),
+    right: Math.max(...points.map((p) => p[0])),
+    bottom: Math.min(...points.map((p) => p[1])),
+    top: Math.max(...points.map((p) => p[1])),
+  });
+  console.log(`Snell's window: predicted ${predicted.length} px ${JSON.stringify(bounds(predicted))}, red ${red.length} px ${red.length ? JSON.stringify(bounds(red)) : ''}, red outside the window ${outsideWindow.length}`);
+  expect(predicted.length).toBeGreaterThan(100);
+  expect(red.length).toBeGreaterThan(0.8 * predicted.length);
+  const [p, m] = [bounds(predicted), bounds(red)];
+  for (const side of ['left', 'right', 'bottom', 'top'] as const) expect(Math.abs(p[side] - m[side])).toBeLessThanOrEqual(3);
+  expect(outsideWindow).toEqual([]);
+});

@@ -38,9 +38,10 @@ export interface SetupOptions {
   /**
    * 'plate': a white plate (MeshBasicMaterial); 'box': a dark grey 2 m cube half under the water
    * at (0, 0, −6); 'sunk': a red 2 m cube under the water, its top 0.5 m down, at (0, −1.5, −6);
-   * 'showcase': a lit reef, a box through the surface; 'none': the sea alone.
+   * 'raised': a red 1 m cube above the water, centred at (3, 1.5, 0); 'showcase': a lit reef, a
+   * box through the surface; 'none': the sea alone.
    */
-  content: 'plate' | 'box' | 'sunk' | 'showcase' | 'none';
+  content: 'plate' | 'box' | 'sunk' | 'raised' | 'showcase' | 'none';
   width: number;
   height: number;
   camera: { position: Vec3; lookAt: Vec3; fov: number };
@@ -56,6 +57,8 @@ const box = new Mesh(new BoxGeometry(2, 2, 2), new MeshBasicMaterial({ color: ne
 box.position.set(0, 0, -6);
 const sunk = new Mesh(new BoxGeometry(2, 2, 2), new MeshBasicMaterial({ color: new Color(1, 0, 0), toneMapped: false }));
 sunk.position.set(0, -1.5, -6);
+const raised = new Mesh(new BoxGeometry(1, 1, 1), new MeshBasicMaterial({ color: new Color(1, 0, 0), toneMapped: false }));
+raised.position.set(3, 1.5, 0);
 
 /** A one-colour image as a data URL (the sky's faces). */
 function greyImage(level: number): string {
@@ -115,6 +118,7 @@ async function setup(options: SetupOptions): Promise<void> {
   if (options.content === 'plate') scene.add(plate);
   else if (options.content === 'box') scene.add(box);
   else if (options.content === 'sunk') scene.add(sunk);
+  else if (options.content === 'raised') scene.add(raised);
   else if (options.content === 'showcase') showcase();
   camera.fov = options.camera.fov;
   camera.aspect = options.width / options.height;
