@@ -16,7 +16,7 @@ vec3 lightFromAbove(vec3 fromEye, vec3 up) {
   vec3 sky = environmentRadiance(up);
 #if SCENE_REFRACTIONS == 1
   vec4 scene = sceneAlongRay(mat3(viewMatrix) * fromEye, mat3(viewMatrix) * up);  // the eye is the view space's origin
-  return mix(sky, scene.rgb, scene.a);
+  return scene.rgb + (1.0 - scene.a) * sky;  // premultiplied
 #else
   return sky;
 #endif

@@ -39,6 +39,12 @@ vec3 capturedViewPoint(vec2 uv) {
   return point.xyz / point.w;
 }
 
+// Whether the capture drew nothing at uv (its depth is still the cleared far value).
+bool capturedNothing(vec2 uv) {
+  float depth = texture(sceneDepth, uv).r;
+  return sceneDepthMode == SCENE_DEPTH_REVERSED ? depth <= 0.0 : depth >= 1.0;
+}
+
 // Where a view-space point is drawn on the screen (0..1).
 vec2 screenPosition(vec3 viewPoint) {
   vec4 clip = sceneProjection * vec4(viewPoint, 1.0);
@@ -88,14 +94,19 @@ vec3 sceneThroughWater(vec3 surfaceView, vec3 refracted, vec2 pixel, vec3 skyThr
     point = found;
   }
   vec4 scene = texture(sceneColour, uv);
-  // Something drawn above the water behind the surface (a mast beyond it) is not under it.
-  float coverage = heightAboveEye(point) < waterHeight ? scene.a : 0.0;
+  // Something drawn above the water behind the surface (a mast beyond it) is not under it, and
+  // where the depth (read without filtering) shows nothing drawn, the colour's alpha (filtered
+  // across an object's outline) is not an object there: taken, the deep water's colour of the
+  // far point drew dark lines along the outlines of objects under the water.
+  float coverage = heightAboveEye(point) < waterHeight && !capturedNothing(uv) ? scene.a : 0.0;
   if (coverage == 0.0) return skyThroughWater;
-  return mix(skyThroughWater, alongWaterPath(scene.rgb, length(point - surfaceView), absorption, scatterColour), coverage);
+  // The capture's colour is premultiplied by its coverage (drawn over transparent black, and
+  // filtered linearly at an object's outline): the object's own radiance is rgb/a.
+  return mix(skyThroughWater, alongWaterPath(scene.rgb / coverage, length(point - surfaceView), absorption, scatterColour), coverage);
 }
 
 // The scene's radiance along the ray from the view-space point `origin` in the unit direction `ray`,
-// with its coverage in alpha (0: the ray leaves the picture or meets nothing drawn), where the
+// premultiplied by its coverage, in alpha (0: the ray leaves the picture or meets nothing drawn), where the
 // iteration above has no scene point to start from: the light seen in Snell's window from under
 // the water, whose straight-behind point is the sky. A screen-space march (McGuire & Mara 2014,
 // "Efficient GPU screen-space ray tracing", JCGT 3(4)): even steps in the picture from the origin's
