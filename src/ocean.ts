@@ -163,7 +163,7 @@ export class Ocean extends Object3D<OceanEventMap> {
       shading,
     );
     this.skyBackground = new SkyBackground(this.sky, { backgroundWater: this.surface.backgroundWater, deepWater: this.surface.material.uniforms.scatterColor });
-    this.surface.seaObjects.push(this.skyBackground);
+    this.surface.hideInCaptures(this.skyBackground);
     this.add(this.surface, this.skyBackground);
   }
 

@@ -13,10 +13,10 @@
 #include "surface/waveLayers.glsl"
 #include "surface/seaLighting.glsl"
 #include "surface/foam.glsl"
-#include "surface/fromBelow.glsl"
 #if SCENE_REFRACTIONS == 1
 #include "surface/sceneRefraction.glsl"
 #endif
+#include "surface/fromBelow.glsl"
 #ifdef SEABED
 varying float vShoaling[LAYER_COUNT];  // see ocean.vert
 varying float vBreakingSlope;
@@ -150,7 +150,7 @@ void main() {
   // from under the water they show their back.
   bool nearEye = dot(vFromEye, vFromEye) < WATERLINE_REACH * WATERLINE_REACH;
   if (eyeSide == EYE_BELOW || (eyeSide == EYE_NEAR && (nearEye ? !gl_FrontFacing : eyeInWater))) {
-    gl_FragColor = vec4(surfaceFromBelow(view, choppyNormal(derivatives, dxDz), length(vFromEye), iorAir, iorWater, absorption, deepWater), 1.0);
+    gl_FragColor = vec4(surfaceFromBelow(view, choppyNormal(derivatives, dxDz), vFromEye, iorAir, iorWater, absorption, deepWater), 1.0);
     #include <tonemapping_fragment>
     #include <colorspace_fragment>
     return;

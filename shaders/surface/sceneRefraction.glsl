@@ -23,6 +23,8 @@ uniform float sceneLogDepthRange;  // log2(far + 1), for the logarithmic depth b
 #define SCENE_DEPTH_REVERSED 1     // window depth = z_ndc (reversed depth, clip control 0..1)
 #define SCENE_DEPTH_LOGARITHMIC 2  // window depth = log2(1 + w)/log2(far + 1) (three.js logdepthbuf)
 #define SCENE_REFRACTION_STEPS 2
+#define SCENE_MARCH_STEPS 24   // even steps across the screen along a ray (sceneAlongRay)
+#define SCENE_MARCH_REFINE 5   // halvings of the step where the ray passes behind the scene
 
 // The view-space point drawn into the capture at screen position uv (0..1).
 vec3 capturedViewPoint(vec2 uv) {
@@ -35,6 +37,12 @@ vec3 capturedViewPoint(vec2 uv) {
   }
   vec4 point = sceneProjectionInverse * vec4(uv * 2.0 - 1.0, ndcZ, 1.0);
   return point.xyz / point.w;
+}
+
+// Whether the capture drew nothing at uv (its depth is still the cleared far value).
+bool capturedNothing(vec2 uv) {
+  float depth = texture(sceneDepth, uv).r;
+  return sceneDepthMode == SCENE_DEPTH_REVERSED ? depth <= 0.0 : depth >= 1.0;
 }
 
 // Where a view-space point is drawn on the screen (0..1).
@@ -71,10 +79,13 @@ vec3 sceneThroughWater(vec3 surfaceView, vec3 refracted, vec2 pixel, vec3 skyThr
     // (a bed), where the undistorted pixel's longer path would show a seam.
     vec2 next = clamp(screenPosition(surfaceView + refracted * length(point - surfaceView)), vec2(0.0), vec2(1.0));
     vec3 found = capturedViewPoint(next);
-    // An object above the water drawn there (in front of what the ray meets under it): the
-    // undistorted pixel instead. A point under the water nearer the eye than the surface is what
-    // a ray bent towards the vertical meets.
-    if (heightAboveEye(found) > waterHeight) {
+    // What is drawn there may hide what the ray meets: an object above the water (in front of
+    // what lies under it), or one on the far side of the surface point's depth from where the ray
+    // goes (its view depth only grows, or only shrinks, along P + s·t, s > 0: nothing the ray meets
+    // lies on the other side; the near face of an object under the water, seen from the water
+    // beyond its top edge, would otherwise show its colour there as a halo). The undistorted
+    // pixel instead: the scene straight behind the surface point.
+    if (heightAboveEye(found) > waterHeight || (found.z - surfaceView.z) * refracted.z < 0.0) {
       uv = straightUv;
       point = behind;
       break;
@@ -83,8 +94,68 @@ vec3 sceneThroughWater(vec3 surfaceView, vec3 refracted, vec2 pixel, vec3 skyThr
     point = found;
   }
   vec4 scene = texture(sceneColour, uv);
-  // Something drawn above the water behind the surface (a mast beyond it) is not under it.
-  float coverage = heightAboveEye(point) < waterHeight ? scene.a : 0.0;
+  // Something drawn above the water behind the surface (a mast beyond it) is not under it, and
+  // where the depth (read without filtering) shows nothing drawn, the colour's alpha (filtered
+  // across an object's outline) is not an object there: taken, the deep water's colour of the
+  // far point drew dark lines along the outlines of objects under the water.
+  float coverage = heightAboveEye(point) < waterHeight && !capturedNothing(uv) ? scene.a : 0.0;
   if (coverage == 0.0) return skyThroughWater;
-  return mix(skyThroughWater, alongWaterPath(scene.rgb, length(point - surfaceView), absorption, scatterColour), coverage);
+  // The capture's colour is premultiplied by its coverage (drawn over transparent black, and
+  // filtered linearly at an object's outline): the object's own radiance is rgb/a.
+  return mix(skyThroughWater, alongWaterPath(scene.rgb / coverage, length(point - surfaceView), absorption, scatterColour), coverage);
+}
+
+// The scene's radiance along the ray from the view-space point `origin` in the unit direction `ray`,
+// premultiplied by its coverage, in alpha (0: the ray leaves the picture or meets nothing drawn), where the
+// iteration above has no scene point to start from: the light seen in Snell's window from under
+// the water, whose straight-behind point is the sky. A screen-space march (McGuire & Mara 2014,
+// "Efficient GPU screen-space ray tracing", JCGT 3(4)): even steps in the picture from the origin's
+// pixel towards the far point's, clipped to the picture, where the ray's depth is found exactly
+// by interpolating 1/depth, which is linear on the screen under a perspective projection. Where
+// the ray passes behind what the capture shows, the step is halved SCENE_MARCH_REFINE times; a
+// crossing counts where the depths then agree within 2 % (the ray meets that surface, not one that
+// passed behind it) and the point is above the water at `origin` (what the ray in the air can meet).
+vec4 sceneAlongRay(vec3 origin, vec3 ray) {
+  if (!sceneCaptured) return vec4(0.0);
+  float near = sceneProjection[3][2] / (sceneProjection[2][2] - 1.0);
+  float far = sceneProjection[3][2] / (sceneProjection[2][2] + 1.0);
+  // As far as the far plane, and no nearer the eye than its near plane.
+  float reach = 0.9 * far;
+  if (ray.z > 0.0) reach = min(reach, (-1.01 * near - origin.z) / ray.z);
+  if (reach <= 0.0) return vec4(0.0);
+  vec3 end = origin + ray * reach;
+  vec2 uvStart = screenPosition(origin);
+  vec2 uvEnd = screenPosition(end);
+  // Clip the segment to the picture: the largest fraction f at which mix(uvStart, uvEnd, f) is in it.
+  vec2 span = uvEnd - uvStart;
+  vec2 room = mix(-uvStart, 1.0 - uvStart, step(0.0, span));
+  float fitX = abs(span.x) > 1e-6 ? room.x / span.x : 1.0;
+  float fitY = abs(span.y) > 1e-6 ? room.y / span.y : 1.0;
+  float last = clamp(min(fitX, fitY), 0.0, 1.0);
+  float inverseStart = 1.0 / -origin.z;
+  float inverseEnd = 1.0 / -end.z;
+  float waterHeight = heightAboveEye(origin);
+  float before = 0.0;
+  for (int i = 1; i <= SCENE_MARCH_STEPS; i++) {
+    float f = last * float(i) / float(SCENE_MARCH_STEPS);
+    vec2 uv = mix(uvStart, uvEnd, f);
+    float rayDepth = 1.0 / mix(inverseStart, inverseEnd, f);
+    if (rayDepth < -capturedViewPoint(uv).z) {
+      before = f;
+      continue;
+    }
+    // Behind what is drawn here: halve the step towards the crossing.
+    float after = f;
+    for (int k = 0; k < SCENE_MARCH_REFINE; k++) {
+      float middle = 0.5 * (before + after);
+      if (1.0 / mix(inverseStart, inverseEnd, middle) < -capturedViewPoint(mix(uvStart, uvEnd, middle)).z) before = middle;
+      else after = middle;
+    }
+    uv = mix(uvStart, uvEnd, after);
+    vec3 found = capturedViewPoint(uv);
+    rayDepth = 1.0 / mix(inverseStart, inverseEnd, after);
+    if (abs(rayDepth + found.z) < 0.02 * rayDepth && heightAboveEye(found) >= waterHeight) return texture(sceneColour, uv);
+    before = f;
+  }
+  return vec4(0.0);
 }

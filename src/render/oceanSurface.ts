@@ -11,6 +11,7 @@ import type { Shore } from '../layers/shore';
 import type { WaveLayer } from '../layers/waveLayer';
 import { ParameterError } from '../parameters/options';
 import { cellsPerRingForViewport, createHorizonGridGeometry, farEdgeDistance, FEWEST_CELLS_PER_RING, MOST_CELLS_PER_RING, RingFrames } from './horizonGrid';
+import { addSea, removeSea } from './sceneCapture';
 import { SceneReflection, type ReflectionLayers } from './sceneReflection';
 import { BACKGROUND_WATER } from './skyBackground';
 import { SceneRefraction } from './sceneRefraction';
@@ -33,11 +34,11 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
   /** The scene as the refraction sees it (the `refractions` shading option), drawn before the sea. */
   readonly refraction = new SceneRefraction();
   /**
-   * The objects of this sea that no reflection shows (of this sea or of another): the surface,
-   * and what its owner adds (the Ocean adds its sky background).
+   * The objects of this sea that no capture shows (reflection or refraction, of this sea or of
+   * another, sceneCapture.ts): the surface, and what its owner adds with hideInCaptures.
    */
-  readonly seaObjects: Object3D[] = [this];
-  private readonly reflection = new SceneReflection(this.seaObjects);
+  private readonly seaObjects: Object3D[] = [this];
+  private readonly reflection = new SceneReflection();
 
   /**
    * @param waves the layers to draw and the choppiness, asked before every render (they change
@@ -66,6 +67,13 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
     this.cellsPerRing = 32;
     this.material.shareUniforms(this.refraction.uniforms);
     this.material.shareUniforms(this.reflection.uniforms);
+    addSea(this, this.seaObjects);
+  }
+
+  /** Hides `object` (one of this sea's, as its sky background) in every scene capture, as the surface is. */
+  hideInCaptures(object: Object3D): void {
+    this.seaObjects.push(object);
+    addSea(this, this.seaObjects);
   }
 
   /**
@@ -120,7 +128,7 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
   override onBeforeRender(renderer: WebGLRenderer, scene: Scene, camera: Camera): void {
     this.fitDrawingBuffer(renderer);
     this.placeRings(camera);
-    if (this.material.looksIntoScene) this.refraction.capture(renderer, scene, camera, this.seaObjects);
+    if (this.material.looksIntoScene) this.refraction.capture(renderer, scene, camera);
     else this.refraction.release();
     if (this.material.reflectsScene) this.reflection.render(renderer, scene, camera);
     else this.reflection.freeTarget();
@@ -198,5 +206,6 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
     this.material.dispose();
     this.refraction.dispose();
     this.reflection.dispose();
+    removeSea(this);
   }
 }

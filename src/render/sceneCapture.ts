@@ -1,28 +1,80 @@
 /**
- * Renders a scene into a render target without the sea: what the sea's own shading samples of the
- * scene around it (its reflection, sceneReflection.ts; what lies under it, sceneRefraction.ts). The sea's objects are hidden and the scene's
- * background left out, so the target's alpha is 0 wherever no object was drawn and the sea fills
- * those pixels from its sky instead. Everything the render changes on the renderer and the scene is
- * put back, so it may run inside another render (an object's onBeforeRender).
+ * Renders a scene into a render target without the seas: what a sea's own shading samples of the
+ * scene around it (its reflection, sceneReflection.ts; what lies under it and, from below, above
+ * it, sceneRefraction.ts). Every live sea's objects are hidden in every capture (one list, so
+ * that no sea is drawn in another's capture) and the scene's background is left out, so the
+ * target's alpha is 0 wherever no object was drawn and the sea fills those pixels from its sky
+ * instead. Everything the render changes on the renderer and the scene is put back, so it may run
+ * inside another render (an object's onBeforeRender).
  */
 import { Color, type Camera, type Layers, type Object3D, type Scene, type WebGLRenderer, type WebGLRenderTarget } from 'three';
 
 const savedClearColor = new Color();
+/** The seas' objects' visibility during a capture, kept between captures so that none makes an array. */
+const seaVisible: boolean[] = [];
+
+/** The objects of every live sea, by owner (OceanSurface): the arrays themselves, which their owners may grow. */
+const seas = new Map<object, readonly Object3D[]>();
+/** Every sea's objects as one list and one set, made again only when a sea is added, grows or goes (not per render). */
+let hidden: { list: readonly Object3D[]; set: ReadonlySet<Object3D> } | null = null;
+/** True while a capture renders: a sea drawn in it anyway (one never added) draws no capture of its own. */
+let capturing = false;
+
+/**
+ * Adds a sea's objects (`objects`, the array itself) to those every capture hides, or tells that
+ * the array of `owner` changed. Undo with removeSea.
+ */
+export function addSea(owner: object, objects: readonly Object3D[]): void {
+  seas.set(owner, objects);
+  hidden = null;
+}
+
+/** Takes `owner`'s objects off the list every capture hides (its sea is disposed). */
+export function removeSea(owner: object): void {
+  seas.delete(owner);
+  hidden = null;
+}
+
+/** Every live sea's objects: what every capture hides. The same object until a sea is added, changed or removed. */
+export function hiddenSeaObjects(): { list: readonly Object3D[]; set: ReadonlySet<Object3D> } {
+  if (hidden === null) {
+    const list = [...seas.values()].flat();
+    hidden = { list, set: new Set(list) };
+  }
+  return hidden;
+}
+
+/** Whether a capture is being rendered (a sea drawn in it shows its sky). */
+export function isCapturing(): boolean {
+  return capturing;
+}
+
+/**
+ * Whether `scene` holds nothing but the seas' objects (an Ocean, a scene of Oceans): a capture would
+ * be transparent everywhere and show nothing, so neither capture is drawn and the shaders take their
+ * sky path, which is what they show over a transparent capture.
+ */
+export function holdsOnlySeas(scene: Object3D): boolean {
+  return onlySea(scene, hiddenSeaObjects().set);
+}
+
+function onlySea(object: Object3D, sea: ReadonlySet<Object3D>): boolean {
+  if (sea.has(object)) return true;
+  const group = object.type === 'Object3D' || object.type === 'Scene' || object.type === 'Group';
+  if (!group || object.children.length === 0) return false;
+  // A loop, not every(): this runs twice a frame and makes no closures.
+  for (const child of object.children) if (!onlySea(child, sea)) return false;
+  return true;
+}
 
 /**
  * Renders `scene` from `camera` into `target` (cleared to transparent black, depth 1), drawing only
- * the objects whose layers meet `layers`, with every object of `sea` hidden and no background.
+ * the objects whose layers meet `layers`, with every sea's objects hidden and no background.
  * Restores the renderer's target, clear colour and alpha, autoClear, XR and shadow-map updates, the
- * scene's background, the camera's layers and the sea's visibility.
+ * scene's background, the camera's layers and the seas' visibility.
  */
-export function renderSceneWithoutSea(
-  renderer: WebGLRenderer,
-  scene: Scene,
-  camera: Camera,
-  target: WebGLRenderTarget,
-  sea: readonly Object3D[],
-  layers: Layers,
-): void {
+export function renderSceneWithoutSea(renderer: WebGLRenderer, scene: Scene, camera: Camera, target: WebGLRenderTarget, layers: Layers): void {
+  const sea = hiddenSeaObjects().list;
   const previousTarget = renderer.getRenderTarget();
   const previousFace = renderer.getActiveCubeFace();
   const previousMipmap = renderer.getActiveMipmapLevel();
@@ -33,7 +85,8 @@ export function renderSceneWithoutSea(
   const previousShadowUpdate = renderer.shadowMap.autoUpdate;
   const previousBackground = scene.background;
   const previousLayers = camera.layers.mask;
-  const seaVisible = sea.map((object) => object.visible);
+  for (let i = 0; i < sea.length; i++) seaVisible[i] = sea[i].visible;
+  capturing = true;
   try {
     for (const object of sea) object.visible = false;
     scene.background = null;
@@ -50,6 +103,7 @@ export function renderSceneWithoutSea(
     renderer.autoClear = false;
     renderer.render(scene, camera);
   } finally {
+    capturing = false;
     renderer.autoClear = previousAutoClear;
     renderer.setClearColor(savedClearColor, previousAlpha);
     renderer.setRenderTarget(previousTarget, previousFace, previousMipmap);
@@ -57,6 +111,6 @@ export function renderSceneWithoutSea(
     renderer.shadowMap.autoUpdate = previousShadowUpdate;
     scene.background = previousBackground;
     camera.layers.mask = previousLayers;
-    sea.forEach((object, i) => (object.visible = seaVisible[i]));
+    for (let i = 0; i < sea.length; i++) sea[i].visible = seaVisible[i];
   }
 }

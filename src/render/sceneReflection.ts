@@ -23,17 +23,11 @@ import {
   Vector3,
   Vector4,
   WebGLRenderTarget,
-  type Object3D,
   type Scene,
   type Texture,
   type WebGLRenderer,
 } from 'three';
-import { renderSceneWithoutSea } from './sceneCapture';
-
-/** Seas whose objects every reflection hides (so that no sea is reflected in another), by owner. */
-const seas = new Map<SceneReflection, readonly Object3D[]>();
-/** True while a reflection renders: a sea drawn in it (one not registered) does not reflect again. */
-let capturing = false;
+import { holdsOnlySeas, isCapturing, renderSceneWithoutSea } from './sceneCapture';
 
 /** Reflection in y = 0: (x, y, z) → (x, −y, z). */
 const MIRROR = new Matrix4().makeScale(1, -1, 1);
@@ -89,26 +83,24 @@ export class SceneReflection {
   /** The reflection's size as a fraction of the drawing buffer's; 0 shows the sky instead (no render target is kept). */
   scale = 0.5;
 
-  /** @param sea the objects of this sea, hidden in every reflection (of this sea and of any other). */
-  constructor(sea: readonly Object3D[]) {
+  constructor() {
     this.layers.enableAll();
     this.camera.matrixWorldAutoUpdate = false;
-    seas.set(this, sea);
   }
 
   /**
    * Renders the reflection of `scene` seen from `camera` (before the sea is drawn with it). Where it
    * cannot (scale 0, inside another reflection, a camera that is not a perspective one, or a depth
    * buffer that is logarithmic or reversed, whose depths the shader does not read back) the sea
-   * shows its sky; and where there is nothing but seas to reflect, nothing is rendered.
+   * shows its sky; and where there is nothing but seas to reflect (sceneCapture.ts, holdsOnlySeas),
+   * nothing is rendered. Every sea's objects are hidden in it (sceneCapture.ts).
    */
   render(renderer: WebGLRenderer, scene: Scene, camera: Camera): void {
-    if (capturing) {
+    if (isCapturing()) {
       this.uniforms.sceneReflectionShown.value = false;
       return;
     }
-    const hidden = new Set([...seas.values()].flat());
-    const shown = this.scale > 0 && isPerspective(camera) && plainDepth(renderer) && !onlySea(scene, hidden);
+    const shown = this.scale > 0 && isPerspective(camera) && plainDepth(renderer) && !holdsOnlySeas(scene);
     this.uniforms.sceneReflectionShown.value = shown;
     if (!shown) {
       if (this.scale <= 0) this.freeTarget();
@@ -118,12 +110,7 @@ export class SceneReflection {
     this.placeCamera(camera);
     const mirror = this.camera;
     mirror.layers.mask = this.layers.mask & camera.layers.mask;
-    capturing = true;
-    try {
-      renderSceneWithoutSea(renderer, scene, mirror, target, [...hidden], mirror.layers);
-    } finally {
-      capturing = false;
-    }
+    renderSceneWithoutSea(renderer, scene, mirror, target, mirror.layers);
     // The shader works from the eye (vFromEye): the matrices take the eye's position in double
     // precision here, not in float32 there.
     camera.getWorldPosition(this.eye);
@@ -144,10 +131,9 @@ export class SceneReflection {
     this.uniforms.sceneReflectionDepth.value = null;
   }
 
-  /** Frees the render target and forgets this sea. */
+  /** Frees the render target. */
   dispose(): void {
     this.freeTarget();
-    seas.delete(this);
   }
 
   /**
@@ -192,12 +178,6 @@ export class SceneReflection {
     }
     return this.target;
   }
-}
-
-/** Whether `object` holds nothing but the seas' objects (an Ocean, a scene of Oceans): nothing to reflect. */
-function onlySea(object: Object3D, sea: ReadonlySet<Object3D>): boolean {
-  if (sea.has(object)) return true;
-  return object.children.length > 0 && (object.type === 'Object3D' || object.type === 'Scene' || object.type === 'Group') && object.children.every((child) => onlySea(child, sea));
 }
 
 /** A perspective projection (three's isPerspectiveMatrix: its w is −z). */

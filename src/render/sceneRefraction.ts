@@ -18,19 +18,16 @@ import {
   Vector4,
   WebGLRenderTarget,
   type Camera,
-  type Object3D,
   type Scene,
   type Texture,
   type WebGLRenderer,
 } from 'three';
 import { ParameterError } from '../parameters/options';
-import { renderSceneWithoutSea } from './sceneCapture';
+import { holdsOnlySeas, isCapturing, renderSceneWithoutSea } from './sceneCapture';
 
 /** How the depth buffer stores depth (SCENE_DEPTH_* in sceneRefraction.glsl). */
 const DEPTH_MODE = { standard: 0, reversed: 1, logarithmic: 2 } as const;
 
-/** Whether a capture is being drawn: the seas in it (another Ocean's) then show the sky, not a capture of their own. */
-let capturing = false;
 /** The layers of the capture being drawn (one at a time). */
 const captureLayers = new Layers();
 
@@ -70,29 +67,26 @@ export class SceneRefraction {
   }
 
   /**
-   * Draws `scene` without the objects of `sea` from `camera` into the target, sized to the
-   * renderer's current viewport, and points the uniforms at it; with scale 0, or inside another
-   * capture, only tells the shader there is none (and frees the target when the scale is 0).
+   * Draws `scene` without any sea (sceneCapture.ts) from `camera` into the target, sized to the
+   * renderer's current viewport, and points the uniforms at it; with scale 0, inside another
+   * capture, or where the scene holds nothing but seas (the capture would be transparent, and the
+   * shader shows over it exactly what it shows without one), only tells the shader there is none
+   * (and frees the target when the scale is 0; otherwise keeps it for the next capture).
    */
-  capture(renderer: WebGLRenderer, scene: Scene, camera: Camera, sea: readonly Object3D[]): void {
+  capture(renderer: WebGLRenderer, scene: Scene, camera: Camera): void {
     const u = this.uniforms;
     u.sceneCaptured.value = false;
     if (this.resolutionScale === 0) {
       this.release();
       return;
     }
-    if (capturing) return;
+    if (isCapturing() || holdsOnlySeas(scene)) return;
     renderer.getCurrentViewport(this.viewport);
     const width = Math.max(1, Math.round(this.viewport.z * this.resolutionScale));
     const height = Math.max(1, Math.round(this.viewport.w * this.resolutionScale));
     const target = this.targetOfSize(width, height);
-    capturing = true;
-    try {
-      captureLayers.mask = (this.layers ?? camera.layers).mask;
-      renderSceneWithoutSea(renderer, scene, camera, target, sea, captureLayers);
-    } finally {
-      capturing = false;
-    }
+    captureLayers.mask = (this.layers ?? camera.layers).mask;
+    renderSceneWithoutSea(renderer, scene, camera, target, captureLayers);
     u.sceneColour.value = target.texture;
     u.sceneDepth.value = target.depthTexture;
     u.sceneCaptured.value = true;

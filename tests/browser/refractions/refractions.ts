@@ -37,9 +37,11 @@ export interface SetupOptions {
   output: 'linear' | 'display';
   /**
    * 'plate': a white plate (MeshBasicMaterial); 'box': a dark grey 2 m cube half under the water
-   * at (0, 0, −6); 'showcase': a lit reef, a box through the surface.
+   * at (0, 0, −6); 'sunk': a red 2 m cube under the water, its top 0.5 m down, at (0, −1.5, −6);
+   * 'raised': a red 1 m cube above the water, centred at (3, 1.5, 0); 'showcase': a lit reef, a
+   * box through the surface; 'none': the sea alone.
    */
-  content: 'plate' | 'box' | 'showcase';
+  content: 'plate' | 'box' | 'sunk' | 'raised' | 'showcase' | 'none';
   width: number;
   height: number;
   camera: { position: Vec3; lookAt: Vec3; fov: number };
@@ -53,6 +55,10 @@ const plate = new Mesh(new PlaneGeometry(60, 60), new MeshBasicMaterial({ color:
 plate.rotation.x = -Math.PI / 2;
 const box = new Mesh(new BoxGeometry(2, 2, 2), new MeshBasicMaterial({ color: new Color(0.1, 0.1, 0.1), toneMapped: false }));
 box.position.set(0, 0, -6);
+const sunk = new Mesh(new BoxGeometry(2, 2, 2), new MeshBasicMaterial({ color: new Color(1, 0, 0), toneMapped: false }));
+sunk.position.set(0, -1.5, -6);
+const raised = new Mesh(new BoxGeometry(1, 1, 1), new MeshBasicMaterial({ color: new Color(1, 0, 0), toneMapped: false }));
+raised.position.set(3, 1.5, 0);
 
 /** A one-colour image as a data URL (the sky's faces). */
 function greyImage(level: number): string {
@@ -111,7 +117,9 @@ async function setup(options: SetupOptions): Promise<void> {
   }
   if (options.content === 'plate') scene.add(plate);
   else if (options.content === 'box') scene.add(box);
-  else showcase();
+  else if (options.content === 'sunk') scene.add(sunk);
+  else if (options.content === 'raised') scene.add(raised);
+  else if (options.content === 'showcase') showcase();
   camera.fov = options.camera.fov;
   camera.aspect = options.width / options.height;
   camera.near = 0.1;
@@ -178,7 +186,56 @@ function pixelOf(point: Vec3): [number, number] {
   return [Math.floor(((ndc.x + 1) / 2) * width), Math.floor(((ndc.y + 1) / 2) * height)];
 }
 
-const harness = { setup, draw, setShading, construct, pixelOf };
+/** The whole canvas (RGBA rows from the bottom, base64) after a frame at time t, and whether the refraction drew its capture. */
+function picture(t: number): { pixels: string; captured: boolean } {
+  ocean!.update(t, camera);
+  renderer!.render(scene, camera);
+  const gl = renderer!.getContext();
+  const { width, height } = renderer!.domElement;
+  const data = new Uint8Array(4 * width * height);
+  gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, data);
+  let text = '';
+  for (let i = 0; i < data.length; i += 0x8000) text += String.fromCharCode(...data.subarray(i, i + 0x8000));
+  return { pixels: btoa(text), captured: ocean!.surface.refraction.uniforms.sceneCaptured.value };
+}
+
+/** An object on layer 1, which neither the camera nor the captures draw: a scene that holds more than seas, but whose captures are empty. */
+const unseen = new Mesh(new BoxGeometry(1, 1, 1), new MeshBasicMaterial({ color: 0xff0000 }));
+unseen.layers.set(1);
+unseen.position.set(0, 1, -5);
+
+/** Puts the unseen object in the scene, or takes it out. */
+function withUnseenObject(present: boolean): void {
+  if (present) scene.add(unseen);
+  else scene.remove(unseen);
+}
+
+/**
+ * The picture at time t with a second Ocean in the scene (or without, `second` false), the second
+ * drawn only on layer 1, which the camera leaves out and the first sea's refraction capture takes
+ * (its layers 0 and 1): whatever of the second sea a capture shows changes the first sea's picture.
+ */
+function withSecondSea(second: boolean, t: number): { pixels: string; captured: boolean } {
+  const own = ocean!;
+  own.surface.refraction.layers = { mask: 0b11 };
+  const other = second ? new Ocean(renderer!, { windSpeed: 6, resolution: 32, seed: 9, localWaves: false, worker: false }) : null;
+  try {
+    if (other !== null) {
+      other.traverse((object) => object.layers.set(1));
+      scene.add(other);
+      other.update(t, camera);
+    }
+    return picture(t);
+  } finally {
+    own.surface.refraction.layers = null;
+    if (other !== null) {
+      scene.remove(other);
+      other.dispose();
+    }
+  }
+}
+
+const harness = { setup, draw, setShading, construct, pixelOf, picture, withUnseenObject, withSecondSea };
 declare global {
   interface Window {
     refractionHarness: typeof harness;
