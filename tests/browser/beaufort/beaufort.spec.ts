@@ -2,7 +2,7 @@ import { expect, test, type Page } from '@playwright/test';
 import { mkdirSync, writeFileSync } from 'node:fs';
 import type { BeaufortPicture, BeaufortView } from './beaufort';
 import { beaufortWindSpeed } from '../../../src/spectrum/presets';
-import { beaufortAppearance } from '../../../src/render/beaufortAppearance';
+import { beaufortAppearance, sprayVisibility } from '../../../src/render/beaufortAppearance';
 
 /**
  * The WMO Beaufort scale's descriptions of the sea (WMO-No. 306; the Met Office's "Beaufort wind force
@@ -62,12 +62,38 @@ async function picture(page: Page, view: BeaufortView, name: string): Promise<Be
   return shot;
 }
 
-test('foam streaks along the wind from force 7, isotropic foam at force 5, a white sea at force 10', async ({ page }) => {
-  const errors: string[] = [];
+/** Mean luma of rows [from, to) over columns [x0, x1), and the mean over the rows of each row's standard deviation. */
+function rowsLuma({ pixels }: BeaufortPicture, width: number, from: number, to: number, x0 = 0, x1 = width): { mean: number; deviation: number } {
+  let [total, deviations] = [0, 0];
+  for (let y = from; y < to; y++) {
+    let [sum, squares] = [0, 0];
+    for (let x = x0; x < x1; x++) {
+      const l = luma(pixels, 4 * (y * width + x));
+      [sum, squares] = [sum + l, squares + l * l];
+    }
+    const mean = sum / (x1 - x0);
+    total += mean;
+    deviations += Math.sqrt(Math.max(0, squares / (x1 - x0) - mean * mean));
+  }
+  return { mean: total / (to - from), deviation: deviations / (to - from) };
+}
+
+// One page for the file: each test renders its own seas on it.
+test.describe.configure({ mode: 'serial' });
+let page: Page;
+const errors: string[] = [];
+test.beforeAll(async ({ browser }) => {
+  page = await browser.newPage();
   page.on('pageerror', (error) => errors.push(error.message));
   await page.goto('/tests/browser/beaufort/beaufort.html');
   await expect(page).toHaveTitle('ready');
+});
+test.afterAll(async () => {
+  expect(errors).toEqual([]);
+  await page.close();
+});
 
+test('foam streaks along the wind from force 7, isotropic foam at force 5, a white sea at force 10', async () => {
   const measure = async (force: number, foamAmount: number) => {
     const shot = await picture(page, { ...DOWN, force, foamAmount }, `force-${force}-down`);
     const mask = foamMask(shot, SIZE, SIZE);
@@ -86,5 +112,48 @@ test('foam streaks along the wind from force 7, isotropic foam at force 5, a whi
   expect(Math.abs(five.along / five.across - 1)).toBeLessThan(0.35);
   expect(eight.along / eight.across).toBeGreaterThan(3);
   expect(ten.white).toBeGreaterThan(0.5);
-  expect(errors).toEqual([]);
+});
+
+// 25 m up, looking at the horizon, 30° high: a row is 0.11°; the horizon's dip is 0.16°.
+const [WIDE, HIGH] = [480, 270];
+const HORIZON: Omit<BeaufortView, 'force'> = { width: WIDE, height: HIGH, eyeHeight: 25, pitch: 0, yaw: 200, fov: 30, time: 20 };
+
+test('the overcast sky has no bands: its rows brighten smoothly towards the zenith', async () => {
+  // The sky up to 15° above the horizon under the overcast of force 8, in the middle 32 columns,
+  // where its contours (circles about the zenith) are level.
+  const shot = await picture(page, { ...HORIZON, force: 8 }, 'force-8-horizon');
+  const x0 = WIDE / 2 - 16;
+  const top = HIGH / 2 - 10;
+  const rows = Array.from({ length: top }, (_, y) => rowsLuma(shot, WIDE, y, y + 1, x0, x0 + 32).mean);
+  // The overcast sky is smooth (Moon & Spencer: L ∝ 1 + 2 cos θ): each row within a fraction of a
+  // level of the mean of its 9 neighbours. Without dither 8-bit levels step by 1 every few rows, and
+  // the RGBM cube's filtering drew lines a level brighter along the contours (rgbm.glsl).
+  let [worst, worstRow] = [0, 0];
+  for (let y = 4; y < top - 4; y++) {
+    const departure = Math.abs(rows[y] - rows.slice(y - 4, y + 5).reduce((sum, r) => sum + r, 0) / 9);
+    if (departure > worst) [worst, worstRow] = [departure, y];
+  }
+  const largestStep = Math.max(...rows.slice(1).map((r, y) => Math.abs(r - rows[y])));
+  console.log(`overcast sky, middle 32 columns: luma ${rows[0].toFixed(1)} (15° up) to ${rows[top - 1].toFixed(1)} (1° up); largest step between rows ${largestStep.toFixed(2)} levels; largest departure from the 9-row mean ${worst.toFixed(2)} levels (row ${worstRow})`);
+  expect(largestStep).toBeLessThan(0.8);
+  expect(worst).toBeLessThan(0.35);
+});
+
+test('spray from force 9: at force 11 the sea 1.5–2.8 km away fades into the horizon sky (visibility 1.5 km)', async () => {
+  // Rows 6 to 10 below the middle: 0.51° to 0.95° below the horizon, the sea 2.8 to 1.5 km away.
+  const band = async (force: number) => {
+    const shot = await picture(page, { ...HORIZON, force }, `force-${force}-horizon`);
+    const sea = rowsLuma(shot, WIDE, HIGH / 2 + 6, HIGH / 2 + 10);
+    const sky = rowsLuma(shot, WIDE, HIGH / 2 - 10, HIGH / 2 - 6).mean;
+    const visibility = sprayVisibility(beaufortWindSpeed(force));
+    console.log(`force ${force}: the sea 1.5–2.8 km away, luma ${sea.mean.toFixed(1)} ± ${sea.deviation.toFixed(2)}; the sky 0.6°–1.1° up ${sky.toFixed(1)} (visibility ${Number.isFinite(visibility) ? `${(visibility / 1000).toFixed(2)} km` : 'unlimited'})`);
+    return { ...sea, sky };
+  };
+  const clear = await band(8);
+  const spray = await band(11);
+  // Koschmieder / MOR: beyond 1.5 km in a 1.5 km visibility the sea keeps at most e^(−2.996) = 5 %
+  // of its contrast: its waves and foam fade into the spray's haze, which has the horizon sky's light.
+  expect(clear.deviation).toBeGreaterThan(2);
+  expect(spray.deviation).toBeLessThan(0.3 * clear.deviation);
+  expect(Math.abs(spray.mean - spray.sky)).toBeLessThan(3);
 });
