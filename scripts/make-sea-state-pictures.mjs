@@ -2,15 +2,15 @@
 // `npm run make-sea-states`: the sea-state pictures and table of docs/sea-states.md, and the feature
 // pictures of the README and the guide.
 //
-// For every named preset (SEA_PRESETS) and for Beaufort forces 2, 4, 6, 8, 10 and 12
-// (beaufortPreset), renders one picture with the shot CLI (scripts/shot.mjs) into
+// For every named preset (SEA_PRESETS) and for every Beaufort force 0–12 (beaufortPreset), renders
+// one picture with the shot CLI (scripts/shot.mjs) into
 // docs/sea-states/<name>.png, and computes Hs and Tp with seaState. The presets, seaState and the
 // parameter names come from the TypeScript sources themselves (loaded with Vite's ssrLoadModule,
 // as the bench does, bench/lib/servers.mjs), so no formula or default is copied here. It writes the Markdown table to
 // docs/sea-states/table.md (links relative to that folder) and prints the same Markdown with links
 // relative to docs/, ready for docs/sea-states.md.
 //
-// Every picture: 960x540, seed 7, t = 12.5 s, the app's default lens and sun. The camera is the
+// Every picture: 320x180 (small, so that the eighteen stay light in the repository), seed 7, t = 12.5 s, the app's default lens and sun. The camera is the
 // app's default one (12 m up, cam=0,12,0,-53.13,-6.84) except for storm-type seas (Hs > 6 m), which
 // all get STORM_CAM: with Hs > 6 m the highest crests (about 1.1·Hs in a few hundred waves) reach
 // eye level at 12 m and the nearest crest hides the sea behind it; at force 12 (Hs ≈ 16 m) the
@@ -20,14 +20,15 @@
 // The app is built once (if it is older than its sources) and every shot runs with --no-build;
 // SHOT_CONCURRENCY shots run at a time (SwiftShader is slow, about 20 s a picture). Each picture
 // is checked: a black, blank or flat-coloured sea fails the run (exit code 1). The shot's truecolour
-// PNG (about 0.9 MB) is then stored as a 256-colour one (median cut, a few Lloyd steps, no
-// dithering: about 0.17 MB), so that the eleven pictures stay near 2 MB.
+// PNG is then stored as a 256-colour one (median cut, a few Lloyd steps, no dithering): about
+// 0.17 MB at 960x540, a tenth of that at 320x180.
 //
 // The feature pictures (FEATURES: whitecaps in a storm, a boat and its wake, …) are app links
 // rendered with the shot CLI's --query into docs/features/<file>, checked and stored the same way.
 // The first of them is the README's picture: what `npm start` shows first (the app with no URL
 // parameters, at t = 0), kept as the shot wrote it (truecolour), so that it is exactly that view;
-// tests/browser/shot/shot.spec.ts renders it again and compares.
+// tests/browser/shot/shot.spec.ts renders it again and compares. --features-only renders only the
+// feature pictures, --sea-states-only only the sea states and their table.
 import { spawn } from 'node:child_process';
 import { mkdirSync, readFileSync, statSync, writeFileSync } from 'node:fs';
 import { availableParallelism } from 'node:os';
@@ -52,8 +53,10 @@ const FEATURES = [
 ];
 const SHOT = join(ROOT, 'scripts', 'shot.mjs');
 
-const BEAUFORT_FORCES = [2, 4, 6, 8, 10, 12];
-const SIZE = '960x540';
+const BEAUFORT_FORCES = Array.from({ length: 13 }, (_, force) => force);
+/** The sea-state pictures' size; the feature pictures are FEATURE_SIZE. */
+const SIZE = '320x180';
+const FEATURE_SIZE = '960x540';
 const SEED = 7;
 const TIME = 12.5;
 /** The app's default camera (src/app/urlState.ts): x, y, z in m, yaw and pitch in degrees. */
@@ -104,7 +107,7 @@ function optionText(value) {
 
 /** The shot CLI's arguments for one sea state: every parameter of the preset, in kebab-case. */
 function shotArguments(state) {
-  if (state.query) return ['--query', state.query, '--size', SIZE, '--out', join(FEATURES_DIR, state.file), '--no-build'];
+  if (state.query) return ['--query', state.query, '--size', FEATURE_SIZE, '--out', join(FEATURES_DIR, state.file), '--no-build'];
   const args = [];
   for (const [key, value] of Object.entries(state.parameters)) {
     args.push(`--${key.replace(/[A-Z]/g, (c) => `-${c.toLowerCase()}`)}`, optionText(value));
@@ -288,7 +291,7 @@ function markdown(states, prefix) {
   lines.push('');
   const storms = states.filter((state) => state.cam === STORM_CAM).map((state) => state.name);
   lines.push(
-    `Pictures: 960×540, seed 7, t = 12.5 s, the app's camera (cam=${DEFAULT_CAM}); the storm-type seas ` +
+    `Pictures: ${SIZE.replace('x', '×')}, seed 7, t = 12.5 s, the app's camera (cam=${DEFAULT_CAM}); the storm-type seas ` +
       `(Hs > ${STORM_HS} m: ${storms.join(', ')}) from 25 m up, looking 10° down (cam=${STORM_CAM}).`,
   );
   lines.push('');
@@ -312,7 +315,7 @@ async function main() {
   const states = await loadSeaStates();
   for (const state of states) state.cam = state.significantWaveHeight > STORM_HS ? STORM_CAM : DEFAULT_CAM;
 
-  const only = process.argv.includes('--features-only') ? FEATURES : [...states, ...FEATURES];
+  const only = process.argv.includes('--features-only') ? FEATURES : process.argv.includes('--sea-states-only') ? states : [...states, ...FEATURES];
   log(`rendering ${only.length} pictures, ${SHOT_CONCURRENCY} at a time`);
   const failures = [];
   await eachLimited(only, SHOT_CONCURRENCY, async (state) => {

@@ -254,7 +254,9 @@ async function withShotPage({ build }, query, use) {
     page.on('console', (message) => {
       if (message.type() === 'error') pageErrors.push(message.text());
     });
-    await page.goto(`${server.url}/examples/shot.html?${query}`);
+    // Not waiting for 'load': the page builds the sea before it, which on a busy machine takes longer
+    // than goto's 30 s; the title says when it is done (below, with its own time limit).
+    await page.goto(`${server.url}/examples/shot.html?${query}`, { waitUntil: 'commit' });
     await page.waitForFunction(() => ['ready', 'help'].includes(document.title) || document.title.startsWith('error'), null, { timeout: 180_000 });
     const title = await page.title();
     if (title.startsWith('error')) {

@@ -156,6 +156,7 @@ export class Ocean extends Object3D<OceanEventMap> {
         choppiness: sim.parameters.choppiness,
         foam: sim.foam.texture,
         windSpeed: sim.parameters.windSpeed,
+        windDirection: sim.parameters.windDirection,
         surfaceBound: 6 * this.heightRms + 1,
         waterHeightAt: (x: number, z: number) => heightAt(sim.layers, sim.parameters.choppiness, this.currentTime, x, z, this.preparedShore()),
         shore: this.preparedShore(),

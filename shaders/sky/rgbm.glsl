@@ -8,16 +8,23 @@
 // (0.004–0.035) and the sky (0.05–2) both keep their gradients. Radiance above RANGE clips: only the sun disk and the glow just around
 // it, which tone mapping shows as white anyway, and the sea adds the sun's glint analytically.
 // Bilinear filtering of (rgb, a) is not exactly filtering of radiance; the error is confined to
-// texels where the multiplier jumps (the sun's edge).
+// texels where the multiplier jumps.
+//
+// The alpha holds √(M/RANGE), not M/RANGE: bilinear filtering between two texels whose multipliers
+// differ by a step ΔM is off by about f(1 − f)·L·(ΔM/M)² (f the filter's weight, L the radiance),
+// and a smooth gradient crosses a step every few texels, so the error draws lines along the
+// gradient's contours (the faint horizontal bands of the overcast sky). With M/RANGE in alpha, an
+// overcast sky of L ≈ 1 has a = 8/255 and ΔM/M = 1/8: 0.4 % of L, a level of the 8-bit picture;
+// with its square root a = 45/255 and ΔM/M ≈ 2/45: 0.05 %.
 const float SKY_RGBM_RANGE = 32.0;
 
 vec4 rgbmEncode(vec3 radiance) {
   vec3 clipped = clamp(radiance, 0.0, SKY_RGBM_RANGE);
-  float multiplier = max(max(clipped.r, clipped.g), max(clipped.b, 1e-6)) / SKY_RGBM_RANGE;
-  multiplier = ceil(multiplier * 255.0) / 255.0;  // round up, so rgb stays ≤ 1
-  return vec4(clipped / (multiplier * SKY_RGBM_RANGE), multiplier);
+  float root = sqrt(max(max(clipped.r, clipped.g), max(clipped.b, 1e-6)) / SKY_RGBM_RANGE);
+  root = ceil(root * 255.0) / 255.0;  // round up, so rgb stays ≤ 1
+  return vec4(clipped / (root * root * SKY_RGBM_RANGE), root);
 }
 
 vec3 rgbmDecode(vec4 texel) {
-  return texel.rgb * (texel.a * SKY_RGBM_RANGE);
+  return texel.rgb * (texel.a * texel.a * SKY_RGBM_RANGE);
 }

@@ -13,6 +13,8 @@
 #include "surface/waveLayers.glsl"
 #include "surface/seaLighting.glsl"
 #include "surface/foam.glsl"
+#include "surface/foamStreaks.glsl"
+#include "surface/spray.glsl"
 #if SCENE_REFRACTIONS == 1
 #include "surface/sceneRefraction.glsl"
 #endif
@@ -83,7 +85,7 @@ void main() {
   // taken before any branch: derivatives are defined only where every pixel of a 2×2 quad runs the
   // same code.
   vec2 restPerPixelX = dFdx(vRestFromEye), restPerPixelY = dFdy(vRestFromEye);
-  vec2 foamDetail = foamPattern(vRestFromEye + foamPatternOrigin);
+  vec2 foamDetail = foamPattern(streakPatternPoint(vRestFromEye) + foamPatternOrigin);
   float foamDetailPerPixel = fwidth(foamDetail.x);
 #ifdef CAPTURE_POSITIONS
   // Geometry test: the displaced position, or the rest point with its mip level and ring (from the eye).
@@ -182,13 +184,15 @@ void main() {
 #ifdef SEABED
   pixelFoam = min(pixelFoam + vShoreFoam, 1.0);
 #endif
-  float foamCoverage = max(mix(vFoam, pixelFoam, foamShown), edgeFoam);
+  pixelFoam = streakedFoam(tFoam, largestUv, vBlend, layerSizes[LAYER_COUNT - 1], pixelFoam);
+  float foamCoverage = max(mix(streakedMeanFoam(vFoam), pixelFoam, foamShown), edgeFoam);
   // Most of the sea has no foam: it pays for the foam's light only where there is (the pattern, two
   // texture lookups, is taken above for every pixel: its fwidth needs the neighbours).
   if (foamCoverage > FOAM_VISIBLE) {
     float opacity = foamOpacity(foamCoverage, foamDetail, foamDetailPerPixel, foamShown);
     if (opacity > 0.0) colour = mix(colour, foamRadiance(normal, sunDirection, sunLight, environmentRadiance(normal)), min(opacity, 1.0));
   }
+  colour = throughSpray(colour, vFromEye, vFromEye.y + cameraPosition.y, environmentRadiance(normalize(vec3(view.x, 0.0, view.z))));
   #endif
   gl_FragColor = vec4(colour, 1.0);
   #include <tonemapping_fragment>

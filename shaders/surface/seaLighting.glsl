@@ -111,8 +111,13 @@ vec3 filteredSkyReflection(vec3 view, vec3 normal, float variance, float n1, flo
 // SEA_CREST_GLOW: how much of the sun's irradiance such a crest sends back, set by eye against
 // photographs of backlit swell (a tuning, not a measured value).
 #define SEA_CREST_GLOW 4.0
+// How high a crest stands: its height above the mean over twice the sea's rms height, in [0, 1]
+// (the crest glow here and the spindrift, spray.glsl).
+float crestHeight(float heightAboveMean) {
+  return clamp(heightAboveMean / (2.0 * max(waveHeightRms, 1e-3)), 0.0, 1.0);
+}
 vec3 crestGlow(vec3 view, vec3 normal, vec3 sun, float heightAboveMean, float reflectance, vec3 sunLight, vec3 scatter) {
-  float crest = clamp(heightAboveMean / (2.0 * max(waveHeightRms, 1e-3)), 0.0, 1.0);
+  float crest = crestHeight(heightAboveMean);
   float forward = pow(max(dot(view, sun), 0.0), 4.0);
   float thin = pow(0.5 - 0.5 * dot(normal, sun), 3.0);
   return SEA_CREST_GLOW * crest * forward * thin * (1.0 - reflectance) * sunLight * scatter;

@@ -14,6 +14,7 @@ import { shaderSource, withLayerCount } from '../shaderSource';
 import { FOAM_PATTERN_PERIOD, foamPatternDefines, foamPatternTextures } from './foamPattern';
 import { finestTexel, RING_COUNT } from './horizonGrid';
 import { SLOPE_FILTER_LEVELS, seaLightingValues } from './seaLighting';
+import { beaufortAppearance } from './beaufortAppearance';
 
 /** Where the eye is against the sea surface (the uniform eyeSide of ocean.frag). */
 export const EYE_SIDE = { above: 0, below: 1, near: 2 } as const;
@@ -67,6 +68,14 @@ export class OceanMaterial extends ShaderMaterial {
           tFoam: { value: null },
           patchBlend: { value: new Float32Array(12) },
           foamPatternOrigin: { value: new Vector2() },
+          // Streaks and spray (beaufortAppearance.ts; foamStreaks.glsl, spray.glsl): none until bindLayers gives a wind.
+          windAlong: { value: new Vector2(1, 0) },
+          streakShare: { value: 0 },
+          streakLength: { value: 0 },
+          streakElongation: { value: 1 },
+          streakGain: { value: 0 },
+          sprayExtinction: { value: 0 },
+          spindrift: { value: 0 },
           copyOffset: { value: new Vector2(...COPY_OFFSET) },
           ringOffsets: { value: new Float32Array(2 * (RING_COUNT + 1)) },
           halfRingCells: { value: 32 },
@@ -117,12 +126,21 @@ export class OceanMaterial extends ShaderMaterial {
    * last layer's patch, whitecapFoam.ts), from the next draw on. Called before every draw: for the
    * list it bound last it only sets the choppiness and the foam; a new list rebinds the textures
    * and sizes, and a new number of layers recompiles the shaders. `windSpeed` (m/s at 10 m) sets
-   * the slopes finer than the layers (seaLighting.ts).
+   * the slopes finer than the layers (seaLighting.ts); with `windDirection` (°) the foam's streaks
+   * and the spray (beaufortAppearance.ts).
    */
-  bindLayers(layers: readonly WaveLayer[], choppiness: number, foam: { value: Texture | null }, windSpeed = 0): void {
+  bindLayers(layers: readonly WaveLayer[], choppiness: number, foam: { value: Texture | null }, windSpeed = 0, windDirection = 0): void {
     const u = this.uniforms;
     u.choppiness.value = choppiness;
     u.tFoam = foam;
+    const look = beaufortAppearance(windSpeed, windDirection);
+    u.windAlong.value.fromArray(look.windAlong);
+    u.streakShare.value = look.streakShare;
+    u.streakLength.value = look.streakLength;
+    u.streakElongation.value = look.streakElongation;
+    u.streakGain.value = look.streakGain;
+    u.sprayExtinction.value = look.sprayExtinction;
+    u.spindrift.value = look.spindrift;
     if (layers === this.boundLayers && windSpeed === this.litWindSpeed) return;
     this.litWindSpeed = windSpeed;
     const light = seaLightingValues(layers, windSpeed);
@@ -183,8 +201,11 @@ export class OceanMaterial extends ShaderMaterial {
   setEye(x: number, z: number): void {
     const u = this.uniforms;
     patchBlendUniforms(this.blendedSize, u.patchBlend.value, x, z);
-    // The pattern repeats, so only the eye's place within a period matters, small enough for float32.
-    u.foamPatternOrigin.value.set(x % FOAM_PATTERN_PERIOD, z % FOAM_PATTERN_PERIOD);
+    // The pattern repeats, so only the eye's place within a period matters, small enough for float32;
+    // in the streaked pattern's coordinates (foamStreaks.glsl's streakPatternPoint, which is linear).
+    const w = u.windAlong.value;
+    const along = (1 - 1 / u.streakElongation.value) * (x * w.x + z * w.y);
+    u.foamPatternOrigin.value.set((x - along * w.x) % FOAM_PATTERN_PERIOD, (z - along * w.y) % FOAM_PATTERN_PERIOD);
   }
 
   /** Changes shading options; throws a ParameterError naming the first bad one and changes nothing. */

@@ -52,6 +52,8 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
       foam: { value: Texture | null };
       /** The wind, m/s at 10 m: the slopes finer than the layers (seaLighting.ts); 0 when left out. */
       windSpeed?: number;
+      /** The way the wind blows, ° from +x towards +z: the foam's streaks (beaufortAppearance.ts); 0 when left out. */
+      windDirection?: number;
       /** No crest rises above it and no trough sinks below its negative (m); without it the eye is taken to be above the sea. */
       surfaceBound?: number;
       /** The water's height over a point (Ocean.heightAt), asked when the eye is between crest and trough heights. */
@@ -169,8 +171,8 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
   placeRings(camera: Camera): void {
     const position = camera.getWorldPosition(this.cameraPosition);
     const u = this.material.uniforms;
-    const { layers, choppiness, foam, surfaceBound, waterHeightAt, windSpeed, shore } = this.waves();
-    this.material.bindLayers(layers, choppiness, foam, windSpeed);
+    const { layers, choppiness, foam, surfaceBound, waterHeightAt, windSpeed, windDirection, shore } = this.waves();
+    this.material.bindLayers(layers, choppiness, foam, windSpeed, windDirection);
     this.material.setEye(position.x, position.z);
     this.material.bindShore(shore ?? null, position.x, position.z);
     this.rings.update(position.x, position.z, position.y, layers, this.cellsPerRing);

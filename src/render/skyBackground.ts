@@ -7,10 +7,10 @@
  * It is one draw call of a triangle that covers the screen (in clip space: no transform, frustum
  * culling off); each corner gets the world direction of its view ray from the camera's inverse
  * projection and rotation, set before each draw. Tone mapped like the sea, except a loaded face set, which
- * is already display-referred (LDR sRGB) and shows as it is. Owns its geometry and material;
+ * is already display-referred (LDR sRGB) and shows as it is; dithered into an 8-bit picture. Owns its geometry and material;
  * dispose() frees them (not the SkyEnvironment).
  */
-import { BufferGeometry, Float32BufferAttribute, Matrix3, Matrix4, Mesh, ShaderMaterial, Vector3, type Camera, type Scene, type WebGLRenderer } from 'three';
+import { BufferGeometry, Float32BufferAttribute, Matrix3, Matrix4, Mesh, ShaderMaterial, UnsignedByteType, Vector3, type Camera, type Scene, type WebGLRenderer } from 'three';
 import { shaderSource } from '../shaderSource';
 import type { SkyEnvironment } from './skyEnvironment';
 
@@ -41,6 +41,7 @@ export class SkyBackground extends Mesh<BufferGeometry, ShaderMaterial> {
         backgroundWater: underWater.backgroundWater,
         deepWater: underWater.deepWater,
         skyDaylight: sky.skyUniforms.skyDaylight,
+        ditherStep: { value: 0 },
       },
       depthWrite: false, // depthTest stays on: LessEqual passes at the far plane where nothing was drawn
     });
@@ -63,6 +64,10 @@ export class SkyBackground extends Mesh<BufferGeometry, ShaderMaterial> {
     u.farDepth.value = renderer.state.buffers.depth.getReversed?.() ? 0 : 1;
     u.skyProjectionInverse.value.copy(camera.projectionMatrixInverse);
     u.skyCameraRotation.value.setFromMatrix4(camera.matrixWorld);
+    // Dithered where the picture is 8-bit (the canvas, or an 8-bit target such as SceneOutput's):
+    // a float target keeps the sky's radiance exact (dither.glsl).
+    const target = renderer.getRenderTarget();
+    u.ditherStep.value = target === null || target.texture.type === UnsignedByteType ? 1 / 255 : 0;
     const toneMapped = !this.sky.usingFaces;
     if (this.material.toneMapped !== toneMapped) {
       this.material.toneMapped = toneMapped;
