@@ -37,6 +37,7 @@ import { shaderSource } from '../shaderSource';
 import { fillPhaseTable, PHASE_TABLE_SIZE } from '../spectrum/dispersion';
 import { largestFrequency, type InitialSpectrum } from '../spectrum/initialSpectrum';
 import { FullscreenPass, fullscreenMaterial, periodicFieldTarget, runPasses } from './fullscreenPass';
+import type { FftFieldSource } from './fieldSource';
 import { FFT_DRAW_BUFFERS, GpuFft, type WorkingSet } from './gpuFft';
 import { checkThreeInternals, missingThreeInternals } from './threeInternals';
 import { FIELD_TEXTURES } from './waveFieldLayout';
@@ -72,7 +73,7 @@ export function gpuSupport(renderer: WebGLRenderer): { precision: GpuPrecision |
 /** The working set the evolution pass writes. */
 const EVOLVED: WorkingSet = 0;
 
-export class GpuWaveFields {
+export class GpuWaveFields implements FftFieldSource {
   /** (Dx, h, Dz, ∂Dx/∂z) */
   readonly displacement: Texture;
   /** (∂h/∂x, ∂h/∂z, ∂Dx/∂x, ∂Dz/∂z) */
@@ -80,6 +81,9 @@ export class GpuWaveFields {
   /** Fragment passes per update (evolution, FFT, copy to the output). */
   readonly passCount: number;
   readonly output: WebGLRenderTarget;
+  /** No worker, and no fields on the CPU: the queries compute their own. */
+  readonly workerFault = null;
+  readonly cpuFields = null;
 
   private readonly amplitudes: DataTexture;
   private readonly waveVectors: DataTexture;
@@ -138,6 +142,10 @@ export class GpuWaveFields {
       this.renderer.setRenderTarget(this.output);
       this.pass.draw(this.renderer, this.unpackMaterial);
     });
+  }
+
+  shownFieldsOnCpu(): null {
+    return null;
   }
 
   dispose(): void {

@@ -26,7 +26,7 @@ import {
 } from '../parameters/parameters';
 import { checkOptionNames } from '../parameters/options';
 import { createCascadeSpectra, type InitialSpectrum } from '../spectrum/initialSpectrum';
-import { FftCascade, type FftBackend } from './fftCascade';
+import { FftCascade, gpuBackend, jsBackend, type FftBackend } from './fftCascade';
 import { isSoftwareRenderer } from './gpuLocalWaves';
 import { LOCAL_WAVES_OPTION_KEYS, LocalWaves, type LocalWavesOptions } from './localWaves';
 import { orderLayers, type WaveLayer } from './waveLayer';
@@ -369,7 +369,7 @@ const warned = new Set<string>();
 const PATH_NAMES: Record<SimulationPath, string> = { 'gpu-rgba32f': 'GPU RGBA32F', 'gpu-rgba16f': 'GPU RGBA16F', js: 'JS', 'js-worker': 'JS (worker)' };
 
 function backendFor(precision: GpuPrecision | null, worker: boolean): FftBackend {
-  return precision ? { kind: 'gpu', precision } : { kind: 'js', worker };
+  return precision ? gpuBackend(precision) : jsBackend(worker);
 }
 
 /** The names SimulationOptions has: any other is a misspelling. */
