@@ -9,39 +9,20 @@
  * AFTER_RADIX2 if its load pass also did the first radix-2 pass along x, as the cascades' evolution
  * pass does), and reads the result of `transform` with fieldAddress (quarterLayout.glsl). Radix-4
  * Stockham passes run along x, then along z (a radix-2 pass first on each axis when log2 N is odd),
- * ping-ponging between two sets of working storage (LayeredSpectra: each pass writes a butterfly's
- * four outputs to four layers of (N/2)×(N/2) array textures). A spectrum whose modes lie on a band
+ * ping-ponging between two sets of working storage (LayeredTarget of src/device/gpuDevice.ts: each
+ * pass writes a butterfly's four outputs to four layers of (N/2)×(N/2) array textures). A spectrum whose modes lie on a band
  * of lines near k_z = 0 (a coarse cascade) is loaded and transformed along x on those lines only.
  * Writing a butterfly's four outputs reads every input once per pass instead of four times, and
- * under SwiftShader makes a pass about three times cheaper than one output per fragment. three.js
- * cannot render to several layers at once, so LayeredSpectra attaches the layers to a framebuffer
- * of its own and hands it to three.js (threeInternals.ts, the one adapter for what three.js does
- * not make public); three.js still allocates, binds and frees the textures.
+ * under SwiftShader makes a pass about three times cheaper than one output per fragment. It runs
+ * on a GpuDevice (src/device/gpuDevice.ts), which its user gives it.
  *
  * Textures: twiddles N×1 (cos 2πj/N, sin 2πj/N), static, computed in double precision because GLSL
- * sin/cos are approximate; two sets of working storage. This object owns them, its materials and
- * its framebuffers, and frees them in dispose().
+ * sin/cos are approximate; two sets of working storage. This object owns them and its materials
+ * (not the device), and frees them in dispose().
  */
-import {
-  DataTexture,
-  FloatType,
-  NearestFilter,
-  RGBAFormat,
-  RGFormat,
-  type ShaderMaterial,
-  type Texture,
-  type TextureDataType,
-  WebGLArrayRenderTarget,
-  WebGLRenderTarget,
-  type WebGLRenderer,
-} from 'three';
-import { UnsupportedError } from '../parameters/options';
+import { DataTexture, FloatType, NearestFilter, RGFormat } from 'three';
+import type { GpuDevice, GpuPrecision, LayeredTarget, PassMaterial, TexelRows } from '../device/gpuDevice';
 import { shaderSource } from '../shaderSource';
-import { FullscreenPass, fullscreenMaterial } from './fullscreenPass';
-import { glTextureOf, useExternalFramebuffer } from './threeInternals';
-
-/** Colour attachments each FFT pass writes at once (LayeredSpectra: two array textures of four layers). */
-export const FFT_DRAW_BUFFERS = 8;
 
 /** How the previous pass left the data: INPUT_LAYOUT of shaders/fft/quarterLayout.glsl. */
 type InputLayout = 'QUARTERS' | 'QUARTERS_TRANSPOSED' | 'AFTER_RADIX2' | 'AFTER_RADIX4';
@@ -50,7 +31,7 @@ type InputLayout = 'QUARTERS' | 'QUARTERS_TRANSPOSED' | 'AFTER_RADIX2' | 'AFTER_
 export type WorkingSet = 0 | 1;
 
 interface FftPass {
-  material: ShaderMaterial;
+  material: PassMaterial;
   /** log2 of the sub-transform length p before the pass. */
   subtransformLog2: number;
   alongZ: boolean;
@@ -68,17 +49,11 @@ interface BandRows {
   cleared: TexelRows;
 }
 
-/** Rows first … first + count − 1 of texels. */
-interface TexelRows {
-  first: number;
-  count: number;
-}
-
 export interface GpuFftOptions {
   /** N, a power of two from 16. */
   size: number;
-  /** FloatType or HalfFloatType working storage. */
-  type: TextureDataType;
+  /** The working storage's floats. */
+  precision: GpuPrecision;
   /** The load pass also does the first radix-2 pass along x when log2 N is odd (writes AFTER_RADIX2). */
   loadDoesFirstRadix2?: boolean;
   /** The largest |line| (z frequency index) that holds modes; null or omitted: any. */
@@ -90,35 +65,41 @@ export class GpuFft {
   /** (cos 2πj/N, sin 2πj/N), j < N. */
   readonly twiddles: DataTexture;
   /** The two sets of working storage; `textures` of each are the tSpectra0, tSpectra1 of the shaders. */
-  readonly sets: readonly [LayeredSpectra, LayeredSpectra];
+  readonly sets: readonly [LayeredTarget, LayeredTarget];
   /** Along x, then along z. */
   private readonly passes: FftPass[] = [];
   /** One program per radix, axis and input layout the passes need. */
-  private readonly materials = new Map<string, ShaderMaterial>();
+  private readonly materials = new Map<string, PassMaterial>();
   /** The texel rows of the band's lines (bandTexelRows), null for all. */
   private readonly bandRows: BandRows | null;
-  private readonly pass = new FullscreenPass();
 
+  /** Throws an UnsupportedError, holding nothing, if the device cannot render to the working storage. */
   constructor(
-    private readonly renderer: WebGLRenderer,
-    { size: n, type, loadDoesFirstRadix2 = false, band = null }: GpuFftOptions,
+    private readonly device: GpuDevice,
+    { size: n, precision, loadDoesFirstRadix2 = false, band = null }: GpuFftOptions,
   ) {
     const sizeLog2 = (this.sizeLog2 = Math.log2(n));
     const table = new Float32Array(2 * n);
     for (let j = 0; j < n; j++) [table[2 * j], table[2 * j + 1]] = [Math.cos((2 * Math.PI * j) / n), Math.sin((2 * Math.PI * j) / n)];
+    const first = device.createLayeredTarget(n / 2, precision);
+    try {
+      this.sets = [first, device.createLayeredTarget(n / 2, precision)];
+    } catch (error) {
+      first.dispose();
+      throw error;
+    }
     this.twiddles = new DataTexture(table, n, 1, RGFormat, FloatType);
     this.twiddles.minFilter = this.twiddles.magFilter = NearestFilter;
     this.twiddles.needsUpdate = true;
-    this.sets = [new LayeredSpectra(n / 2, type), new LayeredSpectra(n / 2, type)];
     this.bandRows = band === null ? null : bandTexelRows(n, band);
 
-    const material = (radix: 2 | 4, alongZ: boolean, layout: InputLayout): ShaderMaterial => {
+    const material = (radix: 2 | 4, alongZ: boolean, layout: InputLayout): PassMaterial => {
       const key = `${radix} ${alongZ} ${layout}`;
       let fft = this.materials.get(key);
       if (!fft) {
         const uniforms = { tSpectra0: { value: null }, tSpectra1: { value: null }, tTwiddles: { value: this.twiddles } };
         const defines = { RADIX: radix, RADIX_LOG2: Math.log2(radix), ALONG_Z: Number(alongZ), INPUT_LAYOUT: layout };
-        fft = fullscreenMaterial(shaderSource('fft/fftPass.frag'), { sizeLog2: { value: sizeLog2 }, ...uniforms, subtransformLog2: { value: 0 } }, defines);
+        fft = device.passMaterial(shaderSource('fft/fftPass.frag'), { sizeLog2: { value: sizeLog2 }, ...uniforms, subtransformLog2: { value: 0 } }, defines);
         this.materials.set(key, fft);
       }
       return fft;
@@ -140,14 +121,6 @@ export class GpuFft {
       for (; p < n; p *= 4, layout = 'AFTER_RADIX4') pass(4, p);
       if (!alongZ) this.passes[this.passes.length - 1].lastAlongX = true;
     }
-    // Checked now rather than at the first transform, so that a device that cannot render to the
-    // layered framebuffer makes this throw and the 'auto' path falls back to JS with the reason.
-    try {
-      for (const spectra of this.sets) spectra.prepare(renderer);
-    } catch (error) {
-      this.dispose();
-      throw error;
-    }
   }
 
   /** Fragment passes per transform. */
@@ -164,9 +137,9 @@ export class GpuFft {
    * Draws `material` (a fullscreenMaterial writing eight outputs, quarterLayout.glsl) into set
    * `into`: with a band, only its lines' texel rows, the rows between set to zero.
    */
-  load(material: ShaderMaterial, into: WorkingSet): void {
+  load(material: PassMaterial, into: WorkingSet): void {
     this.drawRows(this.sets[into], this.bandRows?.drawn ?? EVERY_ROW, material);
-    if (this.bandRows !== null) this.sets[into].clear(this.renderer, this.bandRows.cleared);
+    if (this.bandRows !== null) this.device.clear(this.sets[into], this.bandRows.cleared);
   }
 
   /**
@@ -190,130 +163,14 @@ export class GpuFft {
   }
 
   /** Draws `material` into `target`, once per range of rows. */
-  private drawRows(target: LayeredSpectra, rows: RowRanges, material: ShaderMaterial): void {
-    for (const range of rows) {
-      target.bind(this.renderer, range);
-      this.pass.draw(this.renderer, material);
-    }
+  private drawRows(target: LayeredTarget, rows: RowRanges, material: PassMaterial): void {
+    for (const range of rows) this.device.draw(material, target, range);
   }
 
   dispose(): void {
     this.twiddles.dispose();
-    for (const spectra of this.sets) spectra.dispose(this.renderer);
+    for (const spectra of this.sets) spectra.dispose();
     for (const material of this.materials.values()) material.dispose();
-    this.pass.dispose();
-  }
-}
-
-/**
- * One set of FFT working storage: two array textures of four layers (the two working textures of
- * fftPass.frag) and a framebuffer with all eight layers as colour attachments, so one pass writes
- * a butterfly's four outputs to each texture.
- */
-export class LayeredSpectra {
-  readonly textures: [Texture, Texture];
-  private readonly arrays: [WebGLArrayRenderTarget, WebGLArrayRenderTarget];
-  /** Stands for the framebuffer in three.js's setRenderTarget; three.js allocates nothing for it. */
-  private readonly target: WebGLRenderTarget;
-  private framebuffer: WebGLFramebuffer | null = null;
-  /** The GL textures attached to `framebuffer`. */
-  private attached: WebGLTexture[] = [];
-
-  constructor(size: number, type: TextureDataType) {
-    const array = () =>
-      new WebGLArrayRenderTarget(size, size, 4, {
-        type,
-        format: RGBAFormat,
-        depthBuffer: false,
-        minFilter: NearestFilter,
-        magFilter: NearestFilter,
-        generateMipmaps: false,
-      });
-    this.arrays = [array(), array()];
-    this.textures = [this.arrays[0].texture, this.arrays[1].texture];
-    this.target = new WebGLRenderTarget(size, size, { depthBuffer: false, generateMipmaps: false });
-  }
-
-  /**
-   * Builds the framebuffer of the eight layers (again after a restored context), checking it is
-   * complete: throws an UnsupportedError if the device cannot render to it. Done when the GPU path
-   * is created, so that 'auto' can fall back then, and before every use.
-   */
-  prepare(renderer: WebGLRenderer): void {
-    if (!this.framebufferIsCurrent(renderer)) this.createFramebuffer(renderer);
-  }
-
-  /**
-   * Makes the eight layers the render target of the next draw, which then covers only `rows` if
-   * given (a scissor box). Allocates nothing once set up.
-   */
-  bind(renderer: WebGLRenderer, rows: TexelRows | null = null): void {
-    this.prepare(renderer);
-    // three.js applies a render target's scissor when it is set.
-    this.target.scissorTest = rows !== null;
-    if (rows !== null) this.target.scissor.set(0, rows.first, this.target.width, rows.count);
-    // Every time: after a restored context three.js has a new property map that no longer knows it.
-    useExternalFramebuffer(renderer, this.target, this.framebuffer!);
-    renderer.setRenderTarget(this.target);
-  }
-
-  /** Sets `rows` of all eight layers to zero. */
-  clear(renderer: WebGLRenderer, rows: TexelRows): void {
-    this.bind(renderer, rows);
-    const gl = renderer.getContext() as WebGL2RenderingContext;
-    renderer.state.buffers.color.setMask(true); // a material's colorWrite: false would mask the clear
-    for (let drawBuffer = 0; drawBuffer < FFT_DRAW_BUFFERS; drawBuffer++) gl.clearBufferfv(gl.COLOR, drawBuffer, ZERO_TEXEL);
-  }
-
-  /** Whether `framebuffer` holds the arrays' GL textures, which change when the context is lost and restored. */
-  private framebufferIsCurrent(renderer: WebGLRenderer): boolean {
-    if (this.framebuffer === null) return false;
-    for (let i = 0; i < this.arrays.length; i++) {
-      if (glTextureOf(renderer, this.arrays[i]) !== this.attached[i]) return false;
-    }
-    return true;
-  }
-
-  private createFramebuffer(renderer: WebGLRenderer): void {
-    const gl = renderer.getContext() as WebGL2RenderingContext;
-    const textures = this.arrays.map((array) => glTextureOf(renderer, array));
-    this.deleteFramebuffer(renderer);
-    const framebuffer = gl.createFramebuffer();
-    renderer.state.bindFramebuffer(gl.FRAMEBUFFER, framebuffer);
-    const attachments: GLenum[] = [];
-    textures.forEach((texture, a) => {
-      for (let layer = 0; layer < 4; layer++) {
-        const attachment = gl.COLOR_ATTACHMENT0 + 4 * a + layer;
-        gl.framebufferTextureLayer(gl.FRAMEBUFFER, attachment, texture, 0, layer);
-        attachments.push(attachment);
-      }
-    });
-    gl.drawBuffers(attachments); // framebuffer state: set once
-    // Checked once per context and layout: the check waits for the GPU to finish its queue (a
-    // frame's work under SwiftShader), and the answer cannot change for the same formats and size.
-    const layout = `${this.arrays[0].texture.type}/${this.arrays[0].width}`;
-    const checked = completeLayouts.get(gl) ?? new Set<string>();
-    const status = checked.has(layout) ? gl.FRAMEBUFFER_COMPLETE : gl.checkFramebufferStatus(gl.FRAMEBUFFER);
-    renderer.state.bindFramebuffer(gl.FRAMEBUFFER, null);
-    if (status !== gl.FRAMEBUFFER_COMPLETE) {
-      gl.deleteFramebuffer(framebuffer);
-      throw new UnsupportedError('GPU FFT framebuffer', `GPU FFT: the layered framebuffer is incomplete (status 0x${status.toString(16)})`);
-    }
-    completeLayouts.set(gl, checked.add(layout));
-    this.framebuffer = framebuffer;
-    this.attached = textures;
-  }
-
-  private deleteFramebuffer(renderer: WebGLRenderer): void {
-    // After a lost and restored context the old framebuffer is already gone: its textures are no
-    // longer the arrays' (asked of three.js, not of GL: gl.isFramebuffer would wait for the GPU).
-    if (this.framebufferIsCurrent(renderer)) renderer.getContext().deleteFramebuffer(this.framebuffer);
-    this.framebuffer = null;
-  }
-
-  dispose(renderer: WebGLRenderer): void {
-    this.deleteFramebuffer(renderer);
-    for (const array of this.arrays) array.dispose();
   }
 }
 
@@ -331,8 +188,4 @@ function bandTexelRows(n: number, band: number): BandRows | null {
   return { drawn, cleared: { first: lowCount, count: highFirst - lowCount } };
 }
 
-const ZERO_TEXEL = new Float32Array(4);
-
-/** The layouts (texel type / size) of the layered framebuffer found complete, per GL context. */
-const completeLayouts = new WeakMap<WebGLRenderingContext | WebGL2RenderingContext, Set<string>>();
 

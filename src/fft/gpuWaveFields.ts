@@ -20,29 +20,18 @@
  * and the engine's twiddles and working storage. This object owns all of them (the engine) and
  * frees them in dispose().
  */
-import {
-  DataTexture,
-  FloatType,
-  HalfFloatType,
-  NearestFilter,
-  RGBAFormat,
-  type ShaderMaterial,
-  type WebGLRenderTarget,
-  type PixelFormat,
-  type Texture,
-  type TextureDataType,
-  type WebGLRenderer,
-} from 'three';
+import { DataTexture, FloatType, NearestFilter, RGBAFormat, type PixelFormat, type Texture, type WebGLRenderTarget, type WebGLRenderer } from 'three';
+import { LAYERED_ATTACHMENTS, type GpuPrecision, type PassMaterial } from '../device/gpuDevice';
+import { WebGL2Device, type WebGL2FieldTarget } from '../device/webgl2/webgl2Device';
 import { shaderSource } from '../shaderSource';
 import { fillPhaseTable, PHASE_TABLE_SIZE } from '../spectrum/dispersion';
 import { largestFrequency, type InitialSpectrum } from '../spectrum/initialSpectrum';
-import { FullscreenPass, fullscreenMaterial, periodicFieldTarget, runPasses } from './fullscreenPass';
 import type { FftFieldSource } from './fieldSource';
-import { FFT_DRAW_BUFFERS, GpuFft, type WorkingSet } from './gpuFft';
+import { GpuFft, type WorkingSet } from './gpuFft';
 import { checkThreeInternals, missingThreeInternals } from './threeInternals';
 import { FIELD_TEXTURES } from './waveFieldLayout';
 
-export type GpuPrecision = 'float32' | 'float16';
+export type { GpuPrecision };
 
 /** Which GPU precision this renderer can render to, best first; null when neither works. */
 export function supportedGpuPrecision(renderer: WebGLRenderer): GpuPrecision | null {
@@ -62,7 +51,7 @@ export function gpuSupport(renderer: WebGLRenderer): { precision: GpuPrecision |
   // Asked once per context: getParameter waits for the GPU to finish its queue, and the limit stays.
   const drawBuffers = maxDrawBuffers.get(gl) ?? (gl.getParameter(gl.MAX_DRAW_BUFFERS) as number);
   maxDrawBuffers.set(gl, drawBuffers);
-  if (drawBuffers < FFT_DRAW_BUFFERS) return { precision: null, reason: `MAX_DRAW_BUFFERS is ${drawBuffers} (the GPU FFT writes ${FFT_DRAW_BUFFERS} at once)` };
+  if (drawBuffers < LAYERED_ATTACHMENTS) return { precision: null, reason: `MAX_DRAW_BUFFERS is ${drawBuffers} (the GPU FFT writes ${LAYERED_ATTACHMENTS} at once)` };
   const missingInternals = missingThreeInternals(renderer);
   if (missingInternals !== null) return { precision: null, reason: missingInternals };
   if (renderer.extensions.has('EXT_color_buffer_float')) return { precision: 'float32', reason: '' };
@@ -80,7 +69,6 @@ export class GpuWaveFields implements FftFieldSource {
   readonly derivatives: Texture;
   /** Fragment passes per update (evolution, FFT, copy to the output). */
   readonly passCount: number;
-  readonly output: WebGLRenderTarget;
   /** No worker, and no fields on the CPU: the queries compute their own. */
   readonly workerFault = null;
   readonly cpuFields = null;
@@ -88,14 +76,15 @@ export class GpuWaveFields implements FftFieldSource {
   private readonly amplitudes: DataTexture;
   private readonly waveVectors: DataTexture;
   private readonly phases: DataTexture;
+  private readonly device: WebGL2Device;
   private readonly fft: GpuFft;
-  private readonly evolveMaterial: ShaderMaterial;
-  private readonly unpackMaterial: ShaderMaterial;
-  private readonly pass = new FullscreenPass();
+  private readonly fields: WebGL2FieldTarget;
+  private readonly evolveMaterial: PassMaterial;
+  private readonly unpackMaterial: PassMaterial;
   private readonly repeatPeriod: number;
 
   constructor(
-    private readonly renderer: WebGLRenderer,
+    renderer: WebGLRenderer,
     spectrum: InitialSpectrum,
     readonly precision: GpuPrecision,
   ) {
@@ -103,21 +92,26 @@ export class GpuWaveFields implements FftFieldSource {
     this.repeatPeriod = spectrum.repeatPeriod;
     const n = spectrum.resolution;
     const sizeLog2 = Math.log2(n);
-    const type: TextureDataType = precision === 'float32' ? FloatType : HalfFloatType;
+    const device = (this.device = new WebGL2Device(renderer));
     // A coarse cascade has modes only on the lines (z frequencies) of its band: the engine loads
     // and transforms along x only those lines. Made first: it throws if the device cannot render
     // to its layered framebuffer, before anything else is allocated.
-    this.fft = new GpuFft(renderer, { size: n, type, loadDoesFirstRadix2: true, band: largestFrequency(spectrum) });
+    try {
+      this.fft = new GpuFft(device, { size: n, precision, loadDoesFirstRadix2: true, band: largestFrequency(spectrum) });
+    } catch (error) {
+      device.dispose();
+      throw error;
+    }
     this.amplitudes = dataTexture(spectrum.amplitudes, n, n, RGBAFormat);
     this.waveVectors = dataTexture(spectrum.waveVectors, n, n, RGBAFormat);
     this.phases = dataTexture(new Float32Array(4 * PHASE_TABLE_SIZE), PHASE_TABLE_SIZE, 1, RGBAFormat);
 
-    this.output = periodicFieldTarget(renderer, n, type, 2);
-    [this.displacement, this.derivatives] = this.output.textures;
-    this.output.textures.forEach((texture, i) => (texture.name = FIELD_TEXTURES[i]));
+    this.fields = device.createFieldTarget({ size: n, precision, count: 2, sampling: 'periodic' });
+    [this.displacement, this.derivatives] = this.fields.textures;
+    this.fields.textures.forEach((texture, i) => (texture.name = FIELD_TEXTURES[i]));
 
     const material = (fragmentShader: string, uniforms: Record<string, { value: unknown }>, defines = {}) =>
-      fullscreenMaterial(shaderSource(fragmentShader), { sizeLog2: { value: sizeLog2 }, ...uniforms }, defines);
+      device.passMaterial(shaderSource(fragmentShader), { sizeLog2: { value: sizeLog2 }, ...uniforms }, defines);
     this.evolveMaterial = material(
       'fft/evolveSpectrum.frag',
       {
@@ -132,15 +126,19 @@ export class GpuWaveFields implements FftFieldSource {
     this.passCount = 2 + this.fft.passCount;
   }
 
+  /** The render target of `displacement` and `derivatives` (its two textures), to read back. */
+  get output(): WebGLRenderTarget {
+    return this.fields.renderTarget;
+  }
+
   /** Computes every field at time t (seconds) into `displacement` and `derivatives`. */
   update(t: number): void {
     fillPhaseTable(this.phases.image.data as Float32Array, t, this.repeatPeriod);
     this.phases.needsUpdate = true;
-    runPasses(this.renderer, () => {
+    this.device.runPasses(() => {
       this.fft.load(this.evolveMaterial, EVOLVED);
       this.fft.transform(EVOLVED);
-      this.renderer.setRenderTarget(this.output);
-      this.pass.draw(this.renderer, this.unpackMaterial);
+      this.device.draw(this.unpackMaterial, this.fields);
     });
   }
 
@@ -151,9 +149,9 @@ export class GpuWaveFields implements FftFieldSource {
   dispose(): void {
     for (const texture of [this.amplitudes, this.waveVectors, this.phases]) texture.dispose();
     this.fft.dispose();
-    this.output.dispose();
+    this.fields.dispose();
     for (const material of [this.evolveMaterial, this.unpackMaterial]) material.dispose();
-    this.pass.dispose();
+    this.device.dispose();
   }
 }
 
