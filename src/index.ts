@@ -25,7 +25,8 @@ export { seaState, waveNumberSpectrum, frequencySpectrum } from './spectrum/seaS
 export { SEA_PRESETS, beaufortPreset, presetCloudCover, OVERCAST_FROM_FORCE } from './spectrum/presets';
 export { cascadeBands, type CascadeBand } from './spectrum/cascadeBands';
 export { orderLayers, type WaveLayer, type LayerFrame, type LayerFieldsOnCpu, type LayerQueryFields } from './layers/waveLayer';
-export { FftCascade, type FftBackend } from './layers/fftCascade';
+export { FftCascade, gpuBackend, jsBackend, type FftBackend } from './layers/fftCascade';
+export type { FftFieldSource, CpuFieldsForQueries } from './fft/fieldSource';
 export { FloatingBody, SEA_WATER_DENSITY, type FloatingBodyOptions, type WaterSurface } from './layers/floatingBody';
 export { WhitecapFoam, type FoamSettings } from './layers/whitecapFoam';
 export { calibrateFoam, jacobianCovariance, whitecapFraction, type FoamCalibration, type JacobianCovariance } from './layers/foamModel';

@@ -9,8 +9,8 @@
 // i = g·p + r (r < p) of a line:
 //   a_s = in[i + s·N/4] · e^{2πi·s·r/P},   s = 0 … 3
 //   out[g·P + r + t·p] = Σ_s a_s · e^{2πi·s·t/4} = Σ_s a_s · i^{s·t},   t = 0 … 3   → layer t
-// Radix 2 runs only as the first pass of the z axis (p = 1), when log2 N is odd (along x,
-// evolveSpectrum.frag does it); the fragment does the two butterflies i = b and i = b + N/4:
+// Radix 2 runs only as the first pass of an axis (p = 1), when log2 N is odd (along x the
+// cascades' evolveSpectrum.frag does it); the fragment does the two butterflies i = b and i = b + N/4:
 //   out[2i] = in[i] + in[i + N/2],  out[2i + 1] = in[i] − in[i + N/2]   → layers 2h, 2h + 1
 // The twiddle comes from a table of e^{2πi·j/N} that JS computed in double precision: GLSL sin/cos
 // are approximate (about 2e-4 off under SwiftShader, see ../shared/BROWSER.md).

@@ -83,6 +83,13 @@ ivec3 quarterAddress(QuarterAddresses addresses, int s, int sizeLog2) {
 #endif
 }
 
+// (texel x, texel y, layer) of field texel (x, z) in a transform's result: the z axis ends in
+// QUARTERS with x as the line, element z at position z mod N/4 of layer z div N/4.
+ivec3 fieldAddress(ivec2 texel, int sizeLog2) {
+  int quarterLog2 = sizeLog2 - 2;
+  return ivec3(texelAlongZ(texel.y & ((1 << quarterLog2) - 1), texel.x, sizeLog2), texel.y >> quarterLog2);
+}
+
 // (butterfly b, line) of this fragment, which writes texel (b, line) of the next layout (above).
 ivec2 fragmentButterfly(int sizeLog2) {
   ivec2 texel = ivec2(gl_FragCoord.xy);

@@ -1,6 +1,6 @@
 // The last pass of the GPU path: copies the fields out of the FFT's working layout
-// (quarterLayout.glsl; the z axis ends in QUARTERS, with x as the line) into ordinary N×N
-// textures, which the surface samples with REPEAT wrapping, linear filtering and mipmaps.
+// (quarterLayout.glsl's fieldAddress) into ordinary N×N textures, which the surface samples with
+// REPEAT wrapping, linear filtering and mipmaps.
 #define ALONG_Z 1
 #define INPUT_LAYOUT QUARTERS
 #include "fft/quarterLayout.glsl"
@@ -13,11 +13,7 @@ layout(location = 0) out vec4 displacement;  // (Dx, h, Dz, ∂Dx/∂z)
 layout(location = 1) out vec4 derivatives;   // (∂h/∂x, ∂h/∂z, ∂Dx/∂x, ∂Dz/∂z)
 
 void main() {
-  ivec2 texel = ivec2(gl_FragCoord.xy);  // (x, z)
-  int quarterLog2 = sizeLog2 - 2;
-  int s = texel.y >> quarterLog2;        // element z = b + s·N/4 of line x
-  QuarterAddresses addresses = quarterAddresses(texel.y & ((1 << quarterLog2) - 1), texel.x, sizeLog2, 0);
-  ivec3 at = quarterAddress(addresses, s, sizeLog2);
+  ivec3 at = fieldAddress(ivec2(gl_FragCoord.xy), sizeLog2);  // texel (x, z)
   // The transform of F + i·G is f + i·g (waveFieldLayout.ts), so the packed complex pairs are
   // already the fields in texture order: (Dx + i·h, Dz + i·∂Dx/∂z) = (Dx, h, Dz, ∂Dx/∂z), etc.
   displacement = texelFetch(tSpectra0, at, 0);

@@ -21,6 +21,7 @@ import {
   type WebGLRenderer,
 } from 'three';
 import { CpuWaveFields } from './cpuWaveFields';
+import type { CpuFieldsForQueries, FftFieldSource } from './fieldSource';
 import type { InitialSpectrum } from '../spectrum/initialSpectrum';
 import type { LayerQueryFields } from '../layers/waveLayer';
 import { FIELD_TEXTURES } from './waveFieldLayout';
@@ -28,7 +29,7 @@ import type { FieldArrays } from './fieldArrays';
 import { FieldWorker } from './fieldWorker';
 import type { WorkerReply } from './waveFieldWorker';
 
-export class CpuFieldTextures {
+export class CpuFieldTextures implements FftFieldSource, CpuFieldsForQueries {
   readonly displacement: DataTexture;
   readonly derivatives: DataTexture;
   /** The main thread's computation (no worker, or the worker given up), or null. */
@@ -64,6 +65,18 @@ export class CpuFieldTextures {
     if (useWorker) {
       this.worker = new FieldWorker(spectrum, 'JS worker', (reply) => this.receive(reply), (fault) => this.runOnMainThread(fault));
     }
+  }
+
+  /** It runs no fragment passes. */
+  readonly passCount = 0;
+
+  /** Its fields are the queries' too (CascadeQueryFields reads them where it can). */
+  get cpuFields(): CpuFieldsForQueries {
+    return this;
+  }
+
+  shownFieldsOnCpu(): { displacement: Float32Array; derivatives: Float32Array } {
+    return this.shownFields;
   }
 
   /** Whether the fields come from a worker (not given up). */

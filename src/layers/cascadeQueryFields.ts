@@ -18,7 +18,7 @@
  * and its copies.
  */
 import { CpuWaveFields } from '../fft/cpuWaveFields';
-import type { CpuFieldTextures } from '../fft/cpuFieldTextures';
+import type { CpuFieldsForQueries } from '../fft/fieldSource';
 import { FieldWorker } from '../fft/fieldWorker';
 import { largestFrequency, reducedSpectrum, type InitialSpectrum, type SpectrumOrigin } from '../spectrum/initialSpectrum';
 import type { LayerFieldsOnCpu, LayerQueryFields } from './waveLayer';
@@ -76,7 +76,7 @@ export class CascadeQueryFields {
   /** The spectrum of the queries' CPU copy: the cascade's, or on a grid over QUERY_RESOLUTION a reduced one. */
   private readonly querySpectrum: InitialSpectrum;
   /** The JS path's fields, where they are also the queries' copy (the same spectrum), else null. */
-  private readonly jsFieldsForQueries: CpuFieldTextures | null;
+  private readonly jsFieldsForQueries: CpuFieldsForQueries | null;
   /** The worker that computes the queries' CPU copy where the JS path's worker cannot (made after the first query). */
   private queryWorker: FieldWorker | null = null;
   /** The timer that makes the query worker once the first query came, until it fires; else null. */
@@ -108,8 +108,8 @@ export class CascadeQueryFields {
     private readonly spectrum: InitialSpectrum,
     /** What made `spectrum`: the query worker builds its copy from it. */
     private readonly origin: SpectrumOrigin,
-    /** The JS path's fields of the cascade, or null on the GPU path. */
-    jsFields: CpuFieldTextures | null,
+    /** The backend's fields of the cascade on the CPU (the JS path's), or null (the GPU path). */
+    jsFields: CpuFieldsForQueries | null,
     /** Whether the queries' fields may be computed in a worker (else here, once per time asked). */
     private readonly queryWorkerWanted: boolean,
     /** The copies of the cascade this one replaces, whose provisional copy's arrays it may take over (provisionalCopy). */

@@ -1,26 +1,38 @@
 /**
  * An FFT cascade: one periodic patch of the sea, simulated from its own band of the spectrum
- * (src/spectrum/cascadeBands.ts) by one FFT backend, the GPU's fragment passes
- * (src/fft/gpuWaveFields.ts) or JS (src/fft/cpuFieldTextures.ts, optionally in a worker).
+ * (src/spectrum/cascadeBands.ts) by one FFT backend, an FftFieldSource (src/fft/fieldSource.ts): the
+ * GPU's fragment passes (src/fft/gpuWaveFields.ts) or JS (src/fft/cpuFieldTextures.ts, optionally
+ * in a worker).
  * The queries read a CPU copy of its fields, which cascadeQueryFields.ts keeps.
  *
  * Owns its backend and its queries' copy (with their worker), and frees them in dispose().
  */
 import type { WebGLRenderer } from 'three';
 import { CpuFieldTextures } from '../fft/cpuFieldTextures';
+import type { FftFieldSource } from '../fft/fieldSource';
 import { GpuWaveFields, type GpuPrecision } from '../fft/gpuWaveFields';
 import type { InitialSpectrum, SpectrumOrigin } from '../spectrum/initialSpectrum';
 import { CascadeQueryFields } from './cascadeQueryFields';
 import type { LayerFieldsOnCpu, LayerFrame, LayerQueryFields, WaveLayer } from './waveLayer';
 
-/** Which implementation computes a cascade's fields. */
-export type FftBackend = { kind: 'gpu'; precision: GpuPrecision } | { kind: 'js'; worker: boolean };
+/** Which implementation computes a cascade's fields: makes its FftFieldSource (src/fft/fieldSource.ts). */
+export type FftBackend = (renderer: WebGLRenderer, spectrum: InitialSpectrum) => FftFieldSource;
+
+/** The GPU's fragment passes (src/fft/gpuWaveFields.ts) in `precision`. */
+export function gpuBackend(precision: GpuPrecision): FftBackend {
+  return (renderer, spectrum) => new GpuWaveFields(renderer, spectrum, precision);
+}
+
+/** The JS FFT (src/fft/cpuFieldTextures.ts), in a worker if `worker`. */
+export function jsBackend(worker: boolean): FftBackend {
+  return (renderer, spectrum) => new CpuFieldTextures(renderer, spectrum, worker);
+}
 
 export class FftCascade implements WaveLayer {
   readonly textures;
   readonly frame: LayerFrame;
   readonly movesSideways = true;
-  private readonly backend: GpuWaveFields | CpuFieldTextures;
+  private readonly backend: FftFieldSource;
   /** The CPU copy the queries read, and the fields computed here on demand. */
   private readonly queries: CascadeQueryFields;
 
@@ -35,22 +47,20 @@ export class FftCascade implements WaveLayer {
     /** The cascade this one replaces, whose queries' provisional copy's arrays it may take over. */
     predecessor: FftCascade | null = null,
   ) {
-    this.backend =
-      backend.kind === 'gpu' ? new GpuWaveFields(renderer, spectrum, backend.precision) : new CpuFieldTextures(renderer, spectrum, backend.worker);
-    const jsFields = this.backend instanceof CpuFieldTextures ? this.backend : null;
-    this.queries = new CascadeQueryFields(spectrum, origin, jsFields, queryWorkerWanted, predecessor?.queries ?? null);
+    this.backend = backend(renderer, spectrum);
+    this.queries = new CascadeQueryFields(spectrum, origin, this.backend.cpuFields, queryWorkerWanted, predecessor?.queries ?? null);
     this.textures = { displacement: { value: this.backend.displacement }, derivatives: { value: this.backend.derivatives } };
     this.frame = { size: spectrum.patchSize, origin: [0, 0], periodic: true, resolution: spectrum.resolution };
   }
 
   /** Why the JS path runs on the main thread although a worker was asked for (CpuFieldTextures.workerFault), or null. */
   get workerFault(): string | null {
-    return this.backend instanceof CpuFieldTextures ? this.backend.workerFault : null;
+    return this.backend.workerFault;
   }
 
   /** Fragment passes per update on the GPU, 0 in JS. */
   get passCount(): number {
-    return this.backend instanceof GpuWaveFields ? this.backend.passCount : 0;
+    return this.backend.passCount;
   }
 
   /** The fields at time t (s), computed from t alone; `step` (s) since the last update is for the workers to ask ahead. */
@@ -85,7 +95,7 @@ export class FftCascade implements WaveLayer {
 
   /** The fields the textures show now, on the JS path (no computation); null on the GPU path, which keeps none. */
   shownFieldsOnCpu(): LayerFieldsOnCpu | null {
-    return this.backend instanceof GpuWaveFields ? null : this.backend.shownFields;
+    return this.backend.shownFieldsOnCpu();
   }
 
   dispose(): void {

@@ -1,96 +1,60 @@
 /**
- * The GPU solver of the local waves: one step of src/layers/localWaveModel.ts in fragment passes
- * over two RGBA32F targets that ping-pong (shaders/localWaves/):
- *   prepare (shift, sponge, sources) → log2 N forward FFT passes along x, as many along z →
- *   evolve (turn each mode, form the slopes' spectrum) → inverse FFT passes → the state;
+ * The GPU solver of the local waves: one step of src/layers/localWaveModel.ts in fragment passes,
+ * its transforms run by the GPU FFT engine (src/fft/gpuFft.ts) in float32, on a GpuDevice
+ * (src/device/gpuDevice.ts; WebGL 2 here):
+ *   prepare (shift, sponge, sources) → forward FFT → evolve (turn each mode, form the slopes'
+ *   spectrum) → inverse FFT → the state, an RGBA32F target;
  * and, when asked, unpack into the layer's two field textures. Half floats cannot hold the forward
  * transform (its values reach N²× the heights): without float32 targets the JS solver runs instead.
- * Owns its targets, tables and materials and frees them in dispose().
+ * Owns its device, targets, engine and materials and frees them in dispose().
  */
-import {
-  ClampToEdgeWrapping,
-  DataTexture,
-  FloatType,
-  LinearFilter,
-  NearestFilter,
-  RGBAFormat,
-  RGFormat,
-  WebGLRenderTarget,
-  type ShaderMaterial,
-  type Texture,
-  type WebGLRenderer,
-} from 'three';
-import { FullscreenPass, fullscreenMaterial, runPasses } from '../fft/fullscreenPass';
+import type { Texture, WebGLRenderer } from 'three';
+import type { FieldTarget, PassMaterial } from '../device/gpuDevice';
+import { WebGL2Device } from '../device/webgl2/webgl2Device';
+import { GpuFft } from '../fft/gpuFft';
 import { shaderSource } from '../shaderSource';
 import { GRAVITY } from '../spectrum/dispersion';
 import { MAX_IMPULSES_PER_STEP, SPONGE_WIDTH_FRACTION, spongeEdgeRate, type LocalWaveGrid, type LocalWaveStep } from './localWaveModel';
-
-/**
- * Whether the context renders in software (SwiftShader, llvmpipe, …). There each fragment pass
- * costs ~0.6 ms of fixed overhead, and a step's 31 passes at N = 128 take 30 ms where the JS solver
- * takes 4 ms (measured under SwiftShader on 2 cores); on a GPU the passes take well under 1 ms.
- */
-export function isSoftwareRenderer(renderer: WebGLRenderer): boolean {
-  const gl = renderer.getContext();
-  // Asked once per context: getParameter may wait for the GPU to finish its queue.
-  let software = softwareContexts.get(gl);
-  if (software === undefined) {
-    const info = gl.getExtension('WEBGL_debug_renderer_info');
-    software = /swiftshader|llvmpipe|softpipe|software/i.test(String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER)));
-    softwareContexts.set(gl, software);
-  }
-  return software;
-}
-
-const softwareContexts = new WeakMap<WebGLRenderingContext | WebGL2RenderingContext, boolean>();
 
 /** Deep water in the shader: tanh(min(k·d, 20)) is 1 in float32. */
 const DEEP = 1e6;
 
 export class GpuLocalWaves {
   /** The layer's fields after unpack(): (0, η_s, 0, 0) and (∂η_s/∂x, ∂η_s/∂z, 0, 0). */
-  readonly output: WebGLRenderTarget;
-  private readonly targets: [WebGLRenderTarget, WebGLRenderTarget];
-  private readonly twiddles: DataTexture;
-  private readonly prepare: ShaderMaterial;
-  private readonly evolve: ShaderMaterial;
-  private readonly fftAlongX: ShaderMaterial;
-  private readonly fftAlongZ: ShaderMaterial;
-  private readonly unpacker: ShaderMaterial;
-  private readonly pass = new FullscreenPass();
+  private readonly output: FieldTarget;
+  /** (η_s, ψ, ∂η_s/∂x, ∂η_s/∂z) after the last step. */
+  private readonly state: FieldTarget;
+  private readonly device: WebGL2Device;
+  private readonly fft: GpuFft;
+  private readonly prepare: PassMaterial;
+  private readonly evolve: PassMaterial;
+  private readonly storeState: PassMaterial;
+  private readonly unpacker: PassMaterial;
   /** Fragment passes per step. */
   readonly passCount: number;
 
   constructor(
-    private readonly renderer: WebGLRenderer,
+    renderer: WebGLRenderer,
     readonly grid: LocalWaveGrid,
   ) {
     const n = grid.resolution;
-    const stateTarget = () =>
-      new WebGLRenderTarget(n, n, { type: FloatType, format: RGBAFormat, depthBuffer: false, minFilter: NearestFilter, magFilter: NearestFilter, generateMipmaps: false });
-    this.targets = [stateTarget(), stateTarget()];
-    const filterable = renderer.extensions.has('OES_texture_float_linear');
+    const device = (this.device = new WebGL2Device(renderer));
+    // Made first: it throws if the device cannot render to its layered framebuffer.
+    try {
+      this.fft = new GpuFft(device, { size: n, precision: 'float32' });
+    } catch (error) {
+      device.dispose();
+      throw error;
+    }
+    this.state = device.createFieldTarget({ size: n, precision: 'float32' });
     // Clamped, so that outside the grid the surface samples the edge texels, which are held at 0.
-    this.output = new WebGLRenderTarget(n, n, {
-      count: 2,
-      type: FloatType,
-      format: RGBAFormat,
-      depthBuffer: false,
-      wrapS: ClampToEdgeWrapping,
-      wrapT: ClampToEdgeWrapping,
-      minFilter: filterable ? LinearFilter : NearestFilter,
-      magFilter: filterable ? LinearFilter : NearestFilter,
-      generateMipmaps: false,
-    });
-    const table = new Float32Array(2 * n);
-    for (let m = 0; m < n; m++) [table[2 * m], table[2 * m + 1]] = [Math.cos((2 * Math.PI * m) / n), Math.sin((2 * Math.PI * m) / n)];
-    this.twiddles = new DataTexture(table, n, 1, RGFormat, FloatType);
-    this.twiddles.needsUpdate = true;
-
-    this.prepare = fullscreenMaterial(
+    this.output = device.createFieldTarget({ size: n, precision: 'float32', count: 2, sampling: 'clamped' });
+    const sizeLog2 = { value: this.fft.sizeLog2 };
+    this.prepare = device.passMaterial(
       shaderSource('localWaves/prepare.frag'),
       {
-        tState: { value: null },
+        tState: { value: this.state.textures[0] },
+        sizeLog2,
         shift: { value: [0, 0] },
         dt: { value: 0 },
         cellSize: { value: grid.cellSize },
@@ -102,54 +66,52 @@ export class GpuLocalWaves {
       },
       { MAX_IMPULSES: MAX_IMPULSES_PER_STEP },
     );
-    const fft = (alongZ: boolean) =>
-      fullscreenMaterial(
-        shaderSource('localWaves/fftPass.frag'),
-        { tInput: { value: null }, tTwiddles: { value: this.twiddles }, subtransformLog2: { value: 0 }, direction: { value: 1 } },
-        { ALONG_Z: Number(alongZ) },
-      );
-    this.fftAlongX = fft(false);
-    this.fftAlongZ = fft(true);
-    this.evolve = fullscreenMaterial(shaderSource('localWaves/evolve.frag'), {
-      tSpectrum: { value: null },
+    // Prepared into set 0; the forward transform ends in FORWARD, evolve writes the other set,
+    // whose inverse transform ends in INVERSE.
+    const forward = this.fft.resultOf(0);
+    const inverse = this.fft.resultOf(forward === 0 ? 1 : 0);
+    this.evolve = device.passMaterial(shaderSource('localWaves/evolve.frag'), {
+      tSpectrum: { value: this.fft.sets[forward].textures[0] },
+      sizeLog2,
       dt: { value: 0 },
       gridSize: { value: n * grid.cellSize },
       depth: { value: Math.min(grid.depth, DEEP) },
       gravity: { value: GRAVITY },
     });
-    this.unpacker = fullscreenMaterial(shaderSource('localWaves/unpack.frag'), { tState: { value: null } });
-    this.passCount = 3 + 4 * Math.log2(n);
+    this.storeState = device.passMaterial(shaderSource('localWaves/state.frag'), { tSpectra0: { value: this.fft.sets[inverse].textures[0] }, sizeLog2 });
+    this.unpacker = device.passMaterial(shaderSource('localWaves/unpack.frag'), { tState: { value: this.state.textures[0] } });
+    this.passCount = 3 + 2 * this.fft.passCount;
   }
 
   get displacement(): Texture {
     return this.output.textures[0];
   }
 
+  /** Reads the state, (η_s, ψ, ∂η_s/∂x, ∂η_s/∂z) a texel, into `into` (4·N² floats), waiting for the GPU. */
+  readState(into: Float32Array): void {
+    this.device.readBack(this.state, into);
+  }
+
+  /** As readState, without waiting: resolves once `into` holds it; rejects if the context was lost. */
+  readStateLater(into: Float32Array): Promise<void> {
+    return this.device.readBackLater(this.state, into);
+  }
+
   get derivatives(): Texture {
     return this.output.textures[1];
   }
 
-  /** The state after the last step, (η_s, ψ, ∂η_s/∂x, ∂η_s/∂z), for read-back. */
-  get state(): WebGLRenderTarget {
-    return this.targets[0];
-  }
-
   /** Clears the sea on the grid. */
   clear(): void {
-    runPasses(this.renderer, () => {
-      for (const target of [...this.targets, this.output]) {
-        this.renderer.setRenderTarget(target);
-        this.renderer.setClearColor(0x000000, 0);
-        this.renderer.clear(true, false, false);
-      }
+    this.device.runPasses(() => {
+      for (const target of [this.state, this.output]) this.device.clear(target);
     });
   }
 
-  /** One step; the state ends in targets[0], as it began. */
+  /** One step: from `state` to `state`. */
   step({ shiftX, shiftZ, impulses, dt }: LocalWaveStep): void {
     if (impulses.length > MAX_IMPULSES_PER_STEP) throw new RangeError(`GpuLocalWaves.step: at most ${MAX_IMPULSES_PER_STEP} impulses per step`);
     const u = this.prepare.uniforms;
-    u.tState.value = this.targets[0].texture;
     u.shift.value = [shiftX, shiftZ];
     u.dt.value = dt;
     u.impulseCount.value = impulses.length;
@@ -158,47 +120,25 @@ export class GpuLocalWaves {
       u.impulseShape.value.set([impulse.halfLength, impulse.halfBeam, impulse.height, 0], 4 * s);
     });
     this.evolve.uniforms.dt.value = dt;
-    const [a, b] = this.targets;
-    runPasses(this.renderer, () => {
-      this.draw(this.prepare, b);
-      // Forward: 2·log2 N passes from b end in b; evolve b → a; inverse: a … a.
-      this.transform(b, a, -1);
-      this.evolve.uniforms.tSpectrum.value = b.texture;
-      this.draw(this.evolve, a);
-      this.transform(a, b, 1);
+    this.device.runPasses(() => {
+      this.fft.load(this.prepare, 0);
+      const forward = this.fft.transform(0);
+      const spectra = forward === 0 ? 1 : 0;
+      this.fft.load(this.evolve, spectra);
+      this.fft.transform(spectra);
+      this.device.draw(this.storeState, this.state);
     });
   }
 
   /** Writes the state into the layer's field textures. */
   unpack(): void {
-    this.unpacker.uniforms.tState.value = this.targets[0].texture;
-    runPasses(this.renderer, () => this.draw(this.unpacker, this.output));
+    this.device.runPasses(() => this.device.draw(this.unpacker, this.output));
   }
 
   dispose(): void {
-    for (const target of [...this.targets, this.output]) target.dispose();
-    this.twiddles.dispose();
-    for (const material of [this.prepare, this.evolve, this.fftAlongX, this.fftAlongZ, this.unpacker]) material.dispose();
-    this.pass.dispose();
-  }
-
-  /** A 2D FFT of `data` in place, using `spare` to ping-pong (an even number of passes). */
-  private transform(data: WebGLRenderTarget, spare: WebGLRenderTarget, direction: 1 | -1): void {
-    const passes = Math.log2(this.grid.resolution);
-    let [source, target] = [data, spare];
-    for (const material of [this.fftAlongX, this.fftAlongZ]) {
-      material.uniforms.direction.value = direction;
-      for (let s = 0; s < passes; s++) {
-        material.uniforms.tInput.value = source.texture;
-        material.uniforms.subtransformLog2.value = s;
-        this.draw(material, target);
-        [source, target] = [target, source];
-      }
-    }
-  }
-
-  private draw(material: ShaderMaterial, target: WebGLRenderTarget): void {
-    this.renderer.setRenderTarget(target);
-    this.pass.draw(this.renderer, material);
+    for (const target of [this.state, this.output]) target.dispose();
+    this.fft.dispose();
+    for (const material of [this.prepare, this.evolve, this.storeState, this.unpacker]) material.dispose();
+    this.device.dispose();
   }
 }

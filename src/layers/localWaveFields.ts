@@ -124,7 +124,7 @@ class GpuLocalWaveFields implements LocalWaveFields {
   private disposed = false;
 
   constructor(
-    private readonly renderer: WebGLRenderer,
+    renderer: WebGLRenderer,
     private readonly grid: LocalWaveGrid,
   ) {
     this.solver = new GpuLocalWaves(renderer, grid);
@@ -152,7 +152,7 @@ class GpuLocalWaveFields implements LocalWaveFields {
     if (this.readBackOf !== this.published) {
       this.readBackOf = this.published;
       const state = this.cpuFields.state;
-      if (active) this.renderer.readRenderTargetPixels(this.solver.state, 0, 0, n, n, state);
+      if (active) this.solver.readState(state);
       else state.fill(0);
       // The state's texels are (η_s, ψ, ∂η_s/∂x, ∂η_s/∂z).
       toLayerFields(this.cpuFields, state, state.subarray(2), state.subarray(3), 4);
@@ -183,7 +183,7 @@ class GpuLocalWaveFields implements LocalWaveFields {
       const publish = this.published;
       const target = (this.pendingRead = this.spareState ?? new Float32Array(4 * n * n));
       this.spareState = null;
-      this.renderer.readRenderTargetPixelsAsync(this.solver.state, 0, 0, n, n, target).then(
+      this.solver.readStateLater(target).then(
         () => {
           this.pendingRead = null;
           // Disposed meanwhile, or a read-back that waited has come first: nothing newer here.

@@ -16,7 +16,7 @@
  * good values. A change of a shader-only parameter (choppiness) rebuilds nothing. Owns the layers
  * and frees them in dispose().
  */
-import { FloatType, HalfFloatType, type WebGLRenderer } from 'three';
+import type { WebGLRenderer } from 'three';
 import { gpuSupport, type GpuPrecision } from '../fft/gpuWaveFields';
 import {
   ParameterError,
@@ -26,8 +26,8 @@ import {
 } from '../parameters/parameters';
 import { checkOptionNames } from '../parameters/options';
 import { createCascadeSpectra, type InitialSpectrum } from '../spectrum/initialSpectrum';
-import { FftCascade, type FftBackend } from './fftCascade';
-import { isSoftwareRenderer } from './gpuLocalWaves';
+import { isSoftwareRenderer } from '../device/webgl2/webgl2Device';
+import { FftCascade, gpuBackend, jsBackend, type FftBackend } from './fftCascade';
 import { LOCAL_WAVES_OPTION_KEYS, LocalWaves, type LocalWavesOptions } from './localWaves';
 import { orderLayers, type WaveLayer } from './waveLayer';
 import { calibrateFoam, jacobianCovariance, type FoamCalibration, type JacobianCovariance } from './foamModel';
@@ -337,7 +337,7 @@ export class OceanSimulation {
     if (this.currentFoam) this.retire([this.currentFoam]);
     const precision = this.gpuPrecision;
     const periodic = this.currentLayers.filter((layer) => layer.frame.periodic);
-    this.currentFoam = new WhitecapFoam(this.renderer, periodic, precision === null ? null : precision === 'float32' ? FloatType : HalfFloatType);
+    this.currentFoam = new WhitecapFoam(this.renderer, periodic, precision);
     this.madeSinceUpdate.add(this.currentFoam);
   }
 
@@ -369,7 +369,7 @@ const warned = new Set<string>();
 const PATH_NAMES: Record<SimulationPath, string> = { 'gpu-rgba32f': 'GPU RGBA32F', 'gpu-rgba16f': 'GPU RGBA16F', js: 'JS', 'js-worker': 'JS (worker)' };
 
 function backendFor(precision: GpuPrecision | null, worker: boolean): FftBackend {
-  return precision ? { kind: 'gpu', precision } : { kind: 'js', worker };
+  return precision ? gpuBackend(precision) : jsBackend(worker);
 }
 
 /** The names SimulationOptions has: any other is a misspelling. */

@@ -18,22 +18,9 @@
  * first update, time going back, a long jump) rebuilds it from nothing over the warm-up window,
  * which recomputes the layers at the warm-up's times (GPU), or their CPU fields (JS).
  */
-import {
-  DataTexture,
-  DataUtils,
-  FloatType,
-  HalfFloatType,
-  LinearFilter,
-  LinearMipmapLinearFilter,
-  NearestFilter,
-  RedFormat,
-  RepeatWrapping,
-  WebGLRenderTarget,
-  type ShaderMaterial,
-  type Texture,
-  type WebGLRenderer,
-} from 'three';
-import { FullscreenPass, fullscreenMaterial, periodicFieldTarget, runPasses } from '../fft/fullscreenPass';
+import { DataTexture, FloatType, LinearFilter, LinearMipmapLinearFilter, NearestFilter, RedFormat, RepeatWrapping, type Texture, type WebGLRenderer } from 'three';
+import type { FieldTarget, GpuDevice, GpuPrecision, PassMaterial } from '../device/gpuDevice';
+import { WebGL2Device } from '../device/webgl2/webgl2Device';
 import { shaderSource, withLayerCount } from '../shaderSource';
 import { CpuFoamField, foamCreationRate, foamSchedule, foamStep, type CascadeOnCpu, type FoamCalibration } from './foamModel';
 import type { LayerFrame, WaveLayer } from './waveLayer';
@@ -76,17 +63,18 @@ export class WhitecapFoam {
   constructor(
     renderer: WebGLRenderer,
     private readonly layers: readonly WaveLayer[],
-    gpuType: typeof FloatType | typeof HalfFloatType | null,
+    /** The GPU path's float type (the cascades'), or null for the JS path. */
+    gpuPrecision: GpuPrecision | null,
   ) {
     if (layers.length === 0 || layers.some((layer, i) => !layer.frame.periodic || (i > 0 && layer.frame.size < layers[i - 1].frame.size))) {
       throw new RangeError('WhitecapFoam: its layers are periodic ones, from the smallest patch to the largest (orderLayers)');
     }
     const largest = layers[layers.length - 1].frame;
     this.frame = { size: largest.size, origin: [0, 0], periodic: true, resolution: largest.resolution };
-    this.producer = gpuType === null ? new JsFoam(renderer, this.frame) : new GpuFoam(renderer, layers, this.frame, gpuType);
+    this.producer = gpuPrecision === null ? new JsFoam(renderer, this.frame) : new GpuFoam(new WebGL2Device(renderer), layers, this.frame, gpuPrecision);
     this.texture = this.producer.texture;
     // Removed in dispose(); guarded for canvas-like objects without listeners, as the sky is.
-    this.canvas = gpuType === null ? null : (renderer.domElement as EventTarget | undefined) ?? null;
+    this.canvas = gpuPrecision === null ? null : (renderer.domElement as EventTarget | undefined) ?? null;
     this.canvas?.addEventListener?.('webglcontextrestored', this.onContextRestored);
   }
 
@@ -121,26 +109,25 @@ export class WhitecapFoam {
   }
 }
 
-/** The foam passes on the GPU: ping-pong between two targets of the layers' float type. */
+/** The foam passes on the GPU: ping-pong between two targets of the layers' float type. Owns its device. */
 class GpuFoam {
   readonly texture: { value: Texture | null };
-  private readonly targets: [WebGLRenderTarget, WebGLRenderTarget];
-  private readonly material: ShaderMaterial;
-  private readonly pass = new FullscreenPass();
+  private readonly targets: [FieldTarget, FieldTarget];
+  private readonly material: PassMaterial;
 
   constructor(
-    private readonly renderer: WebGLRenderer,
+    private readonly device: GpuDevice,
     layers: readonly WaveLayer[],
     frame: LayerFrame,
-    type: typeof FloatType | typeof HalfFloatType,
+    precision: GpuPrecision,
   ) {
     const m = frame.resolution;
     // Red only: the surface reads the coverage for every pixel (ocean.frag).
-    const target = () => periodicFieldTarget(renderer, m, type, 1, RedFormat);
+    const target = () => device.createFieldTarget({ size: m, precision, channels: 'red', sampling: 'periodic' });
     this.targets = [target(), target()];
-    this.targets.forEach((t) => (t.texture.name = 'foam'));
-    this.texture = { value: this.targets[0].texture };
-    this.material = fullscreenMaterial(withLayerCount(shaderSource('foam/whitecapFoam.frag'), layers.length), {
+    this.targets.forEach((t) => (t.textures[0].name = 'foam'));
+    this.texture = { value: this.targets[0].textures[0] };
+    this.material = device.passMaterial(withLayerCount(shaderSource('foam/whitecapFoam.frag'), layers.length), {
       tPreviousFoam: { value: null },
       tLayerDisplacement: { value: layers.map((layer) => layer.textures.displacement.value) },
       tLayerDerivatives: { value: layers.map((layer) => layer.textures.derivatives.value) },
@@ -172,34 +159,30 @@ class GpuFoam {
   }
 
   coverageOnCpu(): Float32Array {
-    const target = this.targets.find((t) => t.texture === this.texture.value)!;
-    const m = target.width;
-    const texels = target.texture.type === HalfFloatType ? new Uint16Array(m * m) : new Float32Array(m * m);
-    this.renderer.readRenderTargetPixels(target, 0, 0, m, m, texels);
-    return texels instanceof Uint16Array ? Float32Array.from(texels, DataUtils.fromHalfFloat) : texels;
+    const target = this.targets.find((t) => t.textures[0] === this.texture.value)!;
+    const coverage = new Float32Array(target.size * target.size);
+    this.device.readBack(target, coverage);
+    return coverage;
   }
 
   /** The pass, from the target shown to the other one, which is then shown. */
   private draw(choppiness: number, { jacobianStart, jacobianFull }: Pick<FoamCalibration, 'jacobianStart' | 'jacobianFull'>, decay: number, gain: number): void {
-    const [read, write] = this.texture.value === this.targets[0].texture ? this.targets : [this.targets[1], this.targets[0]];
+    const [read, write] = this.texture.value === this.targets[0].textures[0] ? this.targets : [this.targets[1], this.targets[0]];
     const u = this.material.uniforms;
-    u.tPreviousFoam.value = read.texture;
+    u.tPreviousFoam.value = read.textures[0];
     u.choppiness.value = choppiness;
     u.jacobianStart.value = jacobianStart;
     u.jacobianFull.value = jacobianFull;
     u.decay.value = decay;
     u.gain.value = gain;
-    runPasses(this.renderer, () => {
-      this.renderer.setRenderTarget(write);
-      this.pass.draw(this.renderer, this.material);
-    });
-    this.texture.value = write.texture;
+    this.device.runPasses(() => this.device.draw(this.material, write));
+    this.texture.value = write.textures[0];
   }
 
   dispose(): void {
     for (const target of this.targets) target.dispose();
     this.material.dispose();
-    this.pass.dispose();
+    this.device.dispose();
   }
 }
 

@@ -9,7 +9,7 @@ import { FloatType, PerspectiveCamera, RGBAFormat, Scene, WebGLRenderer, WebGLRe
 import { allFinite, anyNumber, anyText, anyValue } from '../../arbitraries';
 import '../../../src/embed/register';
 import { FFT_OCEAN_ATTRIBUTES } from '../../../src/embed/fftOceanElement';
-import { FullscreenPass, fullscreenMaterial, runPasses } from '../../../src/fft/fullscreenPass';
+import { FullscreenPass, fullscreenMaterial, runPasses } from '../../../src/device/webgl2/fullscreenPass';
 import { Ocean } from '../../../src/ocean';
 import { DisposedError, ParameterError } from '../../../src/parameters/options';
 import { DEFAULT_PARAMETERS, SIMULATION_OPTIONS } from '../../../src/parameters/parameters';

@@ -1,28 +1,11 @@
 /**
- * What every GPU simulation pass shares: one triangle that covers the render target (each fragment
+ * What every GPU pass on WebGL 2 shares (WebGL2Device): one triangle that covers the render target (each fragment
  * is one texel, shaders/fft/fullscreen.vert), GLSL 3 materials with no depth, and a way to run
  * passes without disturbing the caller's renderer state (its render target, and WebXR, which
  * would otherwise draw each pass once per eye).
  */
-import {
-  BufferAttribute,
-  BufferGeometry,
-  GLSL3,
-  HalfFloatType,
-  LinearFilter,
-  LinearMipmapLinearFilter,
-  Mesh,
-  NearestFilter,
-  OrthographicCamera,
-  RepeatWrapping,
-  RedFormat,
-  RGBAFormat,
-  ShaderMaterial,
-  WebGLRenderTarget,
-  type FloatType,
-  type WebGLRenderer,
-} from 'three';
-import { shaderSource } from '../shaderSource';
+import { BufferAttribute, BufferGeometry, GLSL3, Mesh, OrthographicCamera, ShaderMaterial, type WebGLRenderer } from 'three';
+import { shaderSource } from '../../shaderSource';
 
 export class FullscreenPass {
   private readonly mesh: Mesh;
@@ -76,31 +59,4 @@ export function runPasses(renderer: WebGLRenderer, passes: () => void): void {
     renderer.xr.enabled = previousXr;
     renderer.setRenderTarget(previousTarget);
   }
-}
-
-/**
- * A square float target whose `count` textures a surface samples as periodic fields: REPEAT
- * wrapping, and where the type filters linearly, linear filtering with mipmaps made after each
- * pass (float32 filters only with OES_texture_float_linear; half floats always do). RGBA, or
- * red only for a field of one number (a quarter of the texels' bytes for each lookup to read).
- */
-export function periodicFieldTarget(
-  renderer: WebGLRenderer,
-  size: number,
-  type: typeof FloatType | typeof HalfFloatType,
-  count = 1,
-  format: typeof RGBAFormat | typeof RedFormat = RGBAFormat,
-): WebGLRenderTarget {
-  const filterable = type === HalfFloatType || renderer.extensions.has('OES_texture_float_linear');
-  return new WebGLRenderTarget(size, size, {
-    count,
-    type,
-    format,
-    depthBuffer: false,
-    wrapS: RepeatWrapping,
-    wrapT: RepeatWrapping,
-    magFilter: filterable ? LinearFilter : NearestFilter,
-    minFilter: filterable ? LinearMipmapLinearFilter : NearestFilter,
-    generateMipmaps: filterable,
-  });
 }
