@@ -58,6 +58,9 @@ varying float vCrossDerivative;  // λ·Σ ∂Dx/∂z, see ocean.vert
 varying vec2 vBlend;             // the largest layer's two copies' weights, see ocean.vert
 varying vec2 vBlendSlope;
 varying float vFoam;             // foam coverage, see ocean.vert
+#ifdef HULL_FOAM_LAYER
+uniform sampler2D tHullFoam;     // the hulls' foam coverage in .r (src/layers/hullFoam.ts), over layer HULL_FOAM_LAYER's grid
+#endif
 varying vec3 vFromEye;                // see ocean.vert
 centroid varying vec2 vRestFromEye;   // see ocean.vert
 uniform vec2 foamPatternOrigin;       // the eye's (x, z) modulo FOAM_PATTERN_PERIOD (OceanMaterial.setEye)
@@ -182,7 +185,14 @@ void main() {
 #ifdef SEABED
   pixelFoam = min(pixelFoam + vShoreFoam, 1.0);
 #endif
-  float foamCoverage = max(mix(vFoam, pixelFoam, foamShown), edgeFoam);
+  float foamCoverage = mix(vFoam, pixelFoam, foamShown);
+#ifdef HULL_FOAM_LAYER
+  // The foam of hulls under way (src/layers/hullFoam.ts), over the local waves' grid, joined to the
+  // whitecaps' as two independent coverages are: 1 − (1 − a)(1 − b).
+  float hullFoam = texture(tHullFoam, vLayerUv[HULL_FOAM_LAYER]).r;
+  foamCoverage = 1.0 - (1.0 - foamCoverage) * (1.0 - hullFoam);
+#endif
+  foamCoverage = max(foamCoverage, edgeFoam);
   // Most of the sea has no foam: it pays for the foam's light only where there is (the pattern, two
   // texture lookups, is taken above for every pixel: its fwidth needs the neighbours).
   if (foamCoverage > FOAM_VISIBLE) {
