@@ -68,6 +68,7 @@ function ramp(x: number): number {
 export class HullFoam {
   /** Coverage in the red channel, texel (i, j) over the local waves' texel (i, j). */
   readonly texture: DataTexture;
+  /** Coverage in [0, 1] per texel, texel (i, j) at index j·N + i, at the grid's origin + (i, j)·cellSize. */
   readonly coverage: Float32Array;
   private readonly bytes: Uint8Array;
   /** True while every texel is 0 (no fading, stamping or upload to do). */
