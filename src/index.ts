@@ -30,6 +30,7 @@ export type { FftFieldSource, CpuFieldsForQueries } from './fft/fieldSource';
 export { FloatingBody, SEA_WATER_DENSITY, type FloatingBodyOptions, type WaterSurface } from './layers/floatingBody';
 export { WhitecapFoam, type FoamSettings } from './layers/whitecapFoam';
 export { calibrateFoam, jacobianCovariance, whitecapFraction, type FoamCalibration, type JacobianCovariance } from './layers/foamModel';
+export { HullFoam } from './layers/hullFoam';
 export { LocalWaves, type LocalWavesOptions, type DropOptions, type HullShape, type HullPose, type PressureSource } from './layers/localWaves';
 export { CpuWaveFields } from './fft/cpuWaveFields';
 export { GpuWaveFields, supportedGpuPrecision, type GpuPrecision } from './fft/gpuWaveFields';

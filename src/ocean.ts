@@ -160,6 +160,7 @@ export class Ocean extends Object3D<OceanEventMap> {
         surfaceBound: 6 * this.heightRms + 1,
         waterHeightAt: (x: number, z: number) => heightAt(sim.layers, sim.parameters.choppiness, this.currentTime, x, z, this.preparedShore()),
         shore: this.preparedShore(),
+        hullFoam: sim.localWaves,
       }),
       shading,
     );

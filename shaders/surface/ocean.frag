@@ -60,6 +60,9 @@ varying float vCrossDerivative;  // λ·Σ ∂Dx/∂z, see ocean.vert
 varying vec2 vBlend;             // the largest layer's two copies' weights, see ocean.vert
 varying vec2 vBlendSlope;
 varying float vFoam;             // foam coverage, see ocean.vert
+#ifdef HULL_FOAM_LAYER
+uniform sampler2D tHullFoam;     // the hulls' foam coverage in .r (src/layers/hullFoam.ts), over layer HULL_FOAM_LAYER's grid
+#endif
 varying vec3 vFromEye;                // see ocean.vert
 centroid varying vec2 vRestFromEye;   // see ocean.vert
 uniform vec2 foamPatternOrigin;       // the eye's (x, z) modulo FOAM_PATTERN_PERIOD (OceanMaterial.setEye)
@@ -185,7 +188,14 @@ void main() {
   pixelFoam = min(pixelFoam + vShoreFoam, 1.0);
 #endif
   pixelFoam = streakedFoam(tFoam, largestUv, vBlend, layerSizes[LAYER_COUNT - 1], pixelFoam);
-  float foamCoverage = max(mix(streakedMeanFoam(vFoam), pixelFoam, foamShown), edgeFoam);
+  float foamCoverage = mix(streakedMeanFoam(vFoam), pixelFoam, foamShown);
+#ifdef HULL_FOAM_LAYER
+  // The foam of hulls under way (src/layers/hullFoam.ts), over the local waves' grid, joined to the
+  // whitecaps' as two independent coverages are: 1 − (1 − a)(1 − b).
+  float hullFoam = texture(tHullFoam, vLayerUv[HULL_FOAM_LAYER]).r;
+  foamCoverage = 1.0 - (1.0 - foamCoverage) * (1.0 - hullFoam);
+#endif
+  foamCoverage = max(foamCoverage, edgeFoam);
   // Most of the sea has no foam: it pays for the foam's light only where there is (the pattern, two
   // texture lookups, is taken above for every pixel: its fwidth needs the neighbours).
   if (foamCoverage > FOAM_VISIBLE) {

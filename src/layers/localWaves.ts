@@ -23,6 +23,7 @@ import type { WebGLRenderer } from 'three';
 import { checkOptionNames, DisposedError, ParameterError } from '../parameters/options';
 import { localWaveFields, type LocalWaveFields } from './localWaveFields';
 import { MAX_IMPULSES_PER_STEP, type HeightImpulse, type LocalWaveGrid } from './localWaveModel';
+import { HullFoam, hullFoamCoverage } from './hullFoam';
 import { heightAt } from './surfaceQuery';
 import type { PathPreference } from './oceanSimulation';
 import type { LayerFieldsOnCpu, LayerFrame, LayerQueryFields, WaveLayer } from './waveLayer';
@@ -110,6 +111,8 @@ interface Hull {
 export class LocalWaves implements WaveLayer {
   readonly textures;
   readonly grid: LocalWaveGrid;
+  /** The foam the hulls under way make (hullFoam.ts), over the grid's texels; the surface draws it. */
+  readonly foam: HullFoam;
   /** The local waves move the surface only up and down. */
   readonly movesSideways = false;
   private readonly solved: LocalWaveFields;
@@ -123,6 +126,9 @@ export class LocalWaves implements WaveLayer {
   private readonly pendingDrops: HeightImpulse[] = [];
   private readonly hulls: Hull[] = [];
   private quietFor = Infinity;
+  /** The whitecaps' amount and persistence τ (s), which the hulls' foam shares (setFoam). */
+  private foamAmount = 1;
+  private foamPersistence = 3;
   /** The time of the last update, null before the first. */
   private time: number | null = null;
   private disposed = false;
@@ -145,6 +151,7 @@ export class LocalWaves implements WaveLayer {
     this.grid = { resolution, cellSize, depth };
     this.solved = localWaveFields(renderer, this.grid, useGpu);
     this.textures = this.solved.textures;
+    this.foam = new HullFoam(resolution, cellSize);
     this.originTexel = this.originFor(this.target);
     this.currentFrame = { size: resolution * cellSize, origin: [0, 0], periodic: false, resolution };
     this.updateFrameOrigin();
@@ -208,6 +215,19 @@ export class LocalWaves implements WaveLayer {
     const { x, z } = this.followPath(t);
     if (!Number.isFinite(x) || !Number.isFinite(z)) throw new ParameterError(`the followed path at t = ${t}`, [x, z], 'finite coordinates in metres');
     this.target = [x, z];
+  }
+
+  /**
+   * How much foam the hulls make (a factor, 0 none, from 0 to 10) and how long it lasts (the
+   * persistence τ, s, from 0.1 to 30): the Ocean gives its foamAmount and foamPersistence, so the
+   * hulls' foam fades as the whitecaps' does (hullFoam.ts).
+   */
+  setFoam(amount: number, persistence: number): void {
+    this.checkAlive('setFoam');
+    if (!(amount >= 0 && amount <= 10)) throw new ParameterError('hull foam amount', amount, 'a factor from 0 to 10');
+    if (!(persistence >= 0.1 && persistence <= 30)) throw new ParameterError('hull foam persistence', persistence, 'seconds from 0.1 to 30');
+    this.foamAmount = amount;
+    this.foamPersistence = persistence;
   }
 
   /** Where the camera is, for a grid that follows it (Ocean calls this before each update). */
@@ -284,7 +304,13 @@ export class LocalWaves implements WaveLayer {
       return;
     }
     this.advance(dt);
+    this.publish();
+  }
+
+  /** The textures show the solver's state and the foam. */
+  private publish(): void {
     this.solved.publish(this.active);
+    this.foam.publish();
   }
 
   /**
@@ -308,7 +334,7 @@ export class LocalWaves implements WaveLayer {
       this.advance(WARM_UP_STEP);
     }
     this.quietFor = 0;
-    this.solved.publish(this.active);
+    this.publish();
   }
 
   /** Steps the waves by dt, with the hulls moving from where they pressed to their new poses. */
@@ -321,6 +347,8 @@ export class LocalWaves implements WaveLayer {
       const origin: [number, number] = s === substeps ? targetOrigin : this.originTexel; // the grid moves once, in the last sub-step
       const shift = [origin[0] - this.originTexel[0], origin[1] - this.originTexel[1]];
       this.originTexel = origin;
+      this.foam.shift(shift[0], shift[1]);
+      this.foam.fade(dt / substeps, this.foamPersistence);
       const impulses: HeightImpulse[] = s === 1 ? this.pendingDrops.splice(0).map((drop) => this.inGrid(drop)) : [];
       this.hulls.forEach((hull, h) => {
         if (hull.removed) {
@@ -329,6 +357,7 @@ export class LocalWaves implements WaveLayer {
         }
         const pose = interpolatePose(starts[h], hull.pose, fraction);
         if (samePose(pose, hull.applied)) return;
+        this.stampFoam(hull, pose, dt / substeps);
         impulses.push(this.hullImpulse(hull.shape, hull.applied, -1), this.hullImpulse(hull.shape, pose, 1));
         hull.applied = pose;
       });
@@ -368,13 +397,15 @@ export class LocalWaves implements WaveLayer {
   dispose(): void {
     this.disposed = true;
     this.solved.dispose();
+    this.foam.dispose();
   }
 
   /** Clears every wave (the hulls stay, pressing from their next step on; stones not yet dropped still fall). */
   clear(): void {
     for (const hull of this.hulls) hull.applied = hull.pose;
     this.solved.clear();
-    this.solved.publish(this.active);
+    this.foam.clear();
+    this.publish();
   }
 
   /** Sub-steps for this update: enough that no hull moves more than a quarter of its length in one. */
@@ -386,6 +417,16 @@ export class LocalWaves implements WaveLayer {
       substeps = Math.max(substeps, Math.ceil(move / (0.25 * Math.min(hull.shape.length, hull.shape.beam * 2))));
     }
     return Math.min(substeps, MAX_SUBSTEPS);
+  }
+
+  /** The breaking zone of a hull that moved from where it pressed to `pose` in dt seconds (hullFoam.ts). */
+  private stampFoam(hull: Hull, pose: PressedPose, dt: number): void {
+    if (dt <= 0) return;
+    const speed = Math.hypot(pose.x - hull.applied.x, pose.z - hull.applied.z) / dt;
+    const { length, beam } = hull.shape;
+    const x = pose.x - this.originTexel[0] * this.grid.cellSize;
+    const z = pose.z - this.originTexel[1] * this.grid.cellSize;
+    this.foam.stamp(x, z, Math.cos(pose.heading), Math.sin(pose.heading), length, beam, hullFoamCoverage(speed, length, this.foamAmount));
   }
 
   private hullImpulse(shape: Hull['shape'], pose: PressedPose, sign: 1 | -1): HeightImpulse {

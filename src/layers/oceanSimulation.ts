@@ -231,11 +231,12 @@ export class OceanSimulation {
   update(t: number): void {
     if (!Number.isFinite(t)) throw new ParameterError('time', t, 'a finite number of seconds');
     const dt = Number.isNaN(this.lastTime) ? 0 : t - this.lastTime;
+    const { choppiness, foamAmount, foamPersistence } = this.currentParameters;
+    this.currentLocalWaves?.setFoam(foamAmount, foamPersistence);
     for (const layer of this.currentLayers) layer.update(t, this.notUpdatedYet.has(layer) ? 0 : dt);
     this.notUpdatedYet.clear();
     this.madeSinceUpdate.clear();
     this.lastTime = t;
-    const { choppiness, foamAmount, foamPersistence } = this.currentParameters;
     this.currentFoam!.update(t, { choppiness, calibration: this.foamCalibration, amount: foamAmount, persistence: foamPersistence });
     this.disposeRetired();
   }

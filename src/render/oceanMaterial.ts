@@ -66,6 +66,7 @@ export class OceanMaterial extends ShaderMaterial {
           layerLodBias: { value: [] as number[] },
           choppiness: { value: 1 },
           tFoam: { value: null },
+          tHullFoam: { value: null },
           patchBlend: { value: new Float32Array(12) },
           foamPatternOrigin: { value: new Vector2() },
           // Streaks and spray (beaufortAppearance.ts; foamStreaks.glsl, spray.glsl): none until bindLayers gives a wind.
@@ -174,6 +175,21 @@ export class OceanMaterial extends ShaderMaterial {
       u.layerLodBias.value[i] = Math.round(Math.log2(finest / (layer.frame.size / layer.frame.resolution)));
     });
     this.blendedSize = layers[layers.length - 1].frame.size;
+  }
+
+  /**
+   * Draws the foam of hulls under way (hullFoam.ts), a coverage over the grid of layer `layerIndex`
+   * (the local waves), or none (−1: the HULL_FOAM_LAYER define is off). Before every draw, after
+   * bindLayers; the define changes only when the local waves come or go.
+   */
+  bindHullFoam(layerIndex: number, texture: Texture | null): void {
+    const layer = texture === null || layerIndex < 0 ? undefined : layerIndex;
+    if (layer !== this.defines.HULL_FOAM_LAYER) {
+      if (layer === undefined) delete this.defines.HULL_FOAM_LAYER;
+      else this.defines.HULL_FOAM_LAYER = layer;
+      this.needsUpdate = true;
+    }
+    this.uniforms.tHullFoam.value = texture;
   }
 
   /**

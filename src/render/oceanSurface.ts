@@ -60,6 +60,8 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
       waterHeightAt?: (x: number, z: number) => number;
       /** The seabed the waves feel (shore.ts), prepared for these layers; null or left out: none. */
       shore?: Shore | null;
+      /** The layer whose grid carries the foam of hulls under way (LocalWaves, hullFoam.ts), one of `layers`; null or left out: none. */
+      hullFoam?: (WaveLayer & { readonly foam: { readonly texture: Texture } }) | null;
     },
     shading: OceanShadingOptions = {},
   ) {
@@ -171,8 +173,9 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
   placeRings(camera: Camera): void {
     const position = camera.getWorldPosition(this.cameraPosition);
     const u = this.material.uniforms;
-    const { layers, choppiness, foam, surfaceBound, waterHeightAt, windSpeed, windDirection, shore } = this.waves();
+    const { layers, choppiness, foam, surfaceBound, waterHeightAt, windSpeed, windDirection, shore, hullFoam } = this.waves();
     this.material.bindLayers(layers, choppiness, foam, windSpeed, windDirection);
+    this.material.bindHullFoam(hullFoam ? layers.indexOf(hullFoam) : -1, hullFoam?.foam.texture ?? null);
     this.material.setEye(position.x, position.z);
     this.material.bindShore(shore ?? null, position.x, position.z);
     this.rings.update(position.x, position.z, position.y, layers, this.cellsPerRing);

@@ -664,6 +664,10 @@ test.describe('the app', () => {
     expect(wake.onCourse).toBeLessThan(3); // where its course puts it (a frame behind at most)
     expect(wake.astern).toBeGreaterThan(0.02);
     expect(wake.astern).toBeGreaterThan(3 * wake.ahead); // waves behind, calm water ahead
+    // And foam along its track, none ahead (hullFoam.ts): 12 m from its centre is 8 m astern, foam
+    // 1.6 s old at 5 m/s, e^(−1.6/3) = 0.59 of its full coverage (Froude number 0.56: full).
+    expect(wake.foamAstern).toBeGreaterThan(0.4);
+    expect(wake.foamAhead).toBe(0);
     await page.evaluate(() => window.oceanApp.panel.gui.open(true));
     await page.locator('[data-key="boat"] input').uncheck();
     expect(await page.evaluate(() => window.oceanApp.boat === null && !window.oceanApp.scene.getObjectByName('boat'))).toBe(true);

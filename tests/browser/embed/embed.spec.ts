@@ -504,6 +504,10 @@ test('boat: a boat circles ahead of the drifting view with a wake behind it; rem
   expect(wake.onCourse).toBeLessThan(1e-6); // a still: exactly where its course puts it
   expect(wake.astern).toBeGreaterThan(0.02);
   expect(wake.astern).toBeGreaterThan(3 * wake.ahead); // waves behind, calm water ahead
+  // And foam along its track, none ahead (hullFoam.ts): 12 m from its centre is 8 m astern, foam
+  // 1.6 s old at 5 m/s, e^(−1.6/3) = 0.59 of its full coverage (Froude number 0.56: full).
+  expect(wake.foamAstern).toBeGreaterThan(0.4);
+  expect(wake.foamAhead).toBe(0);
   const after = await page.evaluate(async () => {
     const el = document.querySelector('fft-ocean')!;
     el.removeAttribute('boat');

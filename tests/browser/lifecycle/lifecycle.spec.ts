@@ -60,10 +60,13 @@ test('50 Ocean create/dispose cycles on one renderer (with their refraction capt
       // The reflection's target has its own test below; left out here, it would add a render per frame.
       const ocean = new Ocean(renderer, { resolution: 32, seed: i, path: i % 2 ? 'js' : 'auto', worker: false, reflections: 'sky' });
       scene.add(ocean);
+      // A hull that moves 3 m in the next half second: it makes waves and foam (hullFoam.ts).
+      const hull = ocean.localWaves!.addPressure({ length: 8, beam: 2.6, draft: 0.6 }, { x: 0, z: -20, heading: 0 });
       ocean.update(1.5 + i);
       renderer.render(scene, camera);
       ocean.setParameters({ windSpeed: 10 + (i % 5) }); // rebuilds the simulation's textures
       ocean.setSun(20 + i, 40); // re-renders the sky cube
+      hull.setPose(3, -20, 0);
       ocean.update(2 + i);
       renderer.render(scene, camera);
       ocean.heightAt(1, 2);
