@@ -3,6 +3,7 @@ import { mkdirSync, writeFileSync } from 'node:fs';
 import type { BeaufortPicture, BeaufortView } from './beaufort';
 import { beaufortWindSpeed } from '../../../src/spectrum/presets';
 import { beaufortAppearance, sprayVisibility } from '../../../src/render/beaufortAppearance';
+import { onePageForFile } from '../shared/sharedPages';
 
 /**
  * The WMO Beaufort scale's descriptions of the sea (WMO-No. 306; the Met Office's "Beaufort wind force
@@ -81,16 +82,8 @@ function rowsLuma({ pixels }: BeaufortPicture, width: number, from: number, to: 
 // One page for the file: each test renders its own seas on it.
 test.describe.configure({ mode: 'serial' });
 let page: Page;
-const errors: string[] = [];
-test.beforeAll(async ({ browser }) => {
-  page = await browser.newPage();
-  page.on('pageerror', (error) => errors.push(error.message));
-  await page.goto('/tests/browser/beaufort/beaufort.html');
-  await expect(page).toHaveTitle('ready');
-});
-test.afterAll(async () => {
-  expect(errors).toEqual([]);
-  await page.close();
+onePageForFile('/tests/browser/beaufort/beaufort.html', (opened) => {
+  page = opened;
 });
 
 test('foam streaks along the wind from force 7, isotropic foam at force 5, a white sea at force 10', async () => {

@@ -1,4 +1,5 @@
 import { expect, test, type Page } from '@playwright/test';
+import { onePageForFile } from '../shared/sharedPages';
 
 // The foam of a hull under way (src/layers/hullFoam.ts), drawn by the real surface in Chromium: a
 // hull given to the local waves runs along +x, seen straight down from 50 m. Foam pixels are told
@@ -8,7 +9,6 @@ import { expect, test, type Page } from '@playwright/test';
 test.describe.configure({ mode: 'serial' });
 
 let page: Page;
-const errors: string[] = [];
 const WIDTH = 480;
 const HEIGHT = 270;
 const HULL = { length: 8, beam: 2.6 };
@@ -20,18 +20,10 @@ const WEDGE = Math.tan(Math.asin(1 / 3));
 
 let ground: number[] = [];
 
-test.beforeAll(async ({ browser }) => {
-  page = await browser.newPage();
-  page.on('pageerror', (error) => errors.push(error.message));
-  await page.goto('/tests/browser/hullFoam/hullFoam.html');
-  await expect(page).toHaveTitle('ready');
+onePageForFile('/tests/browser/hullFoam/hullFoam.html', async (opened) => {
+  page = opened;
   await page.evaluate(([w, h, speed, stopAt]) => window.hullFoamHarness.setup(w, h, speed, stopAt), [WIDTH, HEIGHT, SPEED, STOP_AT]);
   ground = await page.evaluate(() => window.hullFoamHarness.ground());
-});
-
-test.afterAll(async () => {
-  expect(errors).toEqual([]);
-  await page.close();
 });
 
 /** Where a world point lies against a hull whose bow is at x = bow on z = 0 heading +x. */

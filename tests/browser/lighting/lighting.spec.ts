@@ -1,6 +1,7 @@
 import { expect, test, type Page } from '@playwright/test';
 import { mkdirSync, writeFileSync } from 'node:fs';
 import type { ViewRequest, ViewResult } from './lighting';
+import { onePageForFile } from '../shared/sharedPages';
 
 /**
  * The sea's light from the slopes the grid does not show (src/render/seaLighting.ts,
@@ -11,15 +12,9 @@ import type { ViewRequest, ViewResult } from './lighting';
 
 let page: Page;
 test.describe.configure({ mode: 'default' });
-test.beforeAll(async ({ browser }) => {
-  page = await browser.newPage();
-  const errors: string[] = [];
-  page.on('pageerror', (error) => errors.push(error.message));
-  await page.goto('/tests/browser/lighting/lighting.html');
-  await expect(page).toHaveTitle('ready');
-  expect(errors).toEqual([]);
+onePageForFile('/tests/browser/lighting/lighting.html', (opened) => {
+  page = opened;
 });
-test.afterAll(() => page.close());
 
 const BASE: ViewRequest = {
   windSpeed: 10,

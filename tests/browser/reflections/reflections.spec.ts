@@ -2,6 +2,7 @@ import { expect, test, type Page, type TestInfo } from '@playwright/test';
 import { writeFileSync } from 'node:fs';
 import { PNG } from 'pngjs';
 import type { Vec3, View } from './reflections';
+import { onePageForFile } from '../shared/sharedPages';
 
 // The scene's objects reflected in the sea (src/render/sceneReflection.ts,
 // shaders/surface/sceneReflection.glsl), drawn at 960×540 in real WebGL2 and read back.
@@ -11,15 +12,9 @@ const H = 540;
 
 test.describe.configure({ mode: 'serial' });
 let page: Page;
-test.beforeAll(async ({ browser }) => {
-  page = await browser.newPage();
-  const errors: string[] = [];
-  page.on('pageerror', (error) => errors.push(error.message));
-  await page.goto('/tests/browser/reflections/reflections.html');
-  await expect(page).toHaveTitle('ready');
-  expect(errors).toEqual([]);
+onePageForFile('/tests/browser/reflections/reflections.html', (opened) => {
+  page = opened;
 });
-test.afterAll(async () => page.close());
 
 type Pixels = Buffer;
 

@@ -3,6 +3,7 @@ import { writeFileSync } from 'node:fs';
 import { PNG } from 'pngjs';
 import type { SetupOptions, Vec3 } from './refractions';
 import { ALSO_ON_OLDEST_THREE } from '../shared/threeRange';
+import { onePageForFile } from '../shared/sharedPages';
 
 // The scene seen through the water (refractions: 'scene'): a white plate under calm water, drawn
 // without tone mapping in linear RGB, against the optics it should follow. One page and one Ocean
@@ -11,18 +12,8 @@ import { ALSO_ON_OLDEST_THREE } from '../shared/threeRange';
 test.describe.configure({ mode: 'serial' });
 
 let page: Page;
-const errors: string[] = [];
-
-test.beforeAll(async ({ browser }) => {
-  page = await browser.newPage();
-  page.on('pageerror', (error) => errors.push(error.message));
-  await page.goto('/tests/browser/refractions/refractions.html');
-  await expect(page).toHaveTitle('ready');
-});
-
-test.afterAll(async () => {
-  expect(errors).toEqual([]);
-  await page.close();
+onePageForFile('/tests/browser/refractions/refractions.html', (opened) => {
+  page = opened;
 });
 
 const N_WATER = 1.333; // the ior option's default

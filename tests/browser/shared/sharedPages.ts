@@ -1,4 +1,4 @@
-import { test, type Browser, type Page } from '@playwright/test';
+import { expect, test, type Browser, type Page } from '@playwright/test';
 
 /**
  * Test pages that the tests of one spec file share, one per key (a canvas size, say): a page load
@@ -30,4 +30,26 @@ export function sharedPages(open: (page: Page, key: string) => Promise<void>, re
     await reset(page);
     return page;
   };
+}
+
+/**
+ * One page for a whole spec file, loaded once before its tests (a page load and its shaders cost
+ * more than most tests take): `url` must set its title to 'ready' when its harness is set up. The
+ * page is handed to `opened` for the file's tests; after them, no uncaught error may have reached
+ * the page. Call at the top level of a spec file.
+ */
+export function onePageForFile(url: string, opened: (page: Page) => void | Promise<void>): void {
+  let page: Page | null = null;
+  const errors: string[] = [];
+  test.beforeAll(async ({ browser }) => {
+    page = await browser.newPage();
+    page.on('pageerror', (error) => errors.push(error.message));
+    await page.goto(url);
+    await expect(page).toHaveTitle('ready');
+    await opened(page);
+  });
+  test.afterAll(async () => {
+    await page?.close();
+    expect(errors).toEqual([]);
+  });
 }
