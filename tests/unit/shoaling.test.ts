@@ -200,6 +200,33 @@ describe('(c) the queries over a 1:50 beach', () => {
     }
   });
 
+  // In the swash zone the waves ride on the swash level ζ (e), so McCowan's limit holds for the water
+  // column d + ζ under them: about ζ, the crest and the trough each stay within 0.39·(d + ζ).
+  it('never let the waves about the swash level exceed 0.78·(d + ζ) crest to trough where d ≤ 1 m', () => {
+    let swash = 0;
+    let depth = 0;
+    const watched = {
+      depthAt: (x: number, z: number) => (depth = shore.depthAt(x, z)),
+      layerFactor: (layer: number, d: number) => shore.layerFactor(layer, d),
+      swashLevel: (deepHeight: number, x: number, z: number, d: number) => (swash = shore.swashLevel(deepHeight, x, z, d)),
+    };
+    for (const d of [0.5, 1]) {
+      let worst = 0;
+      let wet = 0;
+      for (let step = 0; step < 200; step++) {
+        const h = heightAt(layers, parameters.choppiness, 0.9 * step, d / SLOPE, 35, watched);
+        const column = depth + swash;
+        if (column <= 0) continue; // the swash has left the point dry: no waves to limit
+        wet++;
+        worst = Math.max(worst, Math.abs(h - swash) / (0.39 * column));
+      }
+      console.log(`d = ${d} m: ${wet} of 200 instants wet, the waves about ζ at most ${worst.toFixed(3)} of 0.39·(d + ζ)`);
+      expect(wet).toBeGreaterThan(100);
+      expect(worst).toBeLessThanOrEqual(1 + 1e-9);
+      expect(worst).toBeGreaterThan(0.5); // the waves do reach the limit's order here
+    }
+  });
+
   it('are bit-identical to those without a seabed where the seabed is not', () => {
     const elsewhere = new Shore();
     elsewhere.setMap(createSeabedMap({ depthAt: () => 2, bounds: [1e5, 1e5, 1e5 + 10, 1e5 + 10] }, null));
