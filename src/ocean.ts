@@ -255,6 +255,7 @@ export class Ocean extends Object3D<OceanEventMap> {
       camera.getWorldPosition(viewerPosition);
       this.simulation.localWaves?.cameraMoved(viewerPosition.x, viewerPosition.z);
     }
+    this.simulation.localWaves?.setSeabed(this.shore.seabed);
     this.simulation.update(timeSeconds);
     this.surface.fitDrawingBuffer(this.renderer);
     this.currentTime = timeSeconds;

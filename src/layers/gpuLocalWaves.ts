@@ -6,15 +6,16 @@
  *   spectrum) → inverse FFT → the state, an RGBA32F target;
  * and, when asked, unpack into the layer's two field textures. Half floats cannot hold the forward
  * transform (its values reach N²× the heights): without float32 targets the JS solver runs instead.
- * Owns its device, targets, engine and materials and frees them in dispose().
+ * Owns its device, targets, engine, materials and the wet mask's texture (made the first time land
+ * is under the grid) and frees them in dispose().
  */
-import type { Texture, WebGLRenderer } from 'three';
+import { DataTexture, FloatType, NearestFilter, RedFormat, type Texture, type WebGLRenderer } from 'three';
 import type { FieldTarget, PassMaterial } from '../device/gpuDevice';
 import { WebGL2Device } from '../device/webgl2/webgl2Device';
 import { GpuFft } from '../fft/gpuFft';
 import { shaderSource } from '../shaderSource';
 import { GRAVITY } from '../spectrum/dispersion';
-import { MAX_IMPULSES_PER_STEP, SPONGE_WIDTH_FRACTION, spongeEdgeRate, type LocalWaveGrid, type LocalWaveStep } from './localWaveModel';
+import { MAX_IMPULSES_PER_STEP, SPONGE_WIDTH_FRACTION, spongeEdgeRate, type LocalWaveGrid, type LocalWaveStep, type LocalWaveWater } from './localWaveModel';
 
 /** Deep water in the shader: tanh(min(k·d, 20)) is 1 in float32. */
 const DEEP = 1e6;
@@ -30,6 +31,8 @@ export class GpuLocalWaves {
   private readonly evolve: PassMaterial;
   private readonly storeState: PassMaterial;
   private readonly unpacker: PassMaterial;
+  /** The wet mask (setWater), null until land is first under the grid. */
+  private wetTexture: DataTexture | null = null;
   /** Fragment passes per step. */
   readonly passCount: number;
 
@@ -78,7 +81,12 @@ export class GpuLocalWaves {
       depth: { value: Math.min(grid.depth, DEEP) },
       gravity: { value: GRAVITY },
     });
-    this.storeState = device.passMaterial(shaderSource('localWaves/state.frag'), { tSpectra0: { value: this.fft.sets[inverse].textures[0] }, sizeLog2 });
+    this.storeState = device.passMaterial(shaderSource('localWaves/state.frag'), {
+      tSpectra0: { value: this.fft.sets[inverse].textures[0] },
+      sizeLog2,
+      tWet: { value: null },
+      landUnder: { value: false },
+    });
     this.unpacker = device.passMaterial(shaderSource('localWaves/unpack.frag'), { tState: { value: this.state.textures[0] } });
     this.passCount = 3 + 2 * this.fft.passCount;
   }
@@ -106,6 +114,22 @@ export class GpuLocalWaves {
     this.device.runPasses(() => {
       for (const target of [this.state, this.output]) this.device.clear(target);
     });
+  }
+
+  /** The water under the grid from the next step on (localWaveModel.ts): the dispersion's depth, and land held at zero. */
+  setWater({ depth, wet }: LocalWaveWater): void {
+    this.evolve.uniforms.depth.value = Math.min(depth, DEEP);
+    const u = this.storeState.uniforms;
+    u.landUnder.value = wet !== null;
+    if (wet === null) return;
+    const n = this.grid.resolution;
+    if (this.wetTexture === null) {
+      this.wetTexture = new DataTexture(new Float32Array(n * n), n, n, RedFormat, FloatType);
+      this.wetTexture.minFilter = this.wetTexture.magFilter = NearestFilter;
+      u.tWet.value = this.wetTexture;
+    }
+    (this.wetTexture.image.data as Float32Array).set(wet);
+    this.wetTexture.needsUpdate = true;
   }
 
   /** One step: from `state` to `state`. */
@@ -139,6 +163,7 @@ export class GpuLocalWaves {
     for (const target of [this.state, this.output]) target.dispose();
     this.fft.dispose();
     for (const material of [this.prepare, this.evolve, this.storeState, this.unpacker]) material.dispose();
+    this.wetTexture?.dispose();
     this.device.dispose();
   }
 }

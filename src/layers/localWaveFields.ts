@@ -7,7 +7,7 @@
  */
 import { ClampToEdgeWrapping, DataTexture, FloatType, LinearFilter, NearestFilter, RGBAFormat, type Texture, type WebGLRenderer } from 'three';
 import { GpuLocalWaves } from './gpuLocalWaves';
-import { CpuLocalWaves, type LocalWaveGrid, type LocalWaveStep } from './localWaveModel';
+import { CpuLocalWaves, type LocalWaveGrid, type LocalWaveStep, type LocalWaveWater } from './localWaveModel';
 import type { LayerFieldsOnCpu } from './waveLayer';
 
 export interface LocalWaveFields {
@@ -15,6 +15,8 @@ export interface LocalWaveFields {
   readonly path: 'gpu' | 'js';
   /** The layer's textures, in the layout of a wave layer (waveLayer.ts). */
   readonly textures: { readonly displacement: { value: Texture }; readonly derivatives: { value: Texture } };
+  /** The water under the grid from the next step on: the dispersion's depth and the wet mask (localWaveModel.ts). */
+  setWater(water: LocalWaveWater): void;
   /** One step of the solver (localWaveModel.ts's scheme). */
   step(step: LocalWaveStep): void;
   /** Every wave gone. */
@@ -62,6 +64,10 @@ class JsLocalWaveFields implements LocalWaveFields {
     this.solver = new CpuLocalWaves(grid);
     this.textures = { displacement: { value: this.dataTextures[0] }, derivatives: { value: this.dataTextures[1] } };
     this.velocityTexels = new Float32Array(4 * n * n);
+  }
+
+  setWater(water: LocalWaveWater): void {
+    this.solver.setWater(water);
   }
 
   step(step: LocalWaveStep): void {
@@ -121,15 +127,23 @@ class GpuLocalWaveFields implements LocalWaveFields {
   private velocitySolver: CpuLocalWaves | null = null;
   private velocityTexels: Float32Array | null = null;
   private velocitiesFor = -1;
+  /** The water the solver steps over, which the velocities' ω is for too. */
+  private water: LocalWaveWater;
   private disposed = false;
 
   constructor(
     renderer: WebGLRenderer,
     private readonly grid: LocalWaveGrid,
   ) {
+    this.water = { depth: grid.depth, wet: null };
     this.solver = new GpuLocalWaves(renderer, grid);
     this.solver.clear();
     this.textures = { displacement: { value: this.solver.displacement }, derivatives: { value: this.solver.derivatives } };
+  }
+
+  setWater(water: LocalWaveWater): void {
+    this.water = water;
+    this.solver.setWater(water);
   }
 
   step(step: LocalWaveStep): void {
@@ -207,6 +221,7 @@ class GpuLocalWaveFields implements LocalWaveFields {
     this.velocityTexels ??= new Float32Array(4 * this.grid.resolution * this.grid.resolution);
     if (this.velocitiesFor !== this.readBackOf) {
       this.velocitySolver ??= new CpuLocalWaves(this.grid);
+      this.velocitySolver.setWater(this.water);
       this.velocitySolver.verticalVelocity(this.cpuFields!.state.subarray(1), 4, this.velocityTexels);
       this.velocitiesFor = this.readBackOf;
     }

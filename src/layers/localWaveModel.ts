@@ -23,6 +23,16 @@
  * P(new pose) − P(old pose) each step. Waves then leave them with the exact dispersion: a ring
  * spreads at the group speed of its wavelength, a hull in steady motion draws the Kelvin wedge.
  *
+ * Over a seabed (Ocean.setSeabed) an FFT step can take one depth only: ω is that of the mean depth of
+ * the grid's wet texels (each counted at most as deep as the grid is wide, beyond which every mode it
+ * holds is in deep water, tanh(k·d) > 0.996), so a ring in 2 m of water spreads at √(g·d), the
+ * shallow-water limit of ω² = g·k·tanh(k·d) (Dean & Dalrymple 1991, "Water Wave Mechanics for
+ * Engineers and Scientists", §3.4, eq. 3.34 and its limits); and η_s and ψ are held at zero over
+ * land (depth ≤ 0), where the surface is the ground's (shaders/surface/shoaling.glsl), so a wave
+ * that reaches the waterline stops there as at a wall (LocalWaveWater). A grid over water of very
+ * different depths moves every wave at the mean depth's speed: the local waves neither shoal nor
+ * refract (docs/shores.md).
+ *
  * The border absorbs (the FFT's grid is periodic: what leaves one side would come back on the
  * other): a sponge layer (Israeli & Orszag 1981, "Approximation of radiation boundary conditions")
  * of SPONGE_WIDTH texels damps η_s and ψ with a rate that grows quadratically towards the edge,
@@ -35,7 +45,7 @@
  *   2. forward FFT of η_s + iψ;
  *   3. spectrum: Z ← Z·e^{−iωΔt}/N², and the slopes' spectrum i·(kx + i·kz)·Ĥ with
  *                Ĥ = (Z(k) + Z*(−k))/2 the spectrum of η_s;
- *   4. inverse FFT of both: (η_s + iψ, ∂η_s/∂x + i·∂η_s/∂z) on the grid.
+ *   4. inverse FFT of both: (η_s + iψ, ∂η_s/∂x + i·∂η_s/∂z) on the grid, × the wet mask.
  */
 import { angularFrequency, GRAVITY } from '../spectrum/dispersion';
 import { BatchedInverseFft2D } from '../fft/fft';
@@ -62,6 +72,43 @@ export interface LocalWaveGrid {
   readonly cellSize: number;
   /** Water depth, m (Infinity: deep). */
   readonly depth: number;
+}
+
+/**
+ * The water under the grid as it is now: the depth the step's dispersion uses (m, Infinity: deep)
+ * and, over a seabed with land under the grid, 1 on wet texels and 0 on land (texel (i, j) at
+ * j·N + i), else null (all wet). Made by LocalWaves from the seabed (localWaterUnder).
+ */
+export interface LocalWaveWater {
+  readonly depth: number;
+  readonly wet: Float32Array | null;
+}
+
+/**
+ * The water under an N×N grid whose texel (i, j) is at world (x0 + i·cell, z0 + j·cell), from the
+ * seabed's depth `depthAt` there: the wet texels' mean depth, each counted at most the grid's side
+ * deep (see the file's comment), and the wet mask (null when no texel is land). Water all deeper
+ * than the side counts as max(side, openDepth) deep; a grid all over land (nothing moves on it)
+ * keeps `openDepth`.
+ */
+export function localWaterUnder(grid: LocalWaveGrid, x0: number, z0: number, depthAt: (x: number, z: number) => number, openDepth: number): LocalWaveWater {
+  const n = grid.resolution;
+  const side = n * grid.cellSize;
+  const wet = new Float32Array(n * n);
+  let sum = 0;
+  let count = 0;
+  for (let j = 0; j < n; j++) {
+    for (let i = 0; i < n; i++) {
+      const d = depthAt(x0 + i * grid.cellSize, z0 + j * grid.cellSize);
+      if (!(d > 0)) continue;
+      wet[j * n + i] = 1;
+      sum += Math.min(d, side);
+      count++;
+    }
+  }
+  if (count === 0) return { depth: openDepth, wet };
+  const depth = sum / count >= side ? Math.max(openDepth, side) : sum / count;
+  return { depth, wet: count === n * n ? null : wet };
 }
 
 /**
@@ -133,6 +180,9 @@ export class CpuLocalWaves {
   private readonly omega: Float64Array;
   private readonly slopeWavenumber: Float64Array;
   private velocityFft: BatchedInverseFft2D | null = null;
+  /** The depth ω is for, m, and the wet mask (null: all wet). */
+  private omegaDepth = NaN;
+  private wet: Float32Array | null = null;
 
   constructor(readonly grid: LocalWaveGrid) {
     const n = grid.resolution;
@@ -145,9 +195,19 @@ export class CpuLocalWaves {
     const dk = (2 * Math.PI) / (n * grid.cellSize);
     this.slopeWavenumber = Float64Array.from({ length: n }, (_, i) => (i === n / 2 ? 0 : signedIndex(i, n) * dk));
     this.omega = new Float64Array(n * n);
+    this.setWater({ depth: grid.depth, wet: null });
+  }
+
+  /** The water under the grid from the next step on: ω(k) for its depth, and its land held at zero. */
+  setWater({ depth, wet }: LocalWaveWater): void {
+    this.wet = wet;
+    if (depth === this.omegaDepth) return;
+    this.omegaDepth = depth;
+    const n = this.grid.resolution;
+    const dk = (2 * Math.PI) / (n * this.grid.cellSize);
     for (let j = 0; j < n; j++) {
       for (let i = 0; i < n; i++) {
-        this.omega[j * n + i] = angularFrequency(Math.hypot(signedIndex(i, n), signedIndex(j, n)) * dk, grid.depth);
+        this.omega[j * n + i] = angularFrequency(Math.hypot(signedIndex(i, n), signedIndex(j, n)) * dk, depth);
       }
     }
   }
@@ -241,14 +301,16 @@ export class CpuLocalWaves {
       }
     }
     inverse.run();
+    const wet = this.wet;
     for (let j = 0; j < n; j++) {
       for (let i = 0; i < n; i++) {
         const state = inverse.outputIndex(0, i, j);
         const slopes = inverse.outputIndex(1, i, j);
-        height[j * n + i] = inverse.outputReal[state];
-        potential[j * n + i] = inverse.outputImag[state];
-        this.slopeX[j * n + i] = inverse.outputReal[slopes];
-        this.slopeZ[j * n + i] = inverse.outputImag[slopes];
+        const water = wet === null ? 1 : wet[j * n + i];
+        height[j * n + i] = inverse.outputReal[state] * water;
+        potential[j * n + i] = inverse.outputImag[state] * water;
+        this.slopeX[j * n + i] = inverse.outputReal[slopes] * water;
+        this.slopeZ[j * n + i] = inverse.outputImag[slopes] * water;
       }
     }
   }

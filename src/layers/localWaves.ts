@@ -22,7 +22,8 @@
 import type { WebGLRenderer } from 'three';
 import { checkOptionNames, DisposedError, ParameterError } from '../parameters/options';
 import { localWaveFields, type LocalWaveFields } from './localWaveFields';
-import { MAX_IMPULSES_PER_STEP, type HeightImpulse, type LocalWaveGrid } from './localWaveModel';
+import { localWaterUnder, MAX_IMPULSES_PER_STEP, type HeightImpulse, type LocalWaveGrid } from './localWaveModel';
+import type { SeabedMap } from './seabed';
 import { HullFoam, hullFoamCoverage } from './hullFoam';
 import { heightAt } from './surfaceQuery';
 import type { PathPreference } from './oceanSimulation';
@@ -132,6 +133,10 @@ export class LocalWaves implements WaveLayer {
   /** The time of the last update, null before the first. */
   private time: number | null = null;
   private disposed = false;
+  /** The sea floor under the grid (setSeabed), null: as deep as grid.depth everywhere. */
+  private seabed: SeabedMap | null = null;
+  /** The grid origin (texels) the solver's water was found for; null: to be found again. */
+  private waterFor: [number, number] | null = null;
   /** This layer as a list of layers, for the queries. */
   private readonly asLayers: readonly WaveLayer[] = [this];
 
@@ -228,6 +233,18 @@ export class LocalWaves implements WaveLayer {
     if (!(persistence >= 0.1 && persistence <= 30)) throw new ParameterError('hull foam persistence', persistence, 'seconds from 0.1 to 30');
     this.foamAmount = amount;
     this.foamPersistence = persistence;
+  }
+
+  /**
+   * The sea floor under the waves (the Ocean gives its seabed before each update; null: none):
+   * from the next step on they move at the speed of the mean depth of the water under the grid and
+   * stop at the waterline (localWaveModel.ts). Outside the seabed's bounds the water is grid.depth deep.
+   */
+  setSeabed(seabed: SeabedMap | null): void {
+    this.checkAlive('setSeabed');
+    if (seabed === this.seabed) return;
+    this.seabed = seabed;
+    this.waterFor = null;
   }
 
   /** Where the camera is, for a grid that follows it (Ocean calls this before each update). */
@@ -347,6 +364,7 @@ export class LocalWaves implements WaveLayer {
       const origin: [number, number] = s === substeps ? targetOrigin : this.originTexel; // the grid moves once, in the last sub-step
       const shift = [origin[0] - this.originTexel[0], origin[1] - this.originTexel[1]];
       this.originTexel = origin;
+      this.updateWater();
       this.foam.shift(shift[0], shift[1]);
       this.foam.fade(dt / substeps, this.foamPersistence);
       const impulses: HeightImpulse[] = s === 1 ? this.pendingDrops.splice(0).map((drop) => this.inGrid(drop)) : [];
@@ -406,6 +424,16 @@ export class LocalWaves implements WaveLayer {
     this.solved.clear();
     this.foam.clear();
     this.publish();
+  }
+
+  /** Hands the solver the water under the grid where it is now, when the grid moved or the seabed changed. */
+  private updateWater(): void {
+    const [i, j] = this.originTexel;
+    if (this.waterFor !== null && this.waterFor[0] === i && this.waterFor[1] === j) return;
+    this.waterFor = [i, j];
+    const { seabed, grid } = this;
+    const cell = grid.cellSize;
+    this.solved.setWater(seabed === null ? { depth: grid.depth, wet: null } : localWaterUnder(grid, i * cell, j * cell, (x, z) => seabed.depthAt(x, z, grid.depth), grid.depth));
   }
 
   /** Sub-steps for this update: enough that no hull moves more than a quarter of its length in one. */

@@ -7,12 +7,14 @@ import { describe, expect, it } from 'vitest';
 import {
   CpuLocalWaves,
   impulseHeight,
+  localWaterUnder,
   signedIndex,
   spongeFactor,
   SPONGE_WIDTH_FRACTION,
   type HeightImpulse,
   type LocalWaveGrid,
   type LocalWaveStep,
+  type LocalWaveWater,
 } from '../../src/layers/localWaveModel';
 import { angularFrequency, GRAVITY } from '../../src/spectrum/dispersion';
 
@@ -334,5 +336,106 @@ describe('the physics of local waves', () => {
     }
     console.log(`border: ${wavelength} m packet, ${(100 * returned).toFixed(2)} % of its energy back inside`);
     expect(returned).toBeLessThan(0.05);
+  });
+});
+
+describe('local waves over a seabed', () => {
+  // Airy's dispersion over a flat bottom of depth d, ω² = g·k·tanh(k·d) (Dean & Dalrymple 1991,
+  // "Water Wave Mechanics for Engineers and Scientists", eq. 3.34), with group speed
+  // c_g = ½·(1 + 2kd/sinh 2kd)·ω/k (eq. 4.55 there); in shallow water (kd → 0) every wave moves at
+  // √(g·d), the fastest any wave moves at that depth (eq. 3.37).
+  const groupSpeed = (k: number, d: number) => (d === Infinity ? 0.5 : 0.5 * (1 + (2 * k * d) / Math.sinh(2 * k * d))) * (angularFrequency(k, d) / k);
+  const grid: LocalWaveGrid = { resolution: 512, cellSize: 0.5, depth: Infinity };
+  const centre = (grid.resolution / 2) * grid.cellSize;
+  /** A flat bottom `depth` m deep under the whole grid: the water localWaterUnder finds there. */
+  const flat = (depth: number) => localWaterUnder(grid, 0, 0, () => depth, Infinity);
+
+  /** A stone (radius `radius` m) at the grid's centre over `water`, stepped exactly to each time in `times`: the radial profiles. */
+  function rings(water: LocalWaveWater, radius: number, times: number[]): number[][] {
+    const solver = new CpuLocalWaves(grid);
+    solver.setWater(water);
+    solver.step({ shiftX: 0, shiftZ: 0, impulses: [{ x: centre, z: centre, cos: 1, sin: 0, halfLength: radius, halfBeam: radius, height: -0.2 }], dt: 0 });
+    let now = 0;
+    return times.map((t) => {
+      // The step is exact for any Δt (e^{−iωΔt} per mode): one step to each time.
+      solver.step({ shiftX: 0, shiftZ: 0, impulses: [], dt: t - now });
+      now = t;
+      return radialProfile(solver.height, grid, centre, centre, 0.05, 120);
+    });
+  }
+
+  it('finds the depth of the water under the grid and its land', () => {
+    expect(flat(2)).toEqual({ depth: 2, wet: null });
+    // Deeper than the grid is wide (256 m) everywhere: every mode is in deep water.
+    expect(flat(300).depth).toBe(Infinity);
+    // A beach along x: land for x < 40 m, then 1:20.
+    const beach = localWaterUnder(grid, 0, 0, (x) => (x - 40) / 20, 30);
+    const landTexels = Math.ceil(40 / grid.cellSize) + 1; // x = 0 … 40 m: depth ≤ 0
+    expect(beach.wet![landTexels - 1]).toBe(0);
+    expect(beach.wet![landTexels]).toBe(1);
+    // The wet texels' mean depth: (0.5 + 1 + … + 216 m)/20 over 432 columns.
+    const columns = Array.from({ length: grid.resolution - landTexels }, (_, c) => (landTexels + c) * grid.cellSize);
+    expect(beach.depth).toBeCloseTo(columns.reduce((sum, x) => sum + (x - 40) / 20, 0) / columns.length, 9);
+    // All land: the open depth kept, nothing wet.
+    const island = localWaterUnder(grid, 0, 0, () => -1, 30);
+    expect(island.depth).toBe(30);
+    expect(island.wet!.every((w) => w === 0)).toBe(true);
+  });
+
+  it('in 2 m of water a stone\'s disturbance spreads at the shallow-water speed √(g·d) (within 10 %)', () => {
+    // The front of the disturbance carries the longest waves, which move at √(g·d); its Airy-function
+    // shape widens as t^⅓ (Whitham 1974, §13.7), so its speed is measured between two late times.
+    const d = 2;
+    const times = [8, 16];
+    const profiles = rings(flat(d), 2, times);
+    const fronts = profiles.map((profile) => {
+      const peak = maxAbs(profile.slice(Math.round(10 / 0.05)));
+      let r = profile.length - 1;
+      while (Math.abs(profile[r]) < 0.2 * peak) r--;
+      return r * 0.05;
+    });
+    const speed = (fronts[1] - fronts[0]) / (times[1] - times[0]);
+    console.log(`2 m of water: front at ${fronts.map((r) => r.toFixed(2)).join(', ')} m at t = ${times.join(', ')} s: ${speed.toFixed(3)} m/s against √(g·d) = ${Math.sqrt(GRAVITY * d).toFixed(3)} m/s`);
+    expect(Math.abs(speed / Math.sqrt(GRAVITY * d) - 1)).toBeLessThan(0.1);
+  });
+
+  it.each([2, 300])('over a %s m bottom the rings\' crests lie where the group speed of their wavelength takes them (within 5 %)', (d) => {
+    // Stationary phase (Lighthill 1978, §3.6): at radius r and time t the waves have the wavenumber
+    // whose group speed at this depth is r/t (in deep water c_g = ½·√(g/k), the ring test above).
+    const t = 20;
+    const [profile] = rings(flat(d), 1, [t]);
+    const water = flat(d);
+    const peak = maxAbs(profile.slice(Math.round(3 / 0.05)));
+    const ratios: number[] = [];
+    for (const crest of crestRadii(profile, 0.05, 0.1 * peak).filter((r) => r > 3)) {
+      const [inner, outer] = zeroCrossingsAround(profile, 0.05, crest);
+      const k = Math.PI / (outer - inner);
+      if (k * crest < 20 || (2 * Math.PI) / k < 5 * grid.cellSize) continue;
+      ratios.push(crest / t / groupSpeed(k, water.depth));
+    }
+    console.log(`${d} m bottom (dispersion depth ${water.depth}): (r/t) ÷ c_g(k, d) at t = ${t} s:`, ratios.map((r) => r.toFixed(3)).join(' '));
+    expect(ratios.length).toBeGreaterThanOrEqual(3);
+    for (const ratio of ratios) expect(Math.abs(ratio - 1)).toBeLessThan(0.05);
+  });
+
+  it('over land nothing moves: a stone dropped by a beach leaves the sand flat, the water beside it waving', () => {
+    const small: LocalWaveGrid = { resolution: 128, cellSize: 0.5, depth: Infinity };
+    // Land for x < 20 m, then a 1:20 beach.
+    const water = localWaterUnder(small, 0, 0, (x) => (x - 20) / 20, Infinity);
+    const solver = new CpuLocalWaves(small);
+    solver.setWater(water);
+    solver.step({ shiftX: 0, shiftZ: 0, impulses: [{ x: 26, z: 32, cos: 1, sin: 0, halfLength: 1, halfBeam: 1, height: -0.3 }], dt: 0 });
+    let onLand = 0;
+    let inWater = 0;
+    for (let s = 0; s < 40; s++) {
+      solver.step({ shiftX: 0, shiftZ: 0, impulses: [], dt: 0.25 });
+      for (let at = 0; at < water.wet!.length; at++) {
+        const moved = Math.max(Math.abs(solver.height[at]), Math.abs(solver.potential[at]), Math.abs(solver.slopeX[at]), Math.abs(solver.slopeZ[at]));
+        if (water.wet![at] === 0) onLand = Math.max(onLand, moved);
+        else inWater = Math.max(inWater, Math.abs(solver.height[at]));
+      }
+    }
+    expect(inWater).toBeGreaterThan(0.01);
+    expect(onLand).toBe(0);
   });
 });

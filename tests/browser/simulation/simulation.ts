@@ -8,6 +8,7 @@ import { CpuWaveFields } from '../../../src/fft/cpuWaveFields';
 import { GpuWaveFields, supportedGpuPrecision, type GpuPrecision } from '../../../src/fft/gpuWaveFields';
 import { LocalWaves } from '../../../src/layers/localWaves';
 import { OceanSimulation } from '../../../src/layers/oceanSimulation';
+import { createSeabedMap } from '../../../src/layers/seabed';
 import { validateParameters, type SimulationParameters } from '../../../src/parameters/parameters';
 import { createCascadeSpectra } from '../../../src/spectrum/initialSpectrum';
 
@@ -249,11 +250,15 @@ const harness = {
   /**
    * The local waves on the GPU against the JS solver, through the same history: a stone, a hull
    * under way and turning, and a grid that follows it (so it shifts). After each update: the
-   * largest difference of height and slopes, relative to the largest height then.
+   * largest difference of height and slopes, relative to the largest height then. With `beach`, over
+   * a seabed with land under the grid's west side (x < −20 m, then 1:10): the depth and the wet mask
+   * change as the grid moves.
    */
-  compareLocalWavesGpuWithJs(updates: number): { maxHeight: number; heightError: number; slopeError: number }[] {
+  compareLocalWavesGpuWithJs(updates: number, beach = false): { maxHeight: number; heightError: number; slopeError: number }[] {
     const options = { resolution: 128, cellSize: 0.5 };
     const paths = [new LocalWaves(renderer, 30, true, options), new LocalWaves(renderer, 30, false, options)];
+    const seabed = beach ? createSeabedMap({ depthAt: (x) => (x + 20) / 10, bounds: [-100, -100, 100, 100], resolution: 201 }, renderer) : null;
+    for (const waves of paths) waves.setSeabed(seabed);
     const hull = { length: 6, beam: 2, draft: 0.5 };
     const hulls = paths.map((waves) => waves.addPressure(hull, { x: 0, z: 0, heading: 0 }));
     for (const waves of paths) {
@@ -281,6 +286,7 @@ const harness = {
       results.push({ maxHeight, heightError: heightError / maxHeight, slopeError: slopeError / maxHeight });
     }
     for (const waves of paths) waves.dispose();
+    seabed?.dispose();
     return results;
   },
 
