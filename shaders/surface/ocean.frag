@@ -91,8 +91,14 @@ void main() {
   vec2 foamDetail = foamPattern(streakPatternPoint(vRestFromEye) + foamPatternOrigin);
   float foamDetailPerPixel = fwidth(foamDetail.x);
 #ifdef CAPTURE_POSITIONS
-  // Geometry test: the displaced position, or the rest point with its mip level and ring (from the eye).
-  gl_FragColor = captureRestPoint ? vec4(vRestFromEye, vLod, vRing) : vec4(vFromEye, 1.0);
+  // Geometry test: the displaced position with the foam the shore adds there (0 without a seabed), or
+  // the rest point with its mip level and ring (from the eye).
+#ifdef SEABED
+  float capturedShoreFoam = vShoreFoam;
+#else
+  float capturedShoreFoam = 0.0;
+#endif
+  gl_FragColor = captureRestPoint ? vec4(vRestFromEye, vLod, vRing) : vec4(vFromEye, capturedShoreFoam);
   return;
 #endif
   // Each point of the rest plane is drawn by exactly one ring: a ring overlaps the one inside it

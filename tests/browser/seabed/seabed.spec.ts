@@ -96,6 +96,69 @@ test('the drawn waterline runs up and down the beach with the waves, where heigh
   expect(range).toBeLessThan(1.5 * swash);
 });
 
+// The shoreline foam band (shaders/surface/shoaling.glsl, shoreFoam) is set in depth: from the
+// waterline out to h_b = Hs/0.78, where the sea's significant wave breaks (McCowan's index). On a
+// plane beach of slope tan β its width across the beach is then x_b = h_b/tan β, the surf zone's
+// (Longuet-Higgins 1970, J. Geophys. Res. 75, whose surf zone ends at that depth). With everything
+// the shore draws a function of the depth, the foam's cross-shore integral ∫F dx = (1/tan β)·∫F dd
+// scales as 1/tan β too: on two beaches of 1:20 and 1:50 side by side, under the same sea, the
+// gentle one's is 2.5× the steep one's. Read from the vertex shader's own foam (vShoreFoam, every
+// vertex), averaged along 37 m of each beach and over four instants.
+// Within 10 %: the one part of the shore that is not a function of depth alone is the swash's
+// setup η̄ = 0.35·β·√(H0·L0) (Stockdon et al. 2006, eq. 10), which fades out between the depths S/2
+// and 1.5·S (S its significant swash, eqs. 11–12), so there the column depth d + η̄ grows by only
+// 1 − η̄/S per metre of depth, and the band is stretched by 1/(1 − η̄/S): on this sea (Hs 1.03 m,
+// √(H0·L0) ≈ 5.5 m) 1.31 on the 1:20 beach and 1.12 on the 1:50 one, over the 0.2–0.6 m of the
+// band's 1.3 m of depth: about 5 % off 2.5, downwards. The rest is the surf's sampling (the
+// waves break at different places on the two beaches).
+test('the shoreline foam band is h_b/tan β wide: 2.5× wider on a 1:50 beach than on a 1:20 one', async ({ page }) => {
+  await page.goto('/tests/browser/seabed/seabed.html');
+  await expect(page).toHaveTitle('ready');
+  const result = await page.evaluate(() => {
+    const h = window.seabed;
+    // 6 m/s: Hs about 0.8 m, h_b about 1 m: bands some 20 and 50 m wide, in cells of a metre or less.
+    // From 5 m up (the rings' cells grow with the camera's height): cells of 1.6 m within 25 m, 3.2 m within 51 m, 6.4 m beyond.
+    h.setup('twoSlopes', 3, [20, 5, 0], [40, 0, 0], { windSpeed: 6, localWaves: false });
+    const across = { xMin: -10, bin: 1, bins: 110 };
+    const sums = { steep: new Array<number>(across.bins).fill(0), gentle: new Array<number>(across.bins).fill(0) };
+    let breakerDepth = 0;
+    let empty = 0;
+    const instants = [3, 6, 9, 12];
+    for (const t of instants) {
+      h.advance(t);
+      const vertices = h.capture();
+      const steep = h.shoreFoamAcross(vertices, -45, -8, across.xMin, across.bin, across.bins);
+      const gentle = h.shoreFoamAcross(vertices, 8, 45, across.xMin, across.bin, across.bins);
+      steep.foam.forEach((f, b) => (sums.steep[b] += f / instants.length));
+      gentle.foam.forEach((f, b) => (sums.gentle[b] += f / instants.length));
+      breakerDepth = gentle.breakerDepth;
+      empty = Math.max(empty, steep.empty, gentle.empty);
+    }
+    // For a person: both beaches from above, the 1:20 one on the left, the sea at the top.
+    return { ...sums, breakerDepth, empty, bin: across.bin, picture: h.picture([-40, 70, 0], [40, 0, 0]) };
+  });
+  mkdirSync(OUTPUT, { recursive: true });
+  writeFileSync(join(OUTPUT, 'two-slopes.png'), Buffer.from(result.picture.split(',')[1], 'base64'));
+  const integral = (foam: number[]) => foam.reduce((sum, f) => sum + f * result.bin, 0);
+  const [steep, gentle] = [integral(result.steep), integral(result.gentle)];
+  // Where the band ends: the last bin with foam over a tenth of the profile's largest.
+  const end = (foam: number[]) => {
+    const peak = Math.max(...foam);
+    let last = foam.length - 1;
+    while (last > 0 && foam[last] <= 0.1 * peak) last--;
+    return (last + 1) * result.bin - 10;
+  };
+  console.log(
+    `h_b ${result.breakerDepth.toFixed(3)} m: x_b = h_b/tan β ${(20 * result.breakerDepth).toFixed(1)} m (1:20) and ${(50 * result.breakerDepth).toFixed(1)} m (1:50); ` +
+      `foam's cross-shore integral ${steep.toFixed(3)} and ${gentle.toFixed(3)} m: ratio ${(gentle / steep).toFixed(3)} (1/tan β: 2.5); ` +
+      `foam over a tenth of its peak out to x = ${end(result.steep)} and ${end(result.gentle)} m; at most ${result.empty} of ${result.steep.length} bins without a vertex`,
+  );
+  for (const f of [...result.steep, ...result.gentle]) expect(Number.isFinite(f)).toBe(true);
+  expect(result.empty).toBeLessThan((5 / 6) * result.steep.length); // cells no wider than six bins
+  expect(steep).toBeGreaterThan(1); // a band, not a calm shore
+  expect(Math.abs(gentle / steep / 2.5 - 1)).toBeLessThan(0.1);
+});
+
 test('a seabed from meshes is drawn from above; bad seabeds are refused and the last good one stays; its textures are freed', async ({ page }) => {
   await page.goto('/tests/browser/seabed/seabed.html');
   await expect(page).toHaveTitle('ready');

@@ -39,6 +39,9 @@ document.body.appendChild(renderer.domElement);
 const SLOPE = 1 / 50;
 const BOUNDS = [-300, -800, 2500, 800] as const;
 const beach = { depthAt: (x: number) => x * SLOPE, bounds: BOUNDS };
+/** Two plane beaches side by side along the same waterline x = 0: 1:20 at z < 0, 1:50 at z > 0. */
+const TWO_SLOPES = { steep: 1 / 20, gentle: 1 / 50 };
+const twoBeaches = { depthAt: (x: number, z: number) => x * (z < 0 ? TWO_SLOPES.steep : TWO_SLOPES.gentle), bounds: BOUNDS };
 
 const camera = new PerspectiveCamera(50, WIDTH / HEIGHT, 0.5, 1e5);
 let ocean: Ocean | null = null;
@@ -64,13 +67,13 @@ function place(position: readonly number[], target: readonly number[]): void {
 }
 
 const harness = {
-  /** A new Ocean over the beach (or over none), at time t, seen from `position`. */
-  setup(seabed: boolean, t: number, position: number[], target: number[], options: OceanOptions = {}): void {
+  /** A new Ocean over the beach (or over none, or over the two beaches of TWO_SLOPES), at time t, seen from `position`. */
+  setup(seabed: boolean | 'twoSlopes', t: number, position: number[], target: number[], options: OceanOptions = {}): void {
     if (ocean) {
       ocean.removeFromParent();
       ocean.dispose();
     }
-    ocean = new Ocean(renderer, { path: 'gpu', worker: false, ...options, seabed: seabed ? beach : null });
+    ocean = new Ocean(renderer, { path: 'gpu', worker: false, ...options, seabed: seabed === 'twoSlopes' ? twoBeaches : seabed ? beach : null });
     scene.add(ocean);
     place(position, target);
     ocean.update(t, camera);
@@ -85,7 +88,9 @@ const harness = {
 
   /**
    * Every vertex of the drawn surface, from the real vertex shader: its displaced position and its
-   * rest point, world coordinates (x, y, z, rest x, rest z, mip level) per vertex; the skirt left out.
+   * rest point, world coordinates, and the foam the shore adds there (vShoreFoam: the surf and the
+   * shoreline band, shoaling.glsl) (x, y, z, rest x, rest z, mip level, shore foam) per vertex; the
+   * skirt left out.
    */
   capture(): number[][] {
     const o = ocean!;
@@ -105,7 +110,7 @@ const harness = {
     for (let v = 0; v < count; v++) {
       const [rx, rz, lod] = rest.subarray(4 * v, 4 * v + 3);
       if (lod > 500) continue; // SKIRT_LOD: the far edge, flat by design
-      vertices.push([displaced[4 * v] + eye.x, displaced[4 * v + 1] + eye.y, displaced[4 * v + 2] + eye.z, rx + eye.x, rz + eye.z, lod]);
+      vertices.push([displaced[4 * v] + eye.x, displaced[4 * v + 1] + eye.y, displaced[4 * v + 2] + eye.z, rx + eye.x, rz + eye.z, lod, displaced[4 * v + 3]]);
     }
     return vertices;
   },
@@ -187,6 +192,35 @@ const harness = {
   },
 
   /**
+   * The shore's foam (vShoreFoam) across the beach: the mean over the captured vertices whose rest
+   * point lies at zMin ≤ z ≤ zMax, in bins of `bin` metres of rest x from xMin (`bins` of them),
+   * every ring's vertices alike; a bin no vertex falls in (where the rings' cells are wider than a
+   * bin) takes the linear interpolation of its neighbours', and `empty` counts them. With the depth
+   * where the shoreline band ends (the shader's breakerDepth, Hs/0.78).
+   */
+  shoreFoamAcross(vertices: number[][], zMin: number, zMax: number, xMin: number, bin: number, bins: number): { foam: number[]; empty: number; breakerDepth: number } {
+    const sums = new Array<number>(bins).fill(0);
+    const counts = new Array<number>(bins).fill(0);
+    for (const [, , , rx, rz, , foam] of vertices) {
+      const b = Math.floor((rx - xMin) / bin);
+      if (rz < zMin || rz > zMax || b < 0 || b >= bins) continue;
+      sums[b] += foam;
+      counts[b]++;
+    }
+    const filled = counts.map((count, b) => (count > 0 ? b : -1)).filter((b) => b >= 0);
+    if (filled.length === 0) throw new Error('no vertex across the beach');
+    const foam = counts.map((count, b) => {
+      if (count > 0) return sums[b] / count;
+      const below = [...filled].reverse().find((f) => f < b) ?? filled[0];
+      const above = filled.find((f) => f > b) ?? filled[filled.length - 1];
+      const [fb, fa] = [sums[below] / counts[below], sums[above] / counts[above]];
+      return above === below ? fb : fb + ((fa - fb) * (b - below)) / (above - below);
+    });
+    const shore = (ocean as unknown as { shore: Shore }).shore;
+    return { foam, empty: counts.filter((count) => count === 0).length, breakerDepth: shore.uniforms.breakerDepth.value };
+  },
+
+  /**
    * GPU memory (renderer.info.memory) before an Ocean over the beach is made, drawn, given a
    * second seabed (the first one's texture freed) and disposed, and after.
    */
@@ -234,8 +268,9 @@ const harness = {
     return swashScale(swashLength(4 * ocean!.heightRms, ocean!.seaState.peakPeriod), SLOPE).swash;
   },
 
-  /** The frame, as a PNG data URL. */
-  picture(): string {
+  /** The frame, as a PNG data URL; from `position` looking at `target` if given. */
+  picture(position?: number[], target?: number[]): string {
+    if (position && target) place(position, target);
     renderer.render(scene, camera);
     return renderer.domElement.toDataURL('image/png');
   },

@@ -11,7 +11,8 @@ const CAPTURE_WIDTH = 1024;
 
 /**
  * Each vertex of `geometry` drawn by `material` (CAPTURE_POSITIONS, its other uniforms bound by the
- * caller) from `camera`: the displaced position from the eye (x, y, z, 1) and the rest point from
+ * caller) from `camera`: the displaced position from the eye with the shore's foam coverage there
+ * (x, y, z, foam; foam 0 without a seabed) and the rest point from
  * the eye with its mip level and ring (x, z, lod, ring), four floats a vertex. Frees the material.
  */
 export function captureVertices(
