@@ -26,9 +26,9 @@ uniform float sceneLogDepthRange;  // log2(far + 1), for the logarithmic depth b
 #define SCENE_MARCH_STEPS 24   // even steps across the screen along a ray (sceneAlongRay)
 #define SCENE_MARCH_REFINE 5   // halvings of the step where the ray passes behind the scene
 
-// The view-space point drawn into the capture at screen position uv (0..1).
-vec3 capturedViewPoint(vec2 uv) {
-  float depth = texture(sceneDepth, uv).r;
+// The view-space point drawn into the capture at screen position uv (0..1), whose depth texel
+// there is `depth`.
+vec3 capturedViewPoint(vec2 uv, float depth) {
   float ndcZ = depth * 2.0 - 1.0;
   if (sceneDepthMode == SCENE_DEPTH_REVERSED) ndcZ = depth;
   if (sceneDepthMode == SCENE_DEPTH_LOGARITHMIC) {
@@ -39,9 +39,13 @@ vec3 capturedViewPoint(vec2 uv) {
   return point.xyz / point.w;
 }
 
-// Whether the capture drew nothing at uv (its depth is still the cleared far value).
-bool capturedNothing(vec2 uv) {
-  float depth = texture(sceneDepth, uv).r;
+// The view-space point drawn into the capture at uv.
+vec3 capturedViewPoint(vec2 uv) {
+  return capturedViewPoint(uv, texture(sceneDepth, uv).r);
+}
+
+// Whether a depth texel of the capture is still the cleared far value: nothing was drawn there.
+bool capturedNothing(float depth) {
   return sceneDepthMode == SCENE_DEPTH_REVERSED ? depth <= 0.0 : depth >= 1.0;
 }
 
@@ -67,18 +71,22 @@ vec3 sceneThroughWater(vec3 surfaceView, vec3 refracted, vec2 pixel, vec3 skyThr
   if (!sceneCaptured) return skyThroughWater;
   float waterHeight = heightAboveEye(surfaceView);
   vec2 straightUv = (pixel - sceneViewport.xy) * sceneViewport.zw;
-  vec3 behind = capturedViewPoint(straightUv);
+  // Each depth texel is read once: the one the ray ends on is kept for the coverage below.
+  float straightDepth = texture(sceneDepth, straightUv).r;
+  vec3 behind = capturedViewPoint(straightUv, straightDepth);
   // The sea is drawn over what is in front of it, so the scene straight behind is behind the surface
   // up to the capture's resolution; only what is under the water shows through it.
   bool straightCovered = texture(sceneColour, straightUv).a > 0.0 && heightAboveEye(behind) < waterHeight;
   if (straightCovered) edgeDistance = length(behind - surfaceView);
   vec2 uv = straightUv;
   vec3 point = behind;
+  float depth = straightDepth;
   for (int i = 0; i < SCENE_REFRACTION_STEPS; i++) {
     // Off the picture, the nearest point on its edge: the scene there goes on much as at its edge
     // (a bed), where the undistorted pixel's longer path would show a seam.
     vec2 next = clamp(screenPosition(surfaceView + refracted * length(point - surfaceView)), vec2(0.0), vec2(1.0));
-    vec3 found = capturedViewPoint(next);
+    float foundDepth = texture(sceneDepth, next).r;
+    vec3 found = capturedViewPoint(next, foundDepth);
     // What is drawn there may hide what the ray meets: an object above the water (in front of
     // what lies under it), or one on the far side of the surface point's depth from where the ray
     // goes (its view depth only grows, or only shrinks, along P + s·t, s > 0: nothing the ray meets
@@ -88,17 +96,19 @@ vec3 sceneThroughWater(vec3 surfaceView, vec3 refracted, vec2 pixel, vec3 skyThr
     if (heightAboveEye(found) > waterHeight || (found.z - surfaceView.z) * refracted.z < 0.0) {
       uv = straightUv;
       point = behind;
+      depth = straightDepth;
       break;
     }
     uv = next;
     point = found;
+    depth = foundDepth;
   }
   vec4 scene = texture(sceneColour, uv);
   // Something drawn above the water behind the surface (a mast beyond it) is not under it, and
   // where the depth (read without filtering) shows nothing drawn, the colour's alpha (filtered
   // across an object's outline) is not an object there: taken, the deep water's colour of the
   // far point drew dark lines along the outlines of objects under the water.
-  float coverage = heightAboveEye(point) < waterHeight && !capturedNothing(uv) ? scene.a : 0.0;
+  float coverage = heightAboveEye(point) < waterHeight && !capturedNothing(depth) ? scene.a : 0.0;
   if (coverage == 0.0) return skyThroughWater;
   // The capture's colour is premultiplied by its coverage (drawn over transparent black, and
   // filtered linearly at an object's outline): the object's own radiance is rgb/a.

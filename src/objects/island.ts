@@ -277,10 +277,37 @@ export function islandTerrainGeometry(): BufferGeometry {
   return geometry;
 }
 
+/**
+ * The terrain's triangles split at the waterline into two geometries over the same vertices: those
+ * that reach y = 0 or above, and those wholly under it. The sea's reflection skips a mesh wholly
+ * under the water (src/render/sceneCapture.ts), so the sea floor, most of the triangles, is not
+ * drawn into it for nothing.
+ */
+export function splitAtWaterline(geometry: BufferGeometry): { above: BufferGeometry; below: BufferGeometry } {
+  const index = geometry.getIndex()!;
+  const y = geometry.getAttribute('position');
+  const above: number[] = [];
+  const below: number[] = [];
+  for (let i = 0; i < index.count; i += 3) {
+    const [a, b, c] = [index.getX(i), index.getX(i + 1), index.getX(i + 2)];
+    (Math.max(y.getY(a), y.getY(b), y.getY(c)) < 0 ? below : above).push(a, b, c);
+  }
+  const part = (indices: number[]) => {
+    const piece = new BufferGeometry();
+    for (const name of Object.keys(geometry.attributes)) piece.setAttribute(name, geometry.getAttribute(name));
+    piece.setIndex(new Uint32BufferAttribute(indices, 1));
+    return piece;
+  };
+  return { above: part(above), below: part(below) };
+}
+
 export class Island extends Group {
   /** The sea floor the terrain is built from (give it to the ocean's seabed). */
   readonly seabed: Seabed = islandSeabed();
+  /** The terrain's triangles that reach the water's level or above (its vertices are all of the terrain's). */
   readonly terrain: Mesh<BufferGeometry, MeshStandardMaterial>;
+  /** The terrain's triangles wholly under the water, over the same vertices and material. */
+  readonly seaFloor: Mesh<BufferGeometry, MeshStandardMaterial>;
   /** The boat moored beside the pier's end. */
   readonly boat = new BoatModel();
   private readonly postGeometry = new BoxGeometry(0.3, 1, 0.3);
@@ -293,14 +320,18 @@ export class Island extends Group {
   constructor() {
     super();
     this.name = 'island';
-    this.terrain = new Mesh(islandTerrainGeometry(), new MeshStandardMaterial({ vertexColors: true, roughness: 0.95 }));
+    const { above, below } = splitAtWaterline(islandTerrainGeometry());
+    const ground = new MeshStandardMaterial({ vertexColors: true, roughness: 0.95 });
+    this.terrain = new Mesh(above, ground);
     this.terrain.name = 'island terrain';
+    this.seaFloor = new Mesh(below, ground);
+    this.seaFloor.name = 'island sea floor';
     const pier = new Group();
     pier.name = 'pier';
     this.posts = this.pierPosts();
     this.planks = this.pierDeck();
     pier.add(this.posts, this.planks);
-    this.add(this.terrain, pier);
+    this.add(this.terrain, this.seaFloor, pier);
     const [dx, dz] = PIER_DIRECTION;
     this.mooring = {
       x: PIER_START[0] + MOORING.along * dx - MOORING.across * dz,
@@ -362,6 +393,7 @@ export class Island extends Group {
 
   dispose(): void {
     this.terrain.geometry.dispose();
+    this.seaFloor.geometry.dispose();
     this.terrain.material.dispose();
     this.postGeometry.dispose();
     this.plankGeometry.dispose();

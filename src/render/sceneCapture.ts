@@ -7,7 +7,7 @@
  * instead. Everything the render changes on the renderer and the scene is put back, so it may run
  * inside another render (an object's onBeforeRender).
  */
-import { Color, type Camera, type Layers, type Object3D, type Scene, type WebGLRenderer, type WebGLRenderTarget } from 'three';
+import { Box3, Color, type Camera, type Layers, type Material, type Mesh, type Object3D, type Scene, type WebGLRenderer, type WebGLRenderTarget } from 'three';
 
 const savedClearColor = new Color();
 /** The seas' objects' visibility during a capture, kept between captures so that none makes an array. */
@@ -19,6 +19,9 @@ const seas = new Map<object, readonly Object3D[]>();
 let hidden: { list: readonly Object3D[]; set: ReadonlySet<Object3D> } | null = null;
 /** True while a capture renders: a sea drawn in it anyway (one never added) draws no capture of its own. */
 let capturing = false;
+/** The meshes a capture hid for lying under the water (belowWaterMeshes), kept between captures so that none makes an array. */
+const underWater: Object3D[] = [];
+const worldBox = new Box3();
 
 /**
  * Adds a sea's objects (`objects`, the array itself) to those every capture hides, or tells that
@@ -68,13 +71,53 @@ function onlySea(object: Object3D, sea: ReadonlySet<Object3D>): boolean {
 }
 
 /**
+ * Collects into `out` the visible meshes of `object` that lie wholly under the plane y = 0: their
+ * geometry's bounding box, placed in the world, has its top below it. Only plain meshes without
+ * children whose
+ * vertices are where their geometry says (no skinning, instances, morph targets, displacement map
+ * or vertex shader of the user's) are judged; anything else is kept.
+ */
+export function belowWaterMeshes(object: Object3D, out: Object3D[]): void {
+  if (!object.visible) return;
+  const mesh = object as Mesh;
+  // A mesh with children is kept: hiding it would hide them, which may reach above the water.
+  if (mesh.isMesh === true && object.children.length === 0 && plainVertices(mesh)) {
+    const geometry = mesh.geometry;
+    if (geometry.boundingBox === null) geometry.computeBoundingBox();
+    if (worldBox.copy(geometry.boundingBox!).applyMatrix4(mesh.matrixWorld).max.y < 0) out.push(mesh);
+  }
+  for (const child of object.children) belowWaterMeshes(child, out);
+}
+
+/** Whether a mesh's vertices are drawn where its geometry's positions put them. */
+function plainVertices(mesh: Mesh): boolean {
+  const kind = mesh as { isSkinnedMesh?: boolean; isInstancedMesh?: boolean; isBatchedMesh?: boolean };
+  if (kind.isSkinnedMesh === true || kind.isInstancedMesh === true || kind.isBatchedMesh === true) return false;
+  if (mesh.geometry.morphAttributes.position !== undefined) return false;
+  if (!Array.isArray(mesh.material)) return plainMaterial(mesh.material);
+  // A loop, not every(): this runs every frame and makes no closures.
+  for (const material of mesh.material) if (!plainMaterial(material)) return false;
+  return true;
+}
+
+/** A material that draws vertices where they are: not the user's own shader, no displacement map. */
+function plainMaterial(material: Material): boolean {
+  return (material as { isShaderMaterial?: boolean }).isShaderMaterial !== true && ((material as { displacementMap?: unknown }).displacementMap ?? null) === null;
+}
+
+/**
  * Renders `scene` from `camera` into `target` (cleared to transparent black, depth 1), drawing only
- * the objects whose layers meet `layers`, with every sea's objects hidden and no background.
+ * the objects whose layers meet `layers`, with every sea's objects hidden and no background. With
+ * `aboveWaterOnly` (the reflection, whose near plane is the water, y = 0) the meshes that lie
+ * wholly under the water are hidden too: clipped whole, they would cost their vertices and show
+ * nothing (the island's sea floor, most of its triangles).
  * Restores the renderer's target, clear colour and alpha, autoClear, XR and shadow-map updates, the
  * scene's background, the camera's layers and the seas' visibility.
  */
-export function renderSceneWithoutSea(renderer: WebGLRenderer, scene: Scene, camera: Camera, target: WebGLRenderTarget, layers: Layers): void {
+export function renderSceneWithoutSea(renderer: WebGLRenderer, scene: Scene, camera: Camera, target: WebGLRenderTarget, layers: Layers, aboveWaterOnly = false): void {
   const sea = hiddenSeaObjects().list;
+  underWater.length = 0;
+  if (aboveWaterOnly) belowWaterMeshes(scene, underWater);
   const previousTarget = renderer.getRenderTarget();
   const previousFace = renderer.getActiveCubeFace();
   const previousMipmap = renderer.getActiveMipmapLevel();
@@ -89,6 +132,7 @@ export function renderSceneWithoutSea(renderer: WebGLRenderer, scene: Scene, cam
   capturing = true;
   try {
     for (const object of sea) object.visible = false;
+    for (const object of underWater) object.visible = false;
     scene.background = null;
     camera.layers.mask = layers.mask;
     // The camera is placed by the caller: XR would replace it with the headset's. The shadows are
@@ -112,5 +156,7 @@ export function renderSceneWithoutSea(renderer: WebGLRenderer, scene: Scene, cam
     scene.background = previousBackground;
     camera.layers.mask = previousLayers;
     for (let i = 0; i < sea.length; i++) sea[i].visible = seaVisible[i];
+    // Only visible meshes were collected.
+    for (const object of underWater) object.visible = true;
   }
 }

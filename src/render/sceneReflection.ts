@@ -110,7 +110,7 @@ export class SceneReflection {
     this.placeCamera(camera);
     const mirror = this.camera;
     mirror.layers.mask = this.layers.mask & camera.layers.mask;
-    renderSceneWithoutSea(renderer, scene, mirror, target, mirror.layers);
+    renderSceneWithoutSea(renderer, scene, mirror, target, mirror.layers, true);
     // The shader works from the eye (vFromEye): the matrices take the eye's position in double
     // precision here, not in float32 there.
     camera.getWorldPosition(this.eye);

@@ -6,7 +6,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import type { BufferGeometry, Material, Mesh } from 'three';
-import { BEACH_FACING, CLIFF_FACING, HILLS, Island, ISLAND_BOUNDS, islandSeabed } from '../../src/objects/island';
+import { BEACH_FACING, CLIFF_FACING, HILLS, Island, ISLAND_BOUNDS, islandSeabed, islandTerrainGeometry } from '../../src/objects/island';
 
 const { depthAt, bounds } = islandSeabed();
 const [xMin, zMin, xMax, zMax] = bounds;
@@ -117,6 +117,28 @@ describe('Island', () => {
     const box = geometry.boundingBox!;
     expect([box.min.x, box.min.z, box.max.x, box.max.z]).toEqual(bounds.map((v) => Math.fround(v)));
     expect(geometry.getAttribute('color').count).toBe(position.count);
+  });
+
+  it('splits its triangles at the waterline: the sea floor wholly under y = 0, the rest reaching it, every triangle once', () => {
+    const whole = islandTerrainGeometry().getIndex()!.count;
+    const position = geometry.getAttribute('position');
+    const highest = (part: BufferGeometry, i: number) => {
+      const index = part.getIndex()!;
+      return Math.max(position.getY(index.getX(i)), position.getY(index.getX(i + 1)), position.getY(index.getX(i + 2)));
+    };
+    const floor = island.seaFloor.geometry;
+    expect(floor.getAttribute('position')).toBe(position);
+    expect(island.seaFloor.material).toBe(island.terrain.material);
+    let floorTop = -Infinity;
+    for (let i = 0; i < floor.getIndex()!.count; i += 3) floorTop = Math.max(floorTop, highest(floor, i));
+    let groundLowest = Infinity;
+    for (let i = 0; i < geometry.getIndex()!.count; i += 3) groundLowest = Math.min(groundLowest, highest(geometry, i));
+    expect(floorTop).toBeLessThan(0);
+    expect(groundLowest).toBeGreaterThanOrEqual(0);
+    expect(floor.getIndex()!.count + geometry.getIndex()!.count).toBe(whole);
+    // Most of the terrain is sea floor: the share the reflection no longer draws.
+    console.log(`island: ${floor.getIndex()!.count / 3} of ${whole / 3} triangles under the water`);
+    expect(floor.getIndex()!.count).toBeGreaterThan(whole / 2);
   });
 
   it('has sand at the waterline of the beach and grass on the hill (vertex colours)', () => {

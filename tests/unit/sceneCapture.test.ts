@@ -1,6 +1,6 @@
-import { Group, Mesh, Object3D, Scene } from 'three';
+import { BoxGeometry, Group, InstancedMesh, Mesh, MeshStandardMaterial, Object3D, Scene, ShaderMaterial } from 'three';
 import { describe, expect, test } from 'vitest';
-import { addSea, hiddenSeaObjects, holdsOnlySeas, removeSea } from '../../src/render/sceneCapture';
+import { addSea, belowWaterMeshes, hiddenSeaObjects, holdsOnlySeas, removeSea } from '../../src/render/sceneCapture';
 
 // The one list of sea objects every scene capture hides (src/render/sceneCapture.ts): the same
 // list from render to render (nothing made per frame), made again when a sea comes, grows or goes.
@@ -42,5 +42,39 @@ describe('the seas every capture hides', () => {
     expect(holdsOnlySeas(scene)).toBe(true);
     removeSea(sea);
     expect(holdsOnlySeas(scene)).toBe(false);
+  });
+});
+
+// The reflection's near plane is the water, y = 0 (sceneReflection.ts): a mesh whose vertices all
+// lie under it is clipped whole there, so its capture leaves it out. Only meshes whose vertices
+// are where their geometry's bounding box says are judged.
+describe('the meshes the reflection leaves out: wholly under the water', () => {
+  test('a box whose top is under y = 0 is left out; one reaching above, and any whose vertices may move, are kept', () => {
+    const scene = new Scene();
+    const box = new BoxGeometry(2, 2, 2); // y from −1 to 1 about its centre
+    const material = new MeshStandardMaterial();
+    const placed = (y: number, mesh: Mesh = new Mesh(box, material)) => {
+      mesh.position.y = y;
+      scene.add(mesh);
+      return mesh;
+    };
+    const sunk = placed(-1.01); // top at −0.01
+    placed(-0.99); // top at +0.01
+    const turned = placed(-1.01);
+    turned.rotation.x = Math.PI / 4; // its corners reach −1.01 + √2 > 0
+    placed(-5, new Mesh(box, new ShaderMaterial())); // a vertex shader of its own may move it
+    placed(-5, new InstancedMesh(box, material, 1)); // its instances are elsewhere
+    const child = new Mesh(box, material);
+    placed(-5).add(child); // a parent is kept (hidden, it would hide a child that may reach above); its sunk child is not
+    placed(-5).visible = false; // not drawn anyway
+    const inGroup = new Mesh(box, material);
+    const group = new Group();
+    group.position.y = -3;
+    group.add(inGroup);
+    scene.add(group);
+    scene.updateMatrixWorld();
+    const out: Object3D[] = [];
+    belowWaterMeshes(scene, out);
+    expect(out.map((o) => o.id)).toEqual([sunk, child, inGroup].map((o) => o.id));
   });
 });
