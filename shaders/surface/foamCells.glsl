@@ -1,12 +1,12 @@
-// Whitecaps seen from afar: where a pixel spans more sea than the foam's pattern resolves
-// (foam.glsl's foamPatternShown below 1), the coverage W the foam field gives is drawn as whole
-// white cells, not as a veil of opacity W over every pixel. From 1 km straight down a veil of 1 %
+// Whitecaps seen from afar: where a pixel spans more sea than the foam field's texel and the sea is
+// seen from above (foamCellOpacity says where), the coverage W the foam field gives is drawn as
+// whole white cells, not as a veil of opacity W over every pixel. From 1 km straight down a veil of 1 %
 // lifts the whole picture by about 2.5 levels and no pixel looks like a whitecap; a photograph shows
 // bright specks on dark water instead.
 //
 // The sea is cut into square cells a few pixel footprints wide (FOAM_CELL_FOOTPRINTS), fixed on the
 // rest plane (so they stay where they are from frame to frame and as the eye turns), each with a
-// value u uniform in (0, 1] from a hash of its place; a cell is white where u < W. Over many cells
+// value u uniform in (0, 1) from a hash of its place; a cell is white where u < W. Over many cells
 // the white share is E[W], the foam model's coverage (Monahan & O'Muircheartaigh 1980, through
 // src/layers/foamModel.ts), and each white cell is as bright as foam close up. The edge u·(1 ± 0.1)
 // fades a cell in and out as the coverage over it rises and falls, instead of switching it in one
