@@ -41,27 +41,34 @@ vec2 foamPattern(vec2 restPoint) {
   return vec2(smoothstep(0.2, 0.8, FOAM_COARSE_WEIGHT * coarse + FOAM_FINE_WEIGHT * fine.r), fine.g);
 }
 
-// How much of the pattern shows where the rest point changes by restPerPixelX/Y to the next pixel
-// across and down (dFdx, dFdy): 1 near, 0 where a pixel spans more than the pattern's finest
-// cells, whose pattern would alias into speckle.
-float foamPatternShown(vec2 restPerPixelX, vec2 restPerPixelY) {
-  vec2 footprint = abs(restPerPixelX) + abs(restPerPixelY);  // fwidth(restPoint): metres per pixel on the sea
-  return 1.0 - smoothstep(0.15, 0.6, max(footprint.x, footprint.y));
+// Metres of sea a pixel spans where the rest point changes by restPerPixelX/Y to the next pixel
+// across and down (dFdx, dFdy): fwidth(restPoint)'s larger component.
+float restFootprint(vec2 restPerPixelX, vec2 restPerPixelY) {
+  vec2 footprint = abs(restPerPixelX) + abs(restPerPixelY);
+  return max(footprint.x, footprint.y);
 }
+
+// How much of the pattern shows where a pixel spans `footprint` metres (restFootprint): 1 near, 0
+// where a pixel spans more than the pattern's finest cells, whose pattern would alias into speckle.
+float foamPatternShown(float footprint) {
+  return 1.0 - smoothstep(0.15, 0.6, footprint);
+}
+
+// The bubbles' mean opacity (foamOpacity's mix(0.65, 1, bubbles) over the bubbles' mean ½).
+#define FOAM_MEAN_BUBBLES 0.825
 
 // Opacity of the foam for a coverage in [0, 1], at a rest point whose pattern is `pattern`
 // (foamPattern) and changes by `patternPerPixel` to the next pixel (fwidth): inside a patch,
 // thinner and thicker bubbles (cells of 15 cm) let some water through. Where the pattern shows
-// less (`detail`, foamPatternShown) it fades into its average, the coverage times the bubbles'
-// mean opacity.
-float foamOpacity(float coverage, vec2 pattern, float patternPerPixel, float detail) {
-  const float meanBubbles = 0.825;
-  if (detail <= 0.0) return meanBubbles * coverage;
+// less (`detail`, foamPatternShown) it fades into `far`, the opacity of the foam seen from afar
+// (foamCells.glsl's foamCellOpacity, whose mean is the coverage times FOAM_MEAN_BUBBLES).
+float foamOpacity(float coverage, vec2 pattern, float patternPerPixel, float detail, float far) {
+  if (detail <= 0.0) return far;
   // The patch's edge spread over about a pixel, so that it does not crawl as the sea moves.
   float softness = clamp(patternPerPixel, 0.04, 0.2);
   float bubbles = mix(0.65, 1.0, pattern.y);
   float detailed = bubbles * smoothstep(pattern.x - softness, pattern.x + softness, coverage);
-  return mix(meanBubbles * coverage, detailed, detail);
+  return mix(far, detailed, detail);
 }
 
 // Light leaving the foam: a white diffuse (Lambertian) surface of albedo 0.8 under the sky's light

@@ -13,6 +13,7 @@
 #include "surface/waveLayers.glsl"
 #include "surface/seaLighting.glsl"
 #include "surface/foam.glsl"
+#include "surface/foamCells.glsl"
 #include "surface/foamStreaks.glsl"
 #include "surface/spray.glsl"
 #if SCENE_REFRACTIONS == 1
@@ -88,7 +89,8 @@ void main() {
   // taken before any branch: derivatives are defined only where every pixel of a 2×2 quad runs the
   // same code.
   vec2 restPerPixelX = dFdx(vRestFromEye), restPerPixelY = dFdy(vRestFromEye);
-  vec2 foamDetail = foamPattern(streakPatternPoint(vRestFromEye) + foamPatternOrigin);
+  vec2 foamRestPoint = streakPatternPoint(vRestFromEye) + foamPatternOrigin;
+  vec2 foamDetail = foamPattern(foamRestPoint);
   float foamDetailPerPixel = fwidth(foamDetail.x);
 #ifdef CAPTURE_POSITIONS
   // Geometry test: the displaced position with the foam the shore adds there (0 without a seabed), or
@@ -188,7 +190,8 @@ void main() {
   // The foam coverage: where its pattern shows, read for each pixel (the vertex stage's,
   // interpolated linearly over triangles whose cells are as large as the coverage's texels, ended a
   // patch in a triangle's straight edge); farther, the vertex stage's, at the vertex's mip level.
-  float foamShown = foamPatternShown(restPerPixelX, restPerPixelY);
+  float footprint = restFootprint(restPerPixelX, restPerPixelY);
+  float foamShown = foamPatternShown(footprint);
   float pixelFoam = blendedFoam(vBlend, texture(tFoam, largestUv).r, texture(tFoam, largestUv + copyOffset).r);
 #ifdef SEABED
   pixelFoam = min(pixelFoam + vShoreFoam, 1.0);
@@ -205,7 +208,10 @@ void main() {
   // Most of the sea has no foam: it pays for the foam's light only where there is (the pattern, two
   // texture lookups, is taken above for every pixel: its fwidth needs the neighbours).
   if (foamCoverage > FOAM_VISIBLE) {
-    float opacity = foamOpacity(foamCoverage, foamDetail, foamDetailPerPixel, foamShown);
+    // Where the pattern does not show, whole white cells with the coverage's share (foamCells.glsl).
+    float far = foamShown < 1.0 ? foamCellOpacity(foamCoverage, foamRestPoint, restPerPixelX, restPerPixelY,
+                                                      layerSizes[LAYER_COUNT - 1] / float(textureSize(tFoam, 0).x), FOAM_MEAN_BUBBLES) : 0.0;
+    float opacity = foamOpacity(foamCoverage, foamDetail, foamDetailPerPixel, foamShown, far);
     if (opacity > 0.0) colour = mix(colour, foamRadiance(normal, sunDirection, sunLight, environmentRadiance(normal)), min(opacity, 1.0));
   }
   colour = throughSpray(colour, vFromEye, vFromEye.y + cameraPosition.y, environmentRadiance(normalize(vec3(view.x, 0.0, view.z))));

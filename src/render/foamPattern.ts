@@ -156,5 +156,6 @@ export function foamPatternDefines(): Record<string, string> {
     FOAM_COARSE_WEIGHT: float(octave.weight),
     FOAM_FINE_TILE: float(FINE_FOAM_TILE.size),
     FOAM_FINE_WEIGHT: float(FINE_FOAM_TILE.octaves.reduce((sum, o) => sum + o.weight, 0)),
+    FOAM_PATTERN_PERIOD: float(FOAM_PATTERN_PERIOD),
   };
 }

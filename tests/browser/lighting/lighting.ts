@@ -44,6 +44,8 @@ export interface ViewRequest {
 
   /** ShadingOptions.scatterColor, linear RGB (DEFAULT_SHADING's when left out). */
   scatterColor?: [number, number, number];
+  /** SimulationParameters.foamAmount (1 when left out; 0 turns the foam off). */
+  foamAmount?: number;
   /** ShadingOptions.shadingMode ('full' when left out); 'height' shows each pixel's height. */
   shadingMode?: ShadingMode;
 }
@@ -72,11 +74,12 @@ let built = '';
 function render(request: ViewRequest): ViewResult {
   const step = QUALITY_STEPS[request.quality];
   const grid = simulationAtQuality(DEFAULT_PARAMETERS, step);
-  const key = JSON.stringify([request.windSpeed, grid]);
+  const foamAmount = request.foamAmount ?? 1;
+  const key = JSON.stringify([request.windSpeed, foamAmount, grid]);
   if (key !== built) {
     ocean?.removeFromParent();
     ocean?.dispose();
-    ocean = new Ocean(renderer, { windSpeed: request.windSpeed, seed: 5, path: 'gpu', worker: false, ...grid });
+    ocean = new Ocean(renderer, { windSpeed: request.windSpeed, foamAmount, seed: 5, path: 'gpu', worker: false, ...grid });
     scene.add(ocean);
     built = key;
   }
