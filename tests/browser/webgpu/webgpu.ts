@@ -132,14 +132,25 @@ function interpolationBound(ocean: Ocean, x: number, z: number, h: number): numb
   return (edge * edge * curvature) / 8;
 }
 
-/** heightAt of this Ocean and of the WebGL Ocean (JS path, no local waves) for the same options, at the same points and time. */
+/**
+ * heightAt and normalAt (x, y, z) of this Ocean and of the WebGL Ocean (JS path, no local waves)
+ * for the same options, at the same points and time, then again after both were given windSpeed 14
+ * by setParameters.
+ */
 function sameQueriesAsWebGL(points: [number, number][], t: number): { webgpu: number[]; webgl: number[] } {
   const ocean = new Ocean(renderer!, SEA);
   const gl = new WebGLRenderer();
   const reference = new WebGLOcean(gl, { ...SEA_PARAMETERS, path: 'js', localWaves: false, worker: false });
-  ocean.update(t);
-  reference.update(t);
-  const result = { webgpu: points.map(([x, z]) => ocean.heightAt(x, z)), webgl: points.map(([x, z]) => reference.heightAt(x, z)) };
+  const answers = (sea: Ocean | WebGLOcean) => points.flatMap(([x, z]) => [sea.heightAt(x, z), ...sea.normalAt(x, z).toArray()]);
+  const result = { webgpu: [] as number[], webgl: [] as number[] };
+  for (const windSpeed of [SEA_PARAMETERS.windSpeed, 14]) {
+    ocean.setParameters({ windSpeed });
+    reference.setParameters({ windSpeed });
+    ocean.update(t);
+    reference.update(t);
+    result.webgpu.push(...answers(ocean));
+    result.webgl.push(...answers(reference));
+  }
   ocean.dispose();
   reference.dispose();
   gl.dispose();
