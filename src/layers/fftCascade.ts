@@ -17,7 +17,7 @@ import type { LayerFieldsOnCpu, LayerFrame, LayerQueryFields, WaveLayer } from '
 
 /**
  * Which implementation computes a cascade's fields: makes its FftFieldSource (src/fft/fieldSource.ts)
- * for the renderer it draws with (a WebGLRenderer, or WebGPURenderer for src/webgpu/).
+ * for the renderer it draws with: a WebGLRenderer, or null where the fields need nothing of one (src/webgpu/).
  */
 export type FftBackend<Renderer = WebGLRenderer> = (renderer: Renderer, spectrum: InitialSpectrum) => FftFieldSource;
 
