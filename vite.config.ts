@@ -84,7 +84,8 @@ function workerWithoutSourceMap(): Plugin {
  *   The dev server serves the same pages, plus the pages the browser tests and benchmarks drive,
  *   so tests exercise exactly the modules the app ships.
  * - `vite build --mode lib`: the ES module library from src/index.ts (and the side-effecting
- *   src/embed/register.ts that defines <fft-ocean>) into dist/lib, with three left external
+ *   src/embed/register.ts that defines <fft-ocean>, and src/webgpu/index.ts, the Ocean for
+ *   WebGPURenderer, `three-fft-ocean/webgpu`) into dist/lib, with three left external
  *   (a peer dependency: the user's bundler or import map provides it). The GLSL files are bundled
  *   as strings (import.meta.glob ?raw in src/shaderSource.ts); the JS-path Web Worker
  *   (src/fft/waveFieldWorker.ts) becomes its own self-contained file next to the library, found
@@ -114,6 +115,7 @@ export default defineConfig(({ mode }) => ({
             entry: {
               'three-fft-ocean': resolve(root, 'src/index.ts'),
               register: resolve(root, 'src/embed/register.ts'),
+              webgpu: resolve(root, 'src/webgpu/index.ts'),
             },
             formats: ['es' as const],
           },

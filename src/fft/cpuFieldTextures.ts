@@ -29,6 +29,20 @@ import type { FieldArrays } from './fieldArrays';
 import { FieldWorker } from './fieldWorker';
 import type { WorkerReply } from './waveFieldWorker';
 
+/**
+ * What the device can do with RGBA32F textures: filter them (linear), and render to them (which
+ * generateMipmap needs). The one thing the JS path's textures ask of a renderer.
+ */
+export interface FloatTextureSupport {
+  readonly filterable: boolean;
+  readonly renderable: boolean;
+}
+
+/** What a WebGLRenderer's context can do with RGBA32F textures. */
+export function webglFloatTextureSupport(renderer: WebGLRenderer): FloatTextureSupport {
+  return { filterable: renderer.extensions.has('OES_texture_float_linear'), renderable: renderer.extensions.has('EXT_color_buffer_float') };
+}
+
 export class CpuFieldTextures implements FftFieldSource, CpuFieldsForQueries {
   readonly displacement: DataTexture;
   readonly derivatives: DataTexture;
@@ -44,16 +58,16 @@ export class CpuFieldTextures implements FftFieldSource, CpuFieldsForQueries {
   private velocitiesWanted = false;
 
   constructor(
-    renderer: WebGLRenderer,
+    support: FloatTextureSupport,
     private readonly spectrum: InitialSpectrum,
     useWorker: boolean,
   ) {
     const n = spectrum.resolution;
-    const filterable = renderer.extensions.has('OES_texture_float_linear');
+    const { filterable } = support;
     // generateMipmap renders into the texture: RGBA32F must also be renderable (EXT_color_buffer_float),
     // or it fails (GL_INVALID_OPERATION) and the levels hold garbage. There the levels are made
     // here, by the same 2×2 box filter, and uploaded with the texture.
-    const mipmapped = filterable && renderer.extensions.has('EXT_color_buffer_float');
+    const mipmapped = filterable && support.renderable;
     this.levelsInJs = filterable && !mipmapped;
     // Without a worker the textures show CpuWaveFields' own arrays: nothing is copied.
     this.fields = useWorker ? null : new CpuWaveFields(spectrum);

@@ -8,15 +8,18 @@
  * Owns its backend and its queries' copy (with their worker), and frees them in dispose().
  */
 import type { WebGLRenderer } from 'three';
-import { CpuFieldTextures } from '../fft/cpuFieldTextures';
+import { CpuFieldTextures, webglFloatTextureSupport } from '../fft/cpuFieldTextures';
 import type { FftFieldSource } from '../fft/fieldSource';
 import { GpuWaveFields, type GpuPrecision } from '../fft/gpuWaveFields';
 import type { InitialSpectrum, SpectrumOrigin } from '../spectrum/initialSpectrum';
 import { CascadeQueryFields } from './cascadeQueryFields';
 import type { LayerFieldsOnCpu, LayerFrame, LayerQueryFields, WaveLayer } from './waveLayer';
 
-/** Which implementation computes a cascade's fields: makes its FftFieldSource (src/fft/fieldSource.ts). */
-export type FftBackend = (renderer: WebGLRenderer, spectrum: InitialSpectrum) => FftFieldSource;
+/**
+ * Which implementation computes a cascade's fields: makes its FftFieldSource (src/fft/fieldSource.ts)
+ * for the renderer it draws with: a WebGLRenderer, or null where the fields need nothing of one (src/webgpu/).
+ */
+export type FftBackend<Renderer = WebGLRenderer> = (renderer: Renderer, spectrum: InitialSpectrum) => FftFieldSource;
 
 /** The GPU's fragment passes (src/fft/gpuWaveFields.ts) in `precision`. */
 export function gpuBackend(precision: GpuPrecision): FftBackend {
@@ -25,10 +28,10 @@ export function gpuBackend(precision: GpuPrecision): FftBackend {
 
 /** The JS FFT (src/fft/cpuFieldTextures.ts), in a worker if `worker`. */
 export function jsBackend(worker: boolean): FftBackend {
-  return (renderer, spectrum) => new CpuFieldTextures(renderer, spectrum, worker);
+  return (renderer, spectrum) => new CpuFieldTextures(webglFloatTextureSupport(renderer), spectrum, worker);
 }
 
-export class FftCascade implements WaveLayer {
+export class FftCascade<Renderer = WebGLRenderer> implements WaveLayer {
   readonly textures;
   readonly frame: LayerFrame;
   readonly movesSideways = true;
@@ -37,15 +40,15 @@ export class FftCascade implements WaveLayer {
   private readonly queries: CascadeQueryFields;
 
   constructor(
-    renderer: WebGLRenderer,
+    renderer: Renderer,
     readonly spectrum: InitialSpectrum,
     /** What made `spectrum`: the query worker builds its copy from it. */
     origin: SpectrumOrigin,
-    backend: FftBackend,
+    backend: FftBackend<Renderer>,
     /** Whether the queries' fields may be computed in a worker (else here, once per time asked). */
     queryWorkerWanted = true,
     /** The cascade this one replaces, whose queries' provisional copy's arrays it may take over. */
-    predecessor: FftCascade | null = null,
+    predecessor: FftCascade<Renderer> | null = null,
   ) {
     this.backend = backend(renderer, spectrum);
     this.queries = new CascadeQueryFields(spectrum, origin, this.backend.cpuFields, queryWorkerWanted, predecessor?.queries ?? null);

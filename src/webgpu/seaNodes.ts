@@ -1,0 +1,193 @@
+/**
+ * The WebGPU Ocean's surface as a TSL NodeMaterial: the same formulas as the WebGL Ocean's GLSL
+ * (each node cites the GLSL file it follows), written once more in TSL because WebGPURenderer does
+ * not run ShaderMaterial (three.js #26925). TSL compiles to WGSL on the WebGPU backend and to GLSL
+ * on WebGPURenderer's WebGL2 backend.
+ *
+ *   vertex:   P = x0 + Σ (λ·Dx, h, λ·Dz) over the cascades at the rest point x0, the largest one as
+ *             cos θ·P(x0) + sin θ·P(x0 + o) (shaders/surface/ocean.vert, src/layers/patchBlend.ts)
+ *   fragment: the normal from the summed slopes (shaders/surface/choppyNormal.glsl), then
+ *             c = R·c_sky(reflect) + (1 − R)·c_deep, R the exact Fresnel reflectance
+ *             (shaders/common/fresnel.glsl), c_deep the deep water's scatter colour
+ *             (shaders/surface/absorption.glsl: what a ray refracted into an infinitely deep sea sees)
+ */
+import { BackSide, type Texture } from 'three';
+import { MeshBasicNodeMaterial, type Node, type UniformNode } from 'three/webgpu';
+import {
+  abs,
+  attribute,
+  cameraPosition,
+  cameraProjectionMatrix,
+  cameraViewMatrix,
+  clamp,
+  cos,
+  cross,
+  Fn,
+  float,
+  log2,
+  max,
+  mix,
+  normalize,
+  positionGeometry,
+  positionWorld,
+  reflect,
+  select,
+  sin,
+  sqrt,
+  texture,
+  varying,
+  vec2,
+  vec3,
+  vec4,
+} from 'three/tsl';
+import { COPY_OFFSET, patchBlendUniforms } from '../layers/patchBlend';
+import type { WaveLayer } from '../layers/waveLayer';
+
+type FloatNode = Node<'float'>;
+type Vec2Node = Node<'vec2'>;
+type Vec3Node = Node<'vec3'>;
+type Vec4Node = Node<'vec4'>;
+
+/** The uniforms the surface and the sky share, which the Ocean sets. */
+export interface SeaUniforms {
+  /** λ, the choppiness. */
+  choppiness: UniformNode<'float'>;
+  /** n_w, water's refractive index. */
+  ior: UniformNode<'float'>;
+  /** Linear RGB of the light deep water scatters back. */
+  scatterColor: UniformNode<'vec3'>;
+  /** The sky's colour at the horizon and straight up, linear RGB. */
+  horizonColor: UniformNode<'vec3'>;
+  zenithColor: UniformNode<'vec3'>;
+}
+
+/**
+ * Exact Fresnel reflectance of unpolarized light, in its amplitude form (shaders/common/fresnel.glsl,
+ * course report §2.2, after Tessendorf 2001 §3.3):
+ *   r_s = (n1·cos θi − n2·cos θt)/(n1·cos θi + n2·cos θt),  r_p = (n2·cos θi − n1·cos θt)/(n2·cos θi + n1·cos θt),
+ *   R = ½·(r_s² + r_p²), n1·sin θi = n2·sin θt; 1 beyond the critical angle.
+ */
+export const fresnelReflectance = Fn(([cosIncident, n1, n2]: [FloatNode, FloatNode, FloatNode]) => {
+  const cosI = clamp(cosIncident, 0, 1);
+  const sinT = n1.div(n2).mul(sqrt(max(float(1).sub(cosI.mul(cosI)), 0)));
+  const cosT = sqrt(max(float(1).sub(sinT.mul(sinT)), 0));
+  const rs = n1.mul(cosI).sub(n2.mul(cosT)).div(n1.mul(cosI).add(n2.mul(cosT)));
+  const rp = n2.mul(cosI).sub(n1.mul(cosT)).div(n2.mul(cosI).add(n1.mul(cosT)));
+  return select(sinT.greaterThanEqual(1), float(1), rs.mul(rs).add(rp.mul(rp)).mul(0.5));
+});
+
+/**
+ * The sky the sea reflects and the background shows, along the unit direction `dir`: a gradient
+ * from the horizon colour to the zenith colour over the square root of the elevation's sine, and
+ * the deep water's colour below the horizon. A stand-in, not a model: the WebGL Ocean's analytic
+ * sky (shaders/sky/analyticSky.glsl, sun and clouds) is not ported yet.
+ */
+export function skyRadiance(uniforms: SeaUniforms, dir: Vec3Node): Vec3Node {
+  const up = sqrt(clamp(dir.y, 0, 1));
+  return select(dir.y.lessThan(0), uniforms.scatterColor, mix(uniforms.horizonColor, uniforms.zenithColor, up)) as unknown as Vec3Node;
+}
+
+/** Each layer's texture coordinates of the rest point x0: x0/size + ½ texel (ocean.vert's ringLayerUvOrigins, at the origin). */
+function layerUv(layer: WaveLayer, rest: Vec2Node): Vec2Node {
+  return rest.div(layer.frame.size).add(0.5 / layer.frame.resolution);
+}
+
+/**
+ * θ(x0) and its gradient of the largest layer's blend (patchBlend.ts): (cos θ, sin θ, ∂θ/∂x, ∂θ/∂z),
+ * with the components' phases at the world origin (this grid's positions are world coordinates).
+ */
+function blendWeights(size: number, rest: Vec2Node): Vec4Node {
+  const components = patchBlendUniforms(size, new Float64Array(12));
+  let theta: FloatNode = float(0);
+  let gradient: Vec2Node = vec2(0, 0);
+  for (let j = 0; j < 3; j++) {
+    const k = vec2(components[4 * j], components[4 * j + 1]);
+    const phase = rest.dot(k).add(components[4 * j + 2]);
+    theta = theta.add(sin(phase).mul(components[4 * j + 3]));
+    gradient = gradient.add(k.mul(cos(phase).mul(components[4 * j + 3])));
+  }
+  return vec4(cos(theta), sin(theta), gradient);
+}
+
+/**
+ * The surface's material over `layers` (the periodic FFT cascades, the largest last as
+ * orderLayers gives them, with the textures they hold now).
+ */
+export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms): MeshBasicNodeMaterial {
+  const material = new MeshBasicNodeMaterial();
+  material.name = 'OceanWebGPU';
+  const rest = positionGeometry.xz;
+  const cell = attribute<'float'>('cell', 'float');
+  const largest = layers.length - 1;
+  const copyOffset = vec2(COPY_OFFSET[0], COPY_OFFSET[1]);
+  const blend = blendWeights(layers[largest].frame.size, rest);
+
+  // Vertex: the displacement summed at the mip level that averages one cell (ocean.vert).
+  let displacement: Vec4Node = vec4(0, 0, 0, 0);
+  let blendSlope: Vec2Node = vec2(0, 0);
+  layers.forEach((layer, i) => {
+    const texel = layer.frame.size / layer.frame.resolution;
+    const level = max(log2(cell.div(texel)), 0);
+    const uv = layerUv(layer, rest);
+    const map = layer.textures.displacement.value as Texture;
+    const first = texture(map, uv).level(level);
+    if (i !== largest) {
+      displacement = displacement.add(first);
+      return;
+    }
+    const copy = texture(map, uv.add(copyOffset)).level(level);
+    displacement = displacement.add(first.mul(blend.x)).add(copy.mul(blend.y));
+    // The blend's own change adds (−sin θ·h1 + cos θ·h2)·∇θ to the height's slope (ocean.vert's vBlendSlope).
+    blendSlope = blend.zw.mul(copy.y.mul(blend.x).sub(first.y.mul(blend.y)));
+  });
+  const choppiness = uniforms.choppiness;
+  material.positionNode = vec3(rest.x.add(displacement.x.mul(choppiness)), displacement.y, rest.y.add(displacement.z.mul(choppiness)));
+  // Per vertex, as the WebGL Ocean: λ·∂Dx/∂z (a second-order part of the normal) and the blend's slope.
+  const crossDerivative = varying(displacement.w.mul(choppiness));
+  const blendSlopeAtFragment = varying(blendSlope);
+  const blendAtFragment = varying(blend.xy);
+
+  // Fragment: Σ (∂h/∂x, ∂h/∂z, ∂Dx/∂x, ∂Dz/∂z), mipmapped by the pixel's footprint (ocean.frag).
+  let derivatives: Vec4Node = vec4(0, 0, 0, 0);
+  layers.forEach((layer, i) => {
+    const uv = layerUv(layer, rest);
+    const map = layer.textures.derivatives.value as Texture;
+    if (i !== largest) {
+      derivatives = derivatives.add(texture(map, uv));
+      return;
+    }
+    derivatives = derivatives.add(texture(map, uv).mul(blendAtFragment.x)).add(texture(map, uv.add(copyOffset)).mul(blendAtFragment.y));
+  });
+  material.colorNode = Fn(() => {
+    const slopes = derivatives.xy.add(blendSlopeAtFragment);
+    const stretch = derivatives.zw.mul(choppiness);
+    // choppyNormal.glsl: ∂P/∂z0 × ∂P/∂x0 with ∂P/∂x0 = (1 + λ∂Dx/∂x, ∂h/∂x, λ∂Dx/∂z), ∂P/∂z0 = (λ∂Dx/∂z, ∂h/∂z, 1 + λ∂Dz/∂z).
+    const alongX = vec3(stretch.x.add(1), slopes.x, crossDerivative);
+    const alongZ = vec3(crossDerivative, slopes.y, stretch.y.add(1));
+    const normal = normalize(cross(alongZ, alongX));
+    const view = normalize(positionWorld.sub(cameraPosition));
+    const reflectance = fresnelReflectance(view.dot(normal).negate(), float(1), uniforms.ior);
+    const reflected = reflect(view, normal).toVar();
+    // A ray reflected downwards would hit the next wave: mirrored up (ocean.frag).
+    reflected.y.assign(abs(reflected.y));
+    return mix(uniforms.scatterColor, skyRadiance(uniforms, reflected), reflectance);
+  })();
+  return material;
+}
+
+/**
+ * The sky behind everything: a unit sphere seen from inside, drawn first without depth, at the far
+ * plane in every direction from the eye (so any camera's far plane holds it), shaded by skyRadiance.
+ */
+export function skyMaterial(uniforms: SeaUniforms): MeshBasicNodeMaterial {
+  const material = new MeshBasicNodeMaterial({ side: BackSide, depthTest: false, depthWrite: false });
+  material.name = 'OceanWebGPUSky';
+  const direction = positionGeometry;
+  material.vertexNode = Fn(() => {
+    const clip = cameraProjectionMatrix.mul(vec4(cameraViewMatrix.mul(vec4(direction, 0)).xyz, 1));
+    // Just inside the far plane: z = w would be clipped by rounding.
+    return vec4(clip.x, clip.y, clip.w.mul(0.99999), clip.w);
+  })();
+  material.colorNode = skyRadiance(uniforms, normalize(varying(direction)));
+  return material;
+}

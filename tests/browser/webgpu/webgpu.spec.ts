@@ -1,0 +1,157 @@
+import { expect, test, type Page } from '@playwright/test';
+import { mkdirSync, writeFileSync } from 'node:fs';
+import { PNG } from 'pngjs';
+import { BROWSER_ARGS, findBrowser } from '../../../scripts/browser.mjs';
+
+/** A decoded picture. */
+type Picture = InstanceType<typeof PNG>;
+
+// three-fft-ocean/webgpu on a real WebGPURenderer: its WebGL2 backend (forceWebGL, SwiftShader's
+// WebGL2) and its WebGPU backend (SwiftShader's WebGPU adapter, which Chromium gives localhost
+// pages with --enable-unsafe-webgpu: ../shared/BROWSER.md). This file alone launches with that flag.
+test.use({ launchOptions: { executablePath: findBrowser() ?? undefined, args: [...BROWSER_ARGS, '--enable-unsafe-webgpu'] } });
+test.describe.configure({ mode: 'serial' });
+
+let page: Page;
+const errors: string[] = [];
+
+test.beforeAll(async ({ browser }) => {
+  mkdirSync('.tmp', { recursive: true });
+  page = await browser.newPage({ viewport: { width: 320, height: 180 } });
+  page.on('pageerror', (error) => errors.push(error.message));
+  await page.goto('/tests/browser/webgpu/webgpu.html');
+  await expect(page).toHaveTitle('ready');
+});
+
+test.afterAll(async () => {
+  expect(errors).toEqual([]);
+  await page.close();
+});
+
+/** Mean and standard deviation of the luma of rows [from, to) of an RGBA picture, and its mean colour. */
+function rows(png: Picture, from: number, to: number): { mean: number; spread: number; rgb: number[] } {
+  let sum = 0;
+  let squares = 0;
+  const rgb = [0, 0, 0];
+  let count = 0;
+  for (let y = from; y < to; y++) {
+    for (let x = 0; x < png.width; x++) {
+      const i = 4 * (y * png.width + x);
+      const luma = 0.2126 * png.data[i] + 0.7152 * png.data[i + 1] + 0.0722 * png.data[i + 2];
+      sum += luma;
+      squares += luma * luma;
+      for (let c = 0; c < 3; c++) rgb[c] += png.data[i + c];
+      count++;
+    }
+  }
+  const mean = sum / count;
+  return { mean, spread: Math.sqrt(squares / count - mean * mean), rgb: rgb.map((c) => c / count) };
+}
+
+/** Pixels that differ by more than 8 levels in some channel between two pictures, as a fraction. */
+function changed(a: Picture, b: Picture, from: number, to: number): number {
+  let count = 0;
+  for (let y = from; y < to; y++) {
+    for (let x = 0; x < a.width; x++) {
+      const i = 4 * (y * a.width + x);
+      if ([0, 1, 2].some((c) => Math.abs(a.data[i + c] - b.data[i + c]) > 8)) count++;
+    }
+  }
+  return count / ((to - from) * a.width);
+}
+
+function backendTests(backend: 'webgl' | 'webgpu'): void {
+  test.describe(`WebGPURenderer, ${backend === 'webgl' ? 'WebGL2 backend (forceWebGL)' : 'WebGPU backend'}`, () => {
+    test('gets the backend asked for', async () => {
+      const got = await page.evaluate((b) => window.webgpuOcean.open(b), backend);
+      console.log(`${backend}: WebGPU backend ${got.isWebGPUBackend} (${got.reason})`);
+      // No skipping: without an adapter the WebGPU half fails here, saying why.
+      expect(got.isWebGPUBackend, got.reason).toBe(backend === 'webgpu');
+    });
+
+    test('draws sky above the horizon and a moving sea below it', async () => {
+      const picture = async (t: number) => {
+        const { width, height, data } = await page.evaluate((time) => window.webgpuOcean.drawView(time), t);
+        const png = new PNG({ width, height });
+        png.data.set(data);
+        writeFileSync(`.tmp/webgpu-${backend}-t${t}.png`, PNG.sync.write(png));
+        return png;
+      };
+      const first = await picture(2);
+      const later = await picture(2.5);
+      // The horizon is ~21 rows above the middle (4 m up, looking 4.3° down in a 60° field of 180 rows).
+      const sky = rows(first, 0, 50);
+      const sea = rows(first, 110, 180);
+      const moved = changed(first, later, 110, 180);
+      console.log(`${backend}: sky luma ${sky.mean.toFixed(1)} (rgb ${sky.rgb.map((c) => c.toFixed(0))}), sea luma ${sea.mean.toFixed(1)} ± ${sea.spread.toFixed(1)} (rgb ${sea.rgb.map((c) => c.toFixed(0))}), ${(100 * moved).toFixed(1)} % of sea pixels changed in 0.5 s`);
+      expect(sky.mean).toBeGreaterThan(100); // a bright sky, not black
+      expect(sky.rgb[2]).toBeGreaterThan(sky.rgb[0]); // blue
+      expect(sea.mean).toBeGreaterThan(10); // not black
+      expect(sea.mean).toBeLessThan(sky.mean); // the sea reflects only part of the sky
+      expect(sea.spread).toBeGreaterThan(3); // waves, not a flat colour
+      expect(moved).toBeGreaterThan(0.3); // the waves move
+    });
+
+    test('draws the surface where heightAt puts it', async () => {
+      // Patches whose finest texel (40/64 m) is coarser than the grid's 0.5 m cell: every vertex
+      // samples level 0, as heightAt does, so the drawn surface differs from heightAt only by the
+      // linear interpolation between vertices, which interpolationBound (webgpu.ts) bounds per pixel.
+      const options = { patchSizes: [40, 231, 1337] };
+      const now = await page.evaluate((o) => window.webgpuOcean.heightAgreement(3, -5, 16, 2, o), options);
+      const rms = (values: number[]) => Math.sqrt(values.reduce((s, v) => s + v * v, 0) / values.length);
+      const difference = now.drawn.map((y, i) => y - now.queried[i]);
+      const worst = Math.max(...difference.map(Math.abs));
+      // 1 mm for float32 rounding of positions of metres (~1e-6 m) and of the fields' sums, well above both.
+      const outside = difference.filter((d, i) => Math.abs(d) > now.bound[i] + 1e-3).length;
+      // A control: the surface drawn 0.5 s later, against the queries at 2 s.
+      const later = await page.evaluate((o) => window.webgpuOcean.heightAgreement(3, -5, 16, 2.5, o), options);
+      const control = rms(later.drawn.map((y, i) => y - now.queried[i]));
+      console.log(
+        `${backend}: ${now.drawn.length} pixels, height RMS ${now.heightRms.toFixed(3)} m, drawn − heightAt RMS ${rms(difference).toExponential(2)} m, ` +
+          `worst ${worst.toExponential(2)} m, interpolation bound RMS ${rms(now.bound).toExponential(2)} m, ${outside} pixels beyond it; control (0.5 s later) ${control.toFixed(3)} m`,
+      );
+      expect(now.drawn.length).toBeGreaterThan(0.95 * 64 * 64);
+      expect(outside).toBe(0);
+      expect(control).toBeGreaterThan(10 * rms(difference));
+    });
+
+    test('dispose returns renderer.info.memory to its baseline', async () => {
+      const { before, during, after } = await page.evaluate(() => window.webgpuOcean.memoryCycle());
+      console.log(`${backend}: memory before ${JSON.stringify(before)}, drawing ${JSON.stringify(during)}, after dispose ${JSON.stringify(after)}`);
+      expect(during.textures).toBeGreaterThan(before.textures); // the cascades' fields
+      expect(during.geometries).toBeGreaterThan(before.geometries);
+      expect(after).toEqual(before);
+    });
+  });
+}
+
+
+backendTests('webgl');
+
+// On the WebGL2 backend's page, before the WebGPU backend: a WebGLRenderer made in a page whose
+// WebGPU device lives made that device drop ("Instance dropped in popErrorScope") here.
+test.describe('three-fft-ocean/webgpu', () => {
+  test('heightAt and normalAt equal the WebGL Ocean\'s for the same options and time, also after setParameters', async () => {
+    const points: [number, number][] = [[0, 0], [3.3, -7.1], [-120, 45.5], [800, 900]];
+    const { webgpu, webgl } = await page.evaluate((p) => window.webgpuOcean.sameQueriesAsWebGL(p, 3.7), points);
+    // Four numbers a point (height, normal), four points, two wind speeds.
+    const heights = (values: number[]) => values.filter((_, i) => i % 4 === 0).map((h) => h.toFixed(4));
+    console.log(`heightAt: WebGPU Ocean ${heights(webgpu)}, WebGL Ocean ${heights(webgl)}`);
+    expect(webgpu).toEqual(webgl);
+    expect(new Set(heights(webgpu)).size).toBe(2 * points.length); // a real sea that the new wind changed
+  });
+
+  test('bad input: the wrong renderer, what is not drawn yet and a bad parameter throw clear errors', async () => {
+    const thrown = await page.evaluate(() => window.webgpuOcean.badInputs());
+    expect(thrown[0][0]).toBe('UnsupportedError');
+    expect(thrown[0][1]).toContain('WebGPURenderer');
+    expect(thrown[1][0]).toBe('UnsupportedError');
+    expect(thrown[1][1]).toContain('scene reflections');
+    expect(thrown[2][0]).toBe('UnsupportedError');
+    expect(thrown[2][1]).toContain('GPU FFT');
+    expect(thrown[3][0]).toBe('ParameterError');
+    expect(thrown[3][1]).toContain('windSpeed');
+  });
+});
+
+backendTests('webgpu');

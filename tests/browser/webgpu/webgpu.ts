@@ -1,0 +1,208 @@
+/**
+ * Test page for three-fft-ocean/webgpu: the WebGPU Ocean on a real WebGPURenderer, on its WebGL2
+ * backend (forceWebGL) or its WebGPU backend, driven by tests/browser/webgpu/webgpu.spec.ts.
+ */
+import { FloatType, NoToneMapping, OrthographicCamera, PerspectiveCamera, RenderTarget, Scene, SRGBColorSpace, type Mesh } from 'three';
+import { MeshBasicNodeMaterial, WebGPURenderer } from 'three/webgpu';
+import { positionWorld, vec4 } from 'three/tsl';
+import { Ocean, type WebGPUOceanOptions } from '../../../src/webgpu/index';
+import { Ocean as WebGLOcean } from '../../../src/ocean';
+import { WebGLRenderer } from 'three';
+
+/** A small sea for quick tests: N = 64, the JS FFT on this thread (the fields are there at once). */
+const SEA_PARAMETERS = { resolution: 64, windSpeed: 10, seed: 3 };
+const SEA: WebGPUOceanOptions = { ...SEA_PARAMETERS, worker: false };
+
+let renderer: WebGPURenderer | null = null;
+
+/**
+ * A WebGPURenderer of 320×180 on `backend`, initialized; which backend it got. Asked for WebGPU
+ * where there is no adapter, three falls back to its WebGL2 backend: `reason` says why.
+ */
+async function open(backend: 'webgl' | 'webgpu'): Promise<{ isWebGPUBackend: boolean; reason: string }> {
+  renderer?.dispose();
+  renderer?.domElement.remove();
+  renderer = new WebGPURenderer({ forceWebGL: backend === 'webgl', antialias: false });
+  renderer.setSize(320, 180);
+  renderer.setPixelRatio(1);
+  renderer.toneMapping = NoToneMapping;
+  document.body.append(renderer.domElement);
+  await renderer.init();
+  const isWebGPUBackend = (renderer.backend as { isWebGPUBackend?: boolean }).isWebGPUBackend === true;
+  const reason = backend === 'webgl' ? 'forceWebGL' : isWebGPUBackend ? 'WebGPU adapter' : navigator.gpu ? 'navigator.gpu has no adapter' : 'navigator.gpu is undefined (no --enable-unsafe-webgpu, or not a secure context)';
+  return { isWebGPUBackend, reason };
+}
+
+/**
+ * The default view, 4 m over the sea looking slightly down towards −z, at time t, drawn into an
+ * sRGB 8-bit target of the canvas's size and read back, rows from the top. (Into a target, not the
+ * canvas: headless Chromium's SwiftShader WebGPU lost its device after presenting one frame to a
+ * canvas, even of an empty scene, "A valid external Instance reference no longer exists".)
+ */
+async function drawView(t: number): Promise<{ width: number; height: number; data: number[] }> {
+  const scene = new Scene();
+  const ocean = new Ocean(renderer!, SEA);
+  scene.add(ocean);
+  const camera = new PerspectiveCamera(60, 16 / 9, 0.5, 30_000);
+  camera.position.set(0, 4, 0);
+  camera.lookAt(0, 1, -40);
+  const [width, height] = [320, 180];
+  const target = new RenderTarget(width, height);
+  target.texture.colorSpace = SRGBColorSpace;
+  ocean.update(t);
+  renderer!.setRenderTarget(target);
+  renderer!.render(scene, camera);
+  renderer!.setRenderTarget(null);
+  const pixels = (await renderer!.readRenderTargetPixelsAsync(target, 0, 0, width, height)) as Uint8Array;
+  target.dispose();
+  ocean.dispose();
+  // WebGL's rows come bottom first, WebGPU's top first.
+  const bottomFirst = !(renderer!.backend as { isWebGPUBackend?: boolean }).isWebGPUBackend;
+  const data: number[] = [];
+  for (let row = 0; row < height; row++) data.push(...pixels.subarray(4 * width * (bottomFirst ? height - 1 - row : row), 4 * width * ((bottomFirst ? height - 1 - row : row) + 1)));
+  return { width, height, data };
+}
+
+/**
+ * The displaced surface read back from the real vertex node: the surface's positionNode with the
+ * world position as its colour, drawn straight down by an orthographic camera over a `side` m square
+ * centred on (cx, cz) into an RGBA32F target; for every pixel the sea covers, the drawn (x, y, z)
+ * and ocean.heightAt(x, z). Also the same at another time, for a control.
+ */
+async function heightAgreement(cx: number, cz: number, side: number, t: number, options: WebGPUOceanOptions): Promise<{ drawn: number[]; queried: number[]; bound: number[]; heightRms: number }> {
+  const scene = new Scene();
+  const ocean = new Ocean(renderer!, { ...SEA, ...options });
+  scene.add(ocean);
+  ocean.update(t);
+  const surface = ocean.getObjectByName('OceanWebGPU surface') as Mesh<never, MeshBasicNodeMaterial>;
+  const positions = new MeshBasicNodeMaterial();
+  positions.positionNode = surface.material.positionNode;
+  // The whole fragment output: no colour-space conversion or tone mapping on the way.
+  positions.fragmentNode = vec4(positionWorld, 1);
+  const shaded = surface.material;
+  surface.material = positions;
+  ocean.getObjectByName('OceanWebGPU sky')!.visible = false;
+  const size = 64;
+  const target = new RenderTarget(size, size, { type: FloatType });
+  const camera = new OrthographicCamera(-side / 2, side / 2, side / 2, -side / 2, 1, 200);
+  camera.position.set(cx, 100, cz);
+  camera.up.set(0, 0, -1);
+  camera.lookAt(cx, 0, cz);
+  renderer!.setRenderTarget(target);
+  renderer!.setClearColor(0x000000, 0);
+  renderer!.render(scene, camera);
+  renderer!.setRenderTarget(null);
+  const pixels = (await renderer!.readRenderTargetPixelsAsync(target, 0, 0, size, size)) as Float32Array;
+  const drawn: number[] = [];
+  const queried: number[] = [];
+  const bound: number[] = [];
+  let sumSquares = 0;
+  for (let p = 0; p < size * size; p++) {
+    if (pixels[4 * p + 3] !== 1) continue; // not the sea
+    const [x, y, z] = [pixels[4 * p], pixels[4 * p + 1], pixels[4 * p + 2]];
+    drawn.push(y);
+    const h = ocean.heightAt(x, z);
+    queried.push(h);
+    bound.push(interpolationBound(ocean, x, z, h));
+    sumSquares += y * y;
+  }
+  surface.material = shaded;
+  positions.dispose();
+  target.dispose();
+  ocean.dispose();
+  return { drawn, queried, bound, heightRms: Math.sqrt(sumSquares / Math.max(drawn.length, 1)) };
+}
+
+/**
+ * How far the drawn triangles may lie from the surface at (x, z): the mesh is linear between
+ * vertices, and linear interpolation over an edge of length L misses a function by at most
+ * L²/8·max|f''| along it (the remainder of linear interpolation, e.g. Burden & Faires, Numerical
+ * Analysis, Theorem 3.3). L is the cell's diagonal, √2·0.5 m (seaGrid.ts' near cells), stretched by
+ * up to 1.5 where the choppy displacement pulls vertices apart; f'' is heightAt's second difference
+ * over half a metre along x, z and both diagonals, the largest of the four.
+ */
+function interpolationBound(ocean: Ocean, x: number, z: number, h: number): number {
+  const step = 0.5;
+  let curvature = 0;
+  for (const [dx, dz] of [[1, 0], [0, 1], [Math.SQRT1_2, Math.SQRT1_2], [Math.SQRT1_2, -Math.SQRT1_2]]) {
+    const second = (ocean.heightAt(x + step * dx, z + step * dz) - 2 * h + ocean.heightAt(x - step * dx, z - step * dz)) / (step * step);
+    curvature = Math.max(curvature, Math.abs(second));
+  }
+  const edge = 1.5 * Math.SQRT2 * 0.5;
+  return (edge * edge * curvature) / 8;
+}
+
+/**
+ * heightAt and normalAt (x, y, z) of this Ocean and of the WebGL Ocean (JS path, no local waves)
+ * for the same options, at the same points and time, then again after both were given windSpeed 14
+ * by setParameters.
+ */
+function sameQueriesAsWebGL(points: [number, number][], t: number): { webgpu: number[]; webgl: number[] } {
+  const ocean = new Ocean(renderer!, SEA);
+  const gl = new WebGLRenderer();
+  const reference = new WebGLOcean(gl, { ...SEA_PARAMETERS, path: 'js', localWaves: false, worker: false });
+  const answers = (sea: Ocean | WebGLOcean) => points.flatMap(([x, z]) => [sea.heightAt(x, z), ...sea.normalAt(x, z).toArray()]);
+  const result = { webgpu: [] as number[], webgl: [] as number[] };
+  for (const windSpeed of [SEA_PARAMETERS.windSpeed, 14]) {
+    ocean.setParameters({ windSpeed });
+    reference.setParameters({ windSpeed });
+    ocean.update(t);
+    reference.update(t);
+    result.webgpu.push(...answers(ocean));
+    result.webgl.push(...answers(reference));
+  }
+  ocean.dispose();
+  reference.dispose();
+  gl.dispose();
+  return result;
+}
+
+/** renderer.info.memory before an Ocean, while it draws, and after its dispose (and a frame after). */
+async function memoryCycle(): Promise<{ before: Record<string, number>; during: Record<string, number>; after: Record<string, number> }> {
+  const scene = new Scene();
+  const camera = new PerspectiveCamera(60, 16 / 9, 0.5, 30_000);
+  camera.position.set(0, 4, 0);
+  renderer!.render(scene, camera);
+  const memory = () => ({ geometries: renderer!.info.memory.geometries, textures: renderer!.info.memory.textures });
+  const before = memory();
+  const ocean = new Ocean(renderer!, SEA);
+  scene.add(ocean);
+  ocean.update(1);
+  renderer!.render(scene, camera);
+  ocean.update(1.1);
+  renderer!.render(scene, camera);
+  const during = memory();
+  ocean.dispose();
+  renderer!.render(scene, camera);
+  return { before, during, after: memory() };
+}
+
+/** What each bad input throws: [name, message]. */
+function badInputs(): [string, string][] {
+  const gl = new WebGLRenderer();
+  const attempts: (() => unknown)[] = [
+    () => new Ocean(gl as never),
+    () => new Ocean(renderer!, { reflections: 'scene' }),
+    () => new Ocean(renderer!, { path: 'gpu' }),
+    () => new Ocean(renderer!, { windSpeed: -1 }),
+  ];
+  const thrown = attempts.map((attempt): [string, string] => {
+    try {
+      (attempt() as Ocean).dispose();
+      return ['none', ''];
+    } catch (error) {
+      return [(error as Error).name, (error as Error).message];
+    }
+  });
+  gl.dispose();
+  return thrown;
+}
+
+const harness = { open, drawView, heightAgreement, sameQueriesAsWebGL, memoryCycle, badInputs };
+declare global {
+  interface Window {
+    webgpuOcean: typeof harness;
+  }
+}
+window.webgpuOcean = harness;
+document.title = 'ready';
