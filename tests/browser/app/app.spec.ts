@@ -8,6 +8,7 @@ import { DEFAULT_PARAMETERS } from '../../../src/parameters/parameters';
 import { beaufortPreset, presetCloudCover, SEA_PRESETS } from '../../../src/spectrum/presets';
 import { seaState } from '../../../src/spectrum/seaState';
 import { boatWake } from '../shared/boatWake';
+import { sharedPages } from '../shared/sharedPages';
 import { slowAppFramesUntil, slowFrames } from '../shared/slowFrames';
 import { withHiddenCapabilities } from '../shared/hiddenCapabilities';
 import { withoutWebGL2 } from '../shared/withoutWebGL2';
@@ -131,106 +132,141 @@ test.describe('the app', () => {
     expect(errors).toEqual([]);
   });
 
-  test('W moves along v by speed × time; A moves along l = u × v, left on screen; Shift goes down, through the surface', async ({ page }) => {
-    await openApp(page, 'resolution=32&paused=1&cam=0,10,0,30,-10', { width: 320, height: 180 });
-    await page.evaluate(() => (window.oceanApp.controls.speed = 10));
+  test.describe('fly controls and the canvas size', () => {
+    /**
+     * The app at one view, paused, in a small viewport, for the tests of the fly controls and of the
+     * canvas's size: one page load for them all (a load costs more than most of these tests take),
+     * the camera, the panel (closed) and the viewport set back before each.
+     */
+    const FLY_START = { position: [0, 10, 0] as Vec3, yaw: 30, pitch: -10 };
+    const FLY_SIZE = { width: 320, height: 180 };
+    const flyPage = sharedPages(
+      async (page) => void (await openApp(page, 'resolution=32&paused=1&cam=0,10,0,30,-10', FLY_SIZE, false)),
+      async (page) => {
+        if (page.viewportSize()?.width !== FLY_SIZE.width || page.viewportSize()?.height !== FLY_SIZE.height) await page.setViewportSize(FLY_SIZE);
+        await page.evaluate((start) => {
+          window.oceanApp.controls.pose = start;
+          window.oceanApp.panel.gui.open(false);
+        }, FLY_START);
+        await frames(page, 2);
+      },
+    );
 
-    const before = await pose(page);
-    const forward = await holdKey(page, 'w', 1500);
-    const afterW = await pose(page);
-    const moved = sub(afterW.position, before.position);
-    const v = viewDirection(30, -10);
-    expect(dot(moved, v) / length(moved)).toBeGreaterThan(0.99999);
-    // Integrated per frame: off by at most about a frame at each end.
-    expect(Math.abs(length(moved) - 10 * forward.held)).toBeLessThan(10 * 2 * forward.longestFrame + 0.5);
-    expect(length(moved)).toBeGreaterThan(10 * 0.5 * forward.held);
-    expect(afterW.yaw).toBe(30);
-    expect(afterW.pitch).toBe(-10);
+    test('W moves along v by speed × time; A moves along l = u × v, left on screen; Shift goes down, through the surface', async ({ browser }) => {
+      const page = await flyPage(browser);
+      await page.evaluate(() => (window.oceanApp.controls.speed = 10));
 
-    await holdKey(page, 'a', 800);
-    const afterA = await pose(page);
-    const left = sub(afterA.position, afterW.position);
-    expect(length(left)).toBeGreaterThan(1);
-    const l: Vec3 = [v[2], 0, -v[0]]; // u × v with u = (0, 1, 0)
-    expect(dot(left, l) / (length(left) * length(l))).toBeGreaterThan(0.99999);
-    expect(Math.abs(left[1])).toBeLessThan(1e-9);
-    // Left on screen: the camera's own x axis (its right) points the other way.
-    const rightAxis = await page.evaluate(() => window.oceanApp.camera.matrixWorld.elements.slice(0, 3) as [number, number, number]);
-    expect(dot(left, rightAxis) / length(left)).toBeLessThan(-0.99999);
+      const before = await pose(page);
+      const forward = await holdKey(page, 'w', 1500);
+      const afterW = await pose(page);
+      const moved = sub(afterW.position, before.position);
+      const v = viewDirection(30, -10);
+      expect(dot(moved, v) / length(moved)).toBeGreaterThan(0.99999);
+      // Integrated per frame: off by at most about a frame at each end.
+      expect(Math.abs(length(moved) - 10 * forward.held)).toBeLessThan(10 * 2 * forward.longestFrame + 0.5);
+      expect(length(moved)).toBeGreaterThan(10 * 0.5 * forward.held);
+      expect(afterW.yaw).toBe(30);
+      expect(afterW.pitch).toBe(-10);
 
-    await holdKey(page, 'Space', 500);
-    expect((await pose(page)).position[1]).toBeGreaterThan(afterA.position[1] + 1);
-    const high = (await pose(page)).position[1];
-    const down = await holdKey(page, 'Shift', 2000); // 10 m/s down for 2 s from ~13 m: under the water
-    const low = (await pose(page)).position[1];
-    // The camera dives (down to 200 m: flyControls.ts MIN_HEIGHT), by speed × time.
-    expect(low).toBeLessThan(0);
-    expect(Math.abs(high - low - 10 * down.held)).toBeLessThan(10 * 2 * down.longestFrame + 0.5);
-  });
+      await holdKey(page, 'a', 800);
+      const afterA = await pose(page);
+      const left = sub(afterA.position, afterW.position);
+      expect(length(left)).toBeGreaterThan(1);
+      const l: Vec3 = [v[2], 0, -v[0]]; // u × v with u = (0, 1, 0)
+      expect(dot(left, l) / (length(left) * length(l))).toBeGreaterThan(0.99999);
+      expect(Math.abs(left[1])).toBeLessThan(1e-9);
+      // Left on screen: the camera's own x axis (its right) points the other way.
+      const rightAxis = await page.evaluate(() => window.oceanApp.camera.matrixWorld.elements.slice(0, 3) as [number, number, number]);
+      expect(dot(left, rightAxis) / length(left)).toBeLessThan(-0.99999);
 
-  test('dragging turns the view: right increases yaw, up increases pitch, pitch clamps at ±89°', async ({ page }) => {
-    await openApp(page, 'resolution=32&paused=1&cam=0,10,0,30,-10', { width: 320, height: 180 }, false);
-    const start = await pose(page);
-    await page.mouse.move(100, 120);
-    await page.mouse.down();
-    await page.mouse.move(150, 100, { steps: 5 }); // 50 px right, 20 px up
-    await page.mouse.up();
-    const turned = await pose(page);
-    expect(turned.yaw).toBeCloseTo(start.yaw + 50 * 0.15, 6);
-    expect(turned.pitch).toBeCloseTo(start.pitch + 20 * 0.15, 6);
-    expect(turned.position).toEqual(start.position);
-    // The new view leans to the old right (−l) and up.
-    const oldView = viewDirection(start.yaw, start.pitch);
-    const newView = viewDirection(turned.yaw, turned.pitch);
-    const oldLeft: Vec3 = [oldView[2], 0, -oldView[0]];
-    expect(dot(newView, oldLeft)).toBeLessThan(0);
-    expect(newView[1]).toBeGreaterThan(oldView[1]);
-    // And the camera really looks there.
-    const cameraForward = await page.evaluate(() => {
-      const e = window.oceanApp.camera.matrixWorld.elements;
-      return [-e[8], -e[9], -e[10]] as [number, number, number];
+      await holdKey(page, 'Space', 500);
+      expect((await pose(page)).position[1]).toBeGreaterThan(afterA.position[1] + 1);
+      const high = (await pose(page)).position[1];
+      const down = await holdKey(page, 'Shift', 2000); // 10 m/s down for 2 s from ~13 m: under the water
+      const low = (await pose(page)).position[1];
+      // The camera dives (down to 200 m: flyControls.ts MIN_HEIGHT), by speed × time.
+      expect(low).toBeLessThan(0);
+      expect(Math.abs(high - low - 10 * down.held)).toBeLessThan(10 * 2 * down.longestFrame + 0.5);
     });
-    expect(dot(cameraForward, newView)).toBeGreaterThan(0.99999);
 
-    for (const [pitch, dy, limit] of [
-      [80, -100, 89], // 80° + 15° up stops at 89°
-      [-80, 100, -89],
-    ]) {
-      await page.evaluate((pitch) => (window.oceanApp.controls.pose = { position: [0, 10, 0], yaw: 30, pitch }), pitch);
-      const y = dy < 0 ? 150 : 30;
-      await page.mouse.move(100, y);
+    test('dragging turns the view: right increases yaw, up increases pitch, pitch clamps at ±89°', async ({ browser }) => {
+      const page = await flyPage(browser);
+      const start = await pose(page);
+      await page.mouse.move(100, 120);
       await page.mouse.down();
-      await page.mouse.move(100, y + dy, { steps: 5 });
+      await page.mouse.move(150, 100, { steps: 5 }); // 50 px right, 20 px up
       await page.mouse.up();
-      expect((await pose(page)).pitch).toBe(limit);
-    }
-  });
+      const turned = await pose(page);
+      expect(turned.yaw).toBeCloseTo(start.yaw + 50 * 0.15, 6);
+      expect(turned.pitch).toBeCloseTo(start.pitch + 20 * 0.15, 6);
+      expect(turned.position).toEqual(start.position);
+      // The new view leans to the old right (−l) and up.
+      const oldView = viewDirection(start.yaw, start.pitch);
+      const newView = viewDirection(turned.yaw, turned.pitch);
+      const oldLeft: Vec3 = [oldView[2], 0, -oldView[0]];
+      expect(dot(newView, oldLeft)).toBeLessThan(0);
+      expect(newView[1]).toBeGreaterThan(oldView[1]);
+      // And the camera really looks there.
+      const cameraForward = await page.evaluate(() => {
+        const e = window.oceanApp.camera.matrixWorld.elements;
+        return [-e[8], -e[9], -e[10]] as [number, number, number];
+      });
+      expect(dot(cameraForward, newView)).toBeGreaterThan(0.99999);
 
-  test('touch: one finger turns, two fingers dragged up move forward', async ({ page }) => {
-    await openApp(page, 'resolution=32&paused=1&cam=0,10,0,30,-10', { width: 320, height: 180 }, false);
-    const result = await page.evaluate(() => {
-      const { controls, renderer } = window.oceanApp;
-      const canvas = renderer.domElement;
-      const touch = (type: string, pointerId: number, x: number, y: number) =>
-        canvas.dispatchEvent(new PointerEvent(type, { pointerId, pointerType: 'touch', clientX: x, clientY: y, bubbles: true }));
-      touch('pointerdown', 1, 100, 100);
-      touch('pointermove', 1, 140, 100); // one finger 40 px right
-      touch('pointerup', 1, 140, 100);
-      const turned = controls.pose;
-      touch('pointerdown', 1, 100, 120);
-      touch('pointerdown', 2, 160, 120);
-      touch('pointermove', 1, 100, 70); // both fingers 50 px up
-      touch('pointermove', 2, 160, 70);
-      touch('pointerup', 1, 100, 70);
-      touch('pointerup', 2, 160, 70);
-      return { turned, moved: controls.pose, speed: controls.speed };
+      for (const [pitch, dy, limit] of [
+        [80, -100, 89], // 80° + 15° up stops at 89°
+        [-80, 100, -89],
+      ]) {
+        await page.evaluate((pitch) => (window.oceanApp.controls.pose = { position: [0, 10, 0], yaw: 30, pitch }), pitch);
+        const y = dy < 0 ? 150 : 30;
+        await page.mouse.move(100, y);
+        await page.mouse.down();
+        await page.mouse.move(100, y + dy, { steps: 5 });
+        await page.mouse.up();
+        expect((await pose(page)).pitch).toBe(limit);
+      }
     });
-    expect(result.turned.yaw).toBeCloseTo(30 + 40 * 0.25, 6);
-    expect(result.turned.pitch).toBe(-10);
-    const moved = sub(result.moved.position, result.turned.position);
-    const v = viewDirection(result.turned.yaw, result.turned.pitch);
-    expect(dot(moved, v) / length(moved)).toBeGreaterThan(0.99999);
-    expect(length(moved)).toBeCloseTo((50 * result.speed) / 100, 6); // speed/100 metres per pixel
+
+    test('touch: one finger turns, two fingers dragged up move forward', async ({ browser }) => {
+      const page = await flyPage(browser);
+      const result = await page.evaluate(() => {
+        const { controls, renderer } = window.oceanApp;
+        const canvas = renderer.domElement;
+        const touch = (type: string, pointerId: number, x: number, y: number) =>
+          canvas.dispatchEvent(new PointerEvent(type, { pointerId, pointerType: 'touch', clientX: x, clientY: y, bubbles: true }));
+        touch('pointerdown', 1, 100, 100);
+        touch('pointermove', 1, 140, 100); // one finger 40 px right
+        touch('pointerup', 1, 140, 100);
+        const turned = controls.pose;
+        touch('pointerdown', 1, 100, 120);
+        touch('pointerdown', 2, 160, 120);
+        touch('pointermove', 1, 100, 70); // both fingers 50 px up
+        touch('pointermove', 2, 160, 70);
+        touch('pointerup', 1, 100, 70);
+        touch('pointerup', 2, 160, 70);
+        return { turned, moved: controls.pose, speed: controls.speed };
+      });
+      expect(result.turned.yaw).toBeCloseTo(30 + 40 * 0.25, 6);
+      expect(result.turned.pitch).toBe(-10);
+      const moved = sub(result.moved.position, result.turned.position);
+      const v = viewDirection(result.turned.yaw, result.turned.pitch);
+      expect(dot(moved, v) / length(moved)).toBeGreaterThan(0.99999);
+      expect(length(moved)).toBeCloseTo((50 * result.speed) / 100, 6); // speed/100 metres per pixel
+    });
+
+    test('resizing the viewport resizes the canvas and the camera aspect', async ({ browser }) => {
+      const page = await flyPage(browser);
+      await page.setViewportSize({ width: 400, height: 300 });
+      await expect
+        .poll(() =>
+          page.evaluate(() => {
+            const { renderer, camera } = window.oceanApp;
+            const canvas = renderer.domElement;
+            return [canvas.clientWidth, canvas.clientHeight, canvas.width / devicePixelRatio, canvas.height / devicePixelRatio, camera.aspect];
+          }),
+        )
+        .toEqual([400, 300, 400, 300, 400 / 300]);
+    });
   });
 
   test('URL → scene and panel; panel → URL; reload → the same scene and picture', async ({ page }) => {
@@ -567,20 +603,6 @@ test.describe('the app', () => {
     expect(meanAbsDifference(again, withMsaa)).toBe(0);
   });
 
-  test('resizing the viewport resizes the canvas and the camera aspect', async ({ page }) => {
-    await openApp(page, 'resolution=32', { width: 320, height: 180 });
-    await page.setViewportSize({ width: 400, height: 300 });
-    await expect
-      .poll(() =>
-        page.evaluate(() => {
-          const { renderer, camera } = window.oceanApp;
-          const canvas = renderer.domElement;
-          return [canvas.clientWidth, canvas.clientHeight, canvas.width / devicePixelRatio, canvas.height / devicePixelRatio, camera.aspect];
-        }),
-      )
-      .toEqual([400, 300, 400, 300, 400 / 300]);
-  });
-
   test('copy link: without a clipboard the link is shown in a visible field', async ({ page }) => {
     await page.addInitScript(() => {
       Object.defineProperty(navigator, 'clipboard', { value: { writeText: () => Promise.reject(new Error('denied')) } });
@@ -671,16 +693,6 @@ test.describe('the app', () => {
     await page.evaluate(() => window.oceanApp.panel.gui.open(true));
     await page.locator('[data-key="boat"] input').uncheck();
     expect(await page.evaluate(() => window.oceanApp.boat === null && !window.oceanApp.scene.getObjectByName('boat'))).toBe(true);
-  });
-
-  test('?inspector=1 shows the inspector tiles and the panel toggles them', async ({ page }) => {
-    await openApp(page, 'resolution=32&inspector=1');
-    await expect(page.locator('.inspector-labels > div')).toHaveCount(10);
-    expect(await page.evaluate(() => window.oceanApp.inspector !== null)).toBe(true);
-    await page.locator('[data-key="inspector"] input').uncheck();
-    await expect(page.locator('.inspector-labels')).toHaveCount(0);
-    expect(await page.evaluate(() => window.oceanApp.inspector)).toBeNull();
-    await expect.poll(() => new URL(page.url()).searchParams.has('inspector')).toBe(false);
   });
 });
 
@@ -778,7 +790,7 @@ async function inspectorLegibility(page: Page): Promise<{ spreads: { title: stri
   });
 }
 
-test('the inspector draws the real height field: a tile matches the texture it shows', async ({ page }) => {
+test('?inspector=1 shows the inspector, which draws the real height field (a tile matches the texture it shows); the panel takes it away', async ({ page }) => {
   // The JS path keeps the field in a DataTexture the test can read; paused, so it stays put.
   await openApp(page, 'resolution=32&path=js&paused=1&t=7.5&inspector=1', { width: 720, height: 405 }, false);
   await expect.poll(() => page.evaluate(() => window.oceanApp.ocean.simulation.path)).toBe('js-worker');
@@ -808,6 +820,14 @@ test('the inspector draws the real height field: a tile matches the texture it s
   expect(finest.cascade).toBe(0);
   expect(finest.spread).toBeGreaterThan(0.03);
   expect(finest.worst).toBeLessThan(0.03);
+
+  // The panel takes it away: its tiles and labels go, and the URL no longer asks for it.
+  await expect(page.locator('.inspector-labels > div')).toHaveCount(10);
+  await page.evaluate(() => window.oceanApp.panel.gui.open(true));
+  await page.locator('[data-key="inspector"] input').uncheck();
+  await expect(page.locator('.inspector-labels')).toHaveCount(0);
+  expect(await page.evaluate(() => window.oceanApp.inspector)).toBeNull();
+  await expect.poll(() => new URL(page.url()).searchParams.has('inspector')).toBe(false);
 });
 
 test.describe('under water', () => {
@@ -821,8 +841,15 @@ test.describe('under water', () => {
     return sum.map((v) => v / ((to - from) * width));
   }
 
-  test('the camera dives; 6 m down looking level, the view is the water\'s own colour, darker and greener-blue than the sky, never the sky', async ({ page }) => {
-    await openApp(page, 'resolution=64&windSpeed=8&paused=1&t=5&cam=0,-6,0,0,0', { width: 320, height: 180 }, false);
+  // One page for both (the same sea, paused at t = 5): the first reads the camera the URL put under
+  // water, the second sets its own.
+  const underWaterPage = sharedPages(
+    async (page) => void (await openApp(page, 'resolution=64&windSpeed=8&paused=1&t=5&cam=0,-6,0,0,0', { width: 320, height: 180 }, false)),
+    async () => {},
+  );
+
+  test('the camera dives; 6 m down looking level, the view is the water\'s own colour, darker and greener-blue than the sky, never the sky', async ({ browser }) => {
+    const page = await underWaterPage(browser);
     const eye = await page.evaluate(() => window.oceanApp.camera.position.y);
     expect(eye).toBe(-6); // not pushed back above the water
     const data = await pixels(page);
@@ -834,8 +861,8 @@ test.describe('under water', () => {
     expect(b).toBeLessThan(110);
   });
 
-  test('at the surface, the waterline: sky above, water below, one boundary across the picture', async ({ page }) => {
-    await openApp(page, 'resolution=64&windSpeed=8&paused=1&t=5&cam=0,0,0,0,0', { width: 320, height: 180 }, false);
+  test('at the surface, the waterline: sky above, water below, one boundary across the picture', async ({ browser }) => {
+    const page = await underWaterPage(browser);
     // The eye exactly at the water's height under it: the near plane crosses the surface.
     await page.evaluate(() => {
       const { ocean, controls } = window.oceanApp;
@@ -885,34 +912,49 @@ test.describe('failures the app explains', () => {
     page.on('request', (request) => {
       if (!request.url().startsWith('http://127.0.0.1')) requested.push(request.url());
     });
-    for (const skybox of ['https://tracker.example/sky/', '//tracker.example/sky/', 'data:image/png;base64,AAAA/']) {
-      await page.goto(`/?skybox=${encodeURIComponent(skybox)}&${SMALL}`);
-      await page.waitForFunction(() => window.oceanApp !== undefined);
-      const warning = page.locator('.notice.warning', { hasText: 'skybox' });
-      await expect(warning).toContainText(`skybox must be a folder URL on ${new URL(page.url()).origin}`);
-      await expect(warning).toContainText('fft-ocean-skybox-origins');
+    // One page load: the first folder through the URL (the warning, the sky, the URL that drops it),
+    // the others through the same function the app loads its URL's skybox with (appView.ts).
+    const [first, ...others] = ['https://tracker.example/sky/', '//tracker.example/sky/', 'data:image/png;base64,AAAA/'];
+    await page.goto(`/?skybox=${encodeURIComponent(first)}&${SMALL}`);
+    await page.waitForFunction(() => window.oceanApp !== undefined);
+    const refusal = `skybox must be a folder URL on ${new URL(page.url()).origin}`;
+    const warning = page.locator('.notice.warning', { hasText: 'skybox' });
+    await expect(warning).toContainText(refusal);
+    await expect(warning).toContainText('fft-ocean-skybox-origins');
+    expect(await page.evaluate(() => window.oceanApp.ocean.sky.usingFaces)).toBe(false);
+    await expect.poll(() => new URL(page.url()).searchParams.has('skybox')).toBe(false);
+    const load = (skybox: string, trusted?: string) =>
+      page.evaluate(
+        async ({ skybox, trusted }) => {
+          const appView = '/src/app/appView.ts'; // from the dev server, as the app loads it
+          const { loadAppSkybox, trustedSkyboxOrigins } = (await import(appView)) as typeof import('../../../src/app/appView');
+          if (trusted !== undefined) {
+            const meta = Object.assign(document.createElement('meta'), { name: 'fft-ocean-skybox-origins', content: trusted });
+            document.head.append(meta);
+            if (trustedSkyboxOrigins().join(' ') !== `${location.origin} ${trusted.split(/\s+/).join(' ')}`) return { parameter: 'meta not read', message: '' };
+          }
+          try {
+            await loadAppSkybox(window.oceanApp.ocean, skybox);
+            return { parameter: 'loaded', message: '' };
+          } catch (error) {
+            return { parameter: (error as { parameter?: string }).parameter ?? 'none', message: (error as Error).message };
+          }
+        },
+        { skybox, trusted },
+      );
+    for (const skybox of others) {
+      const refused = await load(skybox);
+      expect(refused.parameter, skybox).toBe('skybox');
+      expect(refused.message, skybox).toContain(refusal);
+      expect(refused.message, skybox).toContain('fft-ocean-skybox-origins');
       expect(await page.evaluate(() => window.oceanApp.ocean.sky.usingFaces)).toBe(false);
-      await expect.poll(() => new URL(page.url()).searchParams.has('skybox')).toBe(false);
     }
     expect(requested).toEqual([]);
 
     // The page's own list: an origin it names is tried (here it does not answer: the load fails, after a request).
-    await page.goto(`/?skybox=https://sky.example/faces/&${SMALL}`);
-    await page.waitForFunction(() => window.oceanApp !== undefined);
-    const trusted = await page.evaluate(async () => {
-      const appView = '/src/app/appView.ts'; // from the dev server, as the app loads it
-      const { loadAppSkybox, trustedSkyboxOrigins } = (await import(appView)) as typeof import('../../../src/app/appView');
-      const meta = Object.assign(document.createElement('meta'), { name: 'fft-ocean-skybox-origins', content: 'https://cdn.example  https://sky.example' });
-      document.head.append(meta);
-      if (trustedSkyboxOrigins().join(' ') !== `${location.origin} https://cdn.example https://sky.example`) return 'meta not read';
-      try {
-        await loadAppSkybox(window.oceanApp.ocean, 'https://sky.example/faces/');
-        return 'loaded';
-      } catch (error) {
-        return (error as Error).message;
-      }
-    });
-    expect(trusted).toContain('could not load https://sky.example/faces/px.png');
+    const trusted = await load('https://sky.example/faces/', 'https://cdn.example  https://sky.example');
+    expect(trusted.message).toContain('could not load https://sky.example/faces/px.png');
+    expect(requested).toContain('https://sky.example/faces/px.png');
   });
 
   test('the shipped skybox loads from the URL', async ({ page }) => {

@@ -1,6 +1,7 @@
-import { expect, test, type Page } from '@playwright/test';
+import { expect, test, type Browser, type Page } from '@playwright/test';
 import { DEFAULT_PARAMETERS } from '../../../src/parameters/parameters';
 import { boatWake } from '../shared/boatWake';
+import { sharedPages } from '../shared/sharedPages';
 import { slowFrames } from '../shared/slowFrames';
 import { withoutWebGL2 } from '../shared/withoutWebGL2';
 
@@ -8,8 +9,17 @@ import { withoutWebGL2 } from '../shared/withoutWebGL2';
 // cannot be seen, and the message a browser without WebGL 2 gets. Small boxes and N = 64 keep
 // SwiftShader fast.
 
-async function openPage(page: Page): Promise<{ errors: string[]; warnings: string[] }> {
-  const log = { errors: [] as string[], warnings: [] as string[] };
+/** What a page said: its uncaught errors and its console warnings. */
+interface PageLog {
+  errors: string[];
+  warnings: string[];
+}
+const logs = new WeakMap<Page, PageLog>();
+
+/** Loads the test page into `page`, listening to what it says. */
+async function loadPage(page: Page): Promise<PageLog> {
+  const log: PageLog = { errors: [], warnings: [] };
+  logs.set(page, log);
   page.on('pageerror', (error) => log.errors.push(error.message));
   page.on('console', (message) => {
     if (message.type() === 'warning') log.warnings.push(message.text());
@@ -19,8 +29,35 @@ async function openPage(page: Page): Promise<{ errors: string[]; warnings: strin
   return log;
 }
 
-test('with no attributes and no size it fills its container at 16:9 and draws the sea', async ({ page }) => {
-  const { errors } = await openPage(page);
+// One page for the file's tests (a page load and its modules cost about as much as a test),
+// set back as it loaded before each (window.embed.reset: no element, nothing added to the body,
+// scrolled to the top) with its log emptied; after each test no uncaught error may have reached
+// it. Tests that need a page of their own (an init script, no WebGL 2) keep Playwright's `page`.
+const sharedEmbedPage = sharedPages(
+  async (page) => void (await loadPage(page)),
+  async (page) => {
+    await page.evaluate(() => window.embed.reset());
+    const log = logs.get(page)!;
+    log.errors.length = 0;
+    log.warnings.length = 0;
+  },
+);
+let testLog: PageLog | null = null;
+test.afterEach(() => {
+  const errors = testLog?.errors ?? [];
+  testLog = null;
+  expect(errors, 'uncaught errors on the shared page').toEqual([]);
+});
+
+/** The shared page, as it loaded, and its log from now on. */
+async function openPage(browser: Browser): Promise<{ page: Page } & PageLog> {
+  const page = await sharedEmbedPage(browser);
+  testLog = logs.get(page)!;
+  return { page, ...testLog };
+}
+
+test('with no attributes and no size it fills its container at 16:9 and draws the sea', async ({ browser }) => {
+  const { page, errors } = await openPage(browser);
   const result = await page.evaluate(async () => {
     const el = window.embed.create({ resolution: '64' });
     await window.embed.drawn(el, 3);
@@ -47,23 +84,24 @@ test('with no attributes and no size it fills its container at 16:9 and draws th
   expect(errors).toEqual([]);
 });
 
-test('its shadow root is styled by a constructed stylesheet, or by a <style> where there is none (Safari before 16.4)', async ({ page }) => {
-  const styling = () =>
+test('its shadow root is styled by a constructed stylesheet, or by a <style> where there is none (Safari before 16.4)', async ({ browser, page: withoutReplaceSync }) => {
+  const styling = (page: Page) =>
     page.evaluate(() => {
       const el = window.embed.create({ resolution: '64', paused: '' });
       const box = el.getBoundingClientRect();
       return { box: [box.width, box.height], adopted: el.shadowRoot!.adoptedStyleSheets.length, styleElements: el.shadowRoot!.querySelectorAll('style').length };
     });
-  await openPage(page);
   // A constructed stylesheet is what a strict CSP allows (style-src 'self' blocks <style>: csp.spec.ts).
-  expect(await styling()).toEqual({ box: [480, 270], adopted: 1, styleElements: 0 });
-  await page.addInitScript(() => delete (CSSStyleSheet.prototype as Partial<CSSStyleSheet>).replaceSync);
-  await openPage(page);
-  expect(await styling()).toEqual({ box: [480, 270], adopted: 0, styleElements: 1 });
+  expect(await styling((await openPage(browser)).page)).toEqual({ box: [480, 270], adopted: 1, styleElements: 0 });
+  // A page of its own, whose CSSStyleSheet cannot be constructed from text.
+  await withoutReplaceSync.addInitScript(() => delete (CSSStyleSheet.prototype as Partial<CSSStyleSheet>).replaceSync);
+  const { errors } = await loadPage(withoutReplaceSync);
+  expect(await styling(withoutReplaceSync)).toEqual({ box: [480, 270], adopted: 0, styleElements: 1 });
+  expect(errors).toEqual([]);
 });
 
-test('it follows its box: a page-given height, then a resize', async ({ page }) => {
-  await openPage(page);
+test('it follows its box: a page-given height, then a resize', async ({ browser }) => {
+  const { page } = await openPage(browser);
   const sizes = await page.evaluate(async () => {
     const el = window.embed.create({ resolution: '64' });
     el.style.height = '150px';
@@ -79,8 +117,8 @@ test('it follows its box: a page-given height, then a resize', async ({ page }) 
   expect(sizes[1]).toEqual([240, 200, 240 / 200]);
 });
 
-test('attributes apply live; a bad value warns, naming the attribute, and keeps the last good one', async ({ page }) => {
-  const log = await openPage(page);
+test('attributes apply live; a bad value warns, naming the attribute, and keeps the last good one', async ({ browser }) => {
+  const { page, ...log } = await openPage(browser);
   const result = await page.evaluate(async () => {
     // Attributes present before the element is connected are used to create the ocean.
     const el = window.embed.create({ resolution: '64', 'wind-speed': '6', seed: '9', 'sun-elevation': '10' });
@@ -138,9 +176,9 @@ test('attributes apply live; a bad value warns, naming the attribute, and keeps 
   expect(warnings).toContain('keeping 20,100'); // patch-sizes kept its last good value
 });
 
-test('quality and target-fps: a level sets the render scale, MSAA, N and cascades; auto lowers them to hold the frame rate and says so; bad values warn as the URL does', async ({ page }) => {
+test('quality and target-fps: a level sets the render scale, MSAA, N and cascades; auto lowers them to hold the frame rate and says so; bad values warn as the URL does', async ({ browser }) => {
   test.setTimeout(120_000);
-  const log = await openPage(page);
+  const { page, ...log } = await openPage(browser);
   const levels = await page.evaluate(async () => {
     const el = window.embed.create({ resolution: '64' }); // quality high (the harness's default)
     await window.embed.drawn(el, 2);
@@ -187,8 +225,8 @@ test('quality and target-fps: a level sets the render scale, MSAA, N and cascade
   expect(warnings).toContain('<fft-ocean>: ignoring target-fps="fast": targetFps must be');
 });
 
-test('shading attributes from the table: colours as "#rrggbb", CSS or linear "r,g,b", also under their British names', async ({ page }) => {
-  const log = await openPage(page);
+test('shading attributes from the table: colours as "#rrggbb", CSS or linear "r,g,b", also under their British names', async ({ browser }) => {
+  const { page, ...log } = await openPage(browser);
   const result = await page.evaluate(async () => {
     const el = window.embed.create({ resolution: '64', 'scatter-colour': '#1a6b80', 'caustic-color': '0.5,0.25,0.125', ior: '1.34' });
     await window.embed.drawn(el);
@@ -217,8 +255,8 @@ test('shading attributes from the table: colours as "#rrggbb", CSS or linear "r,
   expect(warnings).toContain('<fft-ocean>: ignoring caustic-power="0": causticPower must be a number > 0');
 });
 
-test('warnings quote the attribute as written (its first 40 characters) and say deep water "deep"', async ({ page }) => {
-  const log = await openPage(page);
+test('warnings quote the attribute as written (its first 40 characters) and say deep water "deep"', async ({ browser }) => {
+  const { page, ...log } = await openPage(browser);
   await page.evaluate(async () => {
     const el = window.embed.create({ resolution: '64' });
     await window.embed.drawn(el);
@@ -239,8 +277,8 @@ test('warnings quote the attribute as written (its first 40 characters) and say 
   expect(warnings.join('\n')).not.toContain('NaN');
 });
 
-test('paused freezes time and draws only on changes; the time can be set', async ({ page }) => {
-  await openPage(page);
+test('paused freezes time and draws only on changes; the time can be set', async ({ browser }) => {
+  const { page } = await openPage(browser);
   const result = await page.evaluate(async () => {
     const el = window.embed.create({ resolution: '64', paused: '' });
     await window.embed.drawn(el);
@@ -264,8 +302,8 @@ test('paused freezes time and draws only on changes; the time can be set', async
   expect(result.running).toBeGreaterThan(4);
 });
 
-test('a time set far ahead shows the sea of that time as a double resolves it, seen from within reach', async ({ page }) => {
-  const { errors } = await openPage(page);
+test('a time set far ahead shows the sea of that time as a double resolves it, seen from within reach', async ({ browser }) => {
+  const { page, errors } = await openPage(browser);
   const result = await page.evaluate(async () => {
     const el = window.embed.create({ resolution: '64', paused: '' });
     await window.embed.drawn(el);
@@ -282,8 +320,8 @@ test('a time set far ahead shows the sea of that time as a double resolves it, s
   expect(errors).toEqual([]);
 });
 
-test('it draws only while on screen, and time does not jump when it comes back', async ({ page }) => {
-  await openPage(page);
+test('it draws only while on screen, and time does not jump when it comes back', async ({ browser }) => {
+  const { page } = await openPage(browser);
   const result = await page.evaluate(async () => {
     const spacer = document.createElement('div');
     spacer.style.height = '3000px';
@@ -316,10 +354,10 @@ test('it draws only while on screen, and time does not jump when it comes back',
   expect(result.timeGained).toBeLessThanOrEqual(result.backFor + 1e-3);
 });
 
-test('24 elements down a page: each draws when scrolled into view, at most 16 hold a WebGL context at once, the first draw again after scrolling back', async ({ page }) => {
+test('24 elements down a page: each draws when scrolled into view, at most 16 hold a WebGL context at once, the first draw again after scrolling back', async ({ browser }) => {
   // Chromium keeps 16 WebGL contexts per page and drops the oldest beyond that for good, so
   // elements off screen must give theirs back. Paused elements draw once per (re)build: cheap.
-  const { errors } = await openPage(page);
+  const { page, errors } = await openPage(browser);
   const result = await page.evaluate(async () => {
     const { create, pixels, frames } = window.embed;
     const elements = Array.from({ length: 24 }, (_, i) => {
@@ -410,8 +448,8 @@ test('24 elements down a page: each draws when scrolled into view, at most 16 ho
   expect(errors).toEqual([]);
 });
 
-test('it stops while the tab is hidden and resumes without a jump in time', async ({ page }) => {
-  await openPage(page);
+test('it stops while the tab is hidden and resumes without a jump in time', async ({ browser }) => {
+  const { page } = await openPage(browser);
   const result = await page.evaluate(async () => {
     const el = window.embed.create({ resolution: '64' });
     await window.embed.drawn(el, 3);
@@ -438,16 +476,16 @@ test('it stops while the tab is hidden and resumes without a jump in time', asyn
   expect(result.timeGained).toBeLessThanOrEqual(result.backFor + 1e-3); // not the 1.2 s it was hidden
 });
 
-test('its time follows real time × time-scale when frames are slow', async ({ page }) => {
-  await openPage(page);
+test('its time follows real time × time-scale when frames are slow', async ({ browser }) => {
+  const { page } = await openPage(browser);
   await page.evaluate(() => window.embed.drawn(window.embed.create({ resolution: '64', 'time-scale': '1.5' }), 2));
   const { simulated, real } = await slowFrames(page, 'element'); // the old clock, at most 0.1 s a frame, ran at 0.4×
   expect(real).toBeGreaterThan(1);
   expect(simulated / real).toBeCloseTo(1.5, 1);
 });
 
-test('a click on its sea drops a stone there: the local waves get rings', async ({ page }) => {
-  await openPage(page);
+test('a click on its sea drops a stone there: the local waves get rings', async ({ browser }) => {
+  const { page } = await openPage(browser);
   // Two frames drawn: the canvas has its size and the camera its place, which the click's ray needs.
   const calmBefore = await page.evaluate(async () => {
     const el = window.embed.create({ resolution: '64', 'wind-speed': '3' });
@@ -482,8 +520,8 @@ test('a click on its sea drops a stone there: the local waves get rings', async 
   expect(result.largest).toBeGreaterThan(0.02); // a 0.8 m deep dip leaves rings of centimetres
 });
 
-test('boat: a boat circles ahead of the drifting view with a wake behind it; removing the attribute takes it off the sea', async ({ page }) => {
-  const { errors } = await openPage(page);
+test('boat: a boat circles ahead of the drifting view with a wake behind it; removing the attribute takes it off the sea', async ({ browser }) => {
+  const { page, errors } = await openPage(browser);
   const result = await page.evaluate(async () => {
     const el = window.embed.create({ resolution: '64', 'wind-speed': '2', paused: '', boat: '' });
     el.time = 40; // a still: the wake is run up over the 20 s before (localWaves.ts)
@@ -519,8 +557,8 @@ test('boat: a boat circles ahead of the drifting view with a wake behind it; rem
   expect(errors).toEqual([]);
 });
 
-test('defining it twice is harmless', async ({ page }) => {
-  const { errors } = await openPage(page);
+test('defining it twice is harmless', async ({ browser }) => {
+  const { page, errors } = await openPage(browser);
   const result = await page.evaluate(() => {
     const again = window.embed.defineFftOceanElement();
     return { same: again === customElements.get('fft-ocean'), isClass: again === window.embed.FftOceanElement };
@@ -562,11 +600,8 @@ test('without WebGL 2 the box shows a message instead of staying blank', async (
   await expect(page.getByText('This ocean needs WebGL 2')).toBeVisible(); // what a person sees
 });
 
-test('a frame that fails to draw: the box says so and the page gets fft-ocean-error, once, with no uncaught error', async ({ page }) => {
-  const errors: string[] = [];
-  page.on('pageerror', (error) => errors.push(error.message));
-  await page.goto('/tests/browser/embed/embed.html');
-  await expect(page).toHaveTitle('ready');
+test('a frame that fails to draw: the box says so and the page gets fft-ocean-error, once, with no uncaught error', async ({ browser }) => {
+  const { page, errors } = await openPage(browser);
   const result = await page.evaluate(async () => {
     const events: string[] = [];
     const el = document.createElement('fft-ocean');

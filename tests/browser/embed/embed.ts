@@ -66,7 +66,19 @@ async function drawn(el: FftOceanElement, count = 1, timeout = 20_000): Promise<
   }
 }
 
-const harness = { Ocean, FftOceanElement, WebGLRenderer, Scene, PerspectiveCamera, Mesh, BoxGeometry, MeshBasicMaterial, defineFftOceanElement, pixels, frames, create, drawn };
+/**
+ * Sets the page back as it loaded, for the next test of a spec file that shares it: no element
+ * (each one removed frees its renderer and context), nothing else a test added to the body, the
+ * page scrolled to its top.
+ */
+async function reset(): Promise<void> {
+  for (const child of [...document.body.children]) if (child.id !== 'box' && child.tagName !== 'SCRIPT') child.remove();
+  document.querySelector('#box')!.replaceChildren();
+  scrollTo(0, 0);
+  await frames(2); // the removed elements have freed what they held (a microtask after removal)
+}
+
+const harness = { Ocean, FftOceanElement, WebGLRenderer, Scene, PerspectiveCamera, Mesh, BoxGeometry, MeshBasicMaterial, defineFftOceanElement, pixels, frames, create, drawn, reset };
 
 declare global {
   interface Window {
