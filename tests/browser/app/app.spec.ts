@@ -9,7 +9,7 @@ import { beaufortPreset, presetCloudCover, SEA_PRESETS } from '../../../src/spec
 import { seaState } from '../../../src/spectrum/seaState';
 import { boatWake } from '../shared/boatWake';
 import { sharedPages } from '../shared/sharedPages';
-import { slowAppFramesUntil, slowFrames } from '../shared/slowFrames';
+import { slowFrames, slowFramesUntil } from '../shared/slowFrames';
 import { withHiddenCapabilities } from '../shared/hiddenCapabilities';
 import { withoutWebGL2 } from '../shared/withoutWebGL2';
 import { ALSO_ON_OLDEST_THREE } from '../shared/threeRange';
@@ -522,7 +522,7 @@ test.describe('the app', () => {
     await openApp(page, 'quality=auto&targetFps=60', { width: 640, height: 360 }, false);
     // Frames made slow (250 ms longer each) until 'auto' is at the lowest level, a window (2 s) a
     // step: 60 fps is then out of reach on any machine, not only under SwiftShader.
-    const slowed = await slowAppFramesUntil(page, 'lowest');
+    const slowed = await slowFramesUntil(page, 'app', 'lowest');
     console.log(`quality auto for 60 fps: lowest after ${slowed.frames} frames made slow, ${slowed.seconds.toFixed(1)} s`);
     const status = page.locator('#status .status-line');
     await expect(status).toContainText(/quality lowest \(auto, for 60 fps, frame \d+ ms\): render scale 0\.3, no MSAA, 2 cascades of 32² · /);
@@ -554,7 +554,7 @@ test.describe('the app', () => {
     // A fixed level is put in force at once and kept, whatever the frames: over a window of slow
     // ones, which 'auto' would have come down on.
     await page.evaluate(() => window.oceanApp.set({ quality: 'medium' }));
-    await slowAppFramesUntil(page, 'a window measured');
+    await slowFramesUntil(page, 'app', 'a window measured');
     const medium = await page.evaluate(() => ({
       level: window.oceanApp.quality.level,
       frameMs: window.oceanApp.quality.medianFrameMs,

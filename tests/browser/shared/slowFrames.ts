@@ -30,31 +30,39 @@ export function slowFrames(page: Page, source: 'app' | 'element'): Promise<{ sim
 }
 
 /**
- * Makes every frame of the app 250 ms slower, as slowFrames does, until quality 'auto' has come
- * down to `until` (a level: one step a window, WINDOW_SECONDS, of frames slower than the target),
- * or until a window of them was measured (`'a window measured'`: the quality's median frame time is
- * known, for a fixed level, which keeps it). Far over a 60 fps target's 20 ms whatever the machine,
- * so what 'auto' does does not depend on how fast this one draws. Gives up after 60 s.
+ * Makes every frame of the page 250 ms slower, as slowFrames does, until the quality 'auto' of the
+ * app (`'app'`) or of the first <fft-ocean> (`'element'`) has come down to `until` (a level: one
+ * step a window, WINDOW_SECONDS, of frames slower than the target), or until a window of them was
+ * measured (`'a window measured'`: the quality's median frame time is known, for a fixed level,
+ * which keeps it). Far over a 60 fps target's 20 ms whatever the machine, so what 'auto' does does
+ * not depend on how fast this one draws. Gives up after 60 s.
  */
-export function slowAppFramesUntil(page: Page, until: 'medium' | 'low' | 'lowest' | 'a window measured'): Promise<{ frames: number; seconds: number }> {
-  return page.evaluate(async (until) => {
-    const quality = () => window.oceanApp.quality;
-    const done = () => (until === 'a window measured' ? quality().medianFrameMs !== null : quality().level === until);
-    const start = performance.now();
-    let frames = 0;
-    await new Promise<void>((resolve, reject) => {
-      const frame = () => {
-        if (done()) return resolve();
-        if (performance.now() - start > 60_000) return reject(new Error(`slow frames for 60 s and still not ${until}: quality ${quality().level}`));
-        const end = performance.now() + 250;
-        while (performance.now() < end) {
-          // busy
-        }
-        frames++;
+export function slowFramesUntil(
+  page: Page,
+  source: 'app' | 'element',
+  until: 'medium' | 'low' | 'lowest' | 'a window measured',
+): Promise<{ frames: number; seconds: number }> {
+  return page.evaluate(
+    async ({ source, until }) => {
+      const quality = () => (source === 'app' ? window.oceanApp.quality : document.querySelector('fft-ocean')!.quality);
+      const done = () => (until === 'a window measured' ? quality().medianFrameMs !== null : quality().level === until);
+      const start = performance.now();
+      let frames = 0;
+      await new Promise<void>((resolve, reject) => {
+        const frame = () => {
+          if (done()) return resolve();
+          if (performance.now() - start > 60_000) return reject(new Error(`slow frames for 60 s and still not ${until}: quality ${quality().level}`));
+          const end = performance.now() + 250;
+          while (performance.now() < end) {
+            // busy
+          }
+          frames++;
+          requestAnimationFrame(frame);
+        };
         requestAnimationFrame(frame);
-      };
-      requestAnimationFrame(frame);
-    });
-    return { frames, seconds: (performance.now() - start) / 1000 };
-  }, until);
+      });
+      return { frames, seconds: (performance.now() - start) / 1000 };
+    },
+    { source, until },
+  );
 }
