@@ -20,7 +20,7 @@ import { SkyEnvironment, sunAnglesFromDirection, type SunAngles, type SunDirecti
 import { OceanSimulation, type PathPreference, type SimulationOptions, type SimulationPath } from './layers/oceanSimulation';
 import type { LocalWaves } from './layers/localWaves';
 import type { WaveLayer } from './layers/waveLayer';
-import { checkThreeRelease, checkWebGLRenderer } from './fft/threeInternals';
+import { checkThreeRelease, checkWebGLRenderer } from './threeRelease';
 import { heightAt, normalAt, velocityAt } from './layers/surfaceQuery';
 import { checkCoordinates, surfaceHeightAt, surfaceHeightsAt, surfaceNormalAt, surfaceVectorsAt, surfaceVelocityAt, warmUpQueries } from './oceanQueries';
 import { SeaStatistics } from './oceanStatistics';
