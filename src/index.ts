@@ -38,6 +38,7 @@ export { BatchedInverseFft2D } from './fft/fft';
 export { OceanSurface } from './render/oceanSurface';
 export type { ReflectionLayers } from './render/sceneReflection';
 export { OceanMaterial, type OceanShadingOptions } from './render/oceanMaterial';
+export { EYE_SIDE, type EyeSide, type RingPlacement, type SeaSurfaceMaterial, type SeaSurfaceMeshMaterial } from './render/seaSurfaceMaterial';
 export {
   SHADING_MODES,
   REFRACTION_SOURCES,

@@ -14,13 +14,13 @@
 import { Object3D, Vector3, type Object3DEventMap, type WebGLRenderer } from 'three';
 import { OceanSurface } from './render/oceanSurface';
 import type { ReflectionLayers } from './render/sceneReflection';
-import type { OceanShadingOptions } from './render/oceanMaterial';
+import { OceanMaterial, type OceanShadingOptions } from './render/oceanMaterial';
 import { SkyBackground } from './render/skyBackground';
 import { SkyEnvironment, sunAnglesFromDirection, type SunAngles, type SunDirection } from './render/skyEnvironment';
 import { OceanSimulation, type PathPreference, type SimulationOptions, type SimulationPath } from './layers/oceanSimulation';
 import type { LocalWaves } from './layers/localWaves';
 import type { WaveLayer } from './layers/waveLayer';
-import { checkThreeRelease, checkWebGLRenderer } from './fft/threeInternals';
+import { checkThreeRelease, checkWebGLRenderer } from './threeRelease';
 import { heightAt, normalAt, velocityAt } from './layers/surfaceQuery';
 import { checkCoordinates, surfaceHeightAt, surfaceHeightsAt, surfaceNormalAt, surfaceVectorsAt, surfaceVelocityAt, warmUpQueries } from './oceanQueries';
 import { SeaStatistics } from './oceanStatistics';
@@ -149,7 +149,7 @@ export class Ocean extends Object3D<OceanEventMap> {
     this.sky = new SkyEnvironment(renderer, { sunElevation: sun.elevation, sunAzimuth: sun.azimuth, cloudCover: options.cloudCover });
     const sim = this.simulation;
     this.surface = new OceanSurface(
-      { environment: this.sky.environment, sunDirection: this.sky.skyUniforms.skySunDirection, daylight: this.sky.skyUniforms },
+      new OceanMaterial({ environment: this.sky.environment, sunDirection: this.sky.skyUniforms.skySunDirection, daylight: this.sky.skyUniforms }, shading),
       // 6 RMS: a crest that high comes once in ~10⁸ waves (Rayleigh heights); plus the local waves' metre.
       () => ({
         layers: sim.layers,
@@ -162,9 +162,8 @@ export class Ocean extends Object3D<OceanEventMap> {
         shore: this.preparedShore(),
         hullFoam: sim.localWaves,
       }),
-      shading,
     );
-    this.skyBackground = new SkyBackground(this.sky, { backgroundWater: this.surface.backgroundWater, deepWater: this.surface.material.uniforms.scatterColor });
+    this.skyBackground = new SkyBackground(this.sky, { backgroundWater: this.surface.backgroundWater, deepWater: this.surface.material.deepWater });
     this.surface.hideInCaptures(this.skyBackground);
     this.add(this.surface, this.skyBackground);
   }

@@ -2,7 +2,8 @@
  * The seam between the simulation and the GPU: what the FFT engine (src/fft/gpuFft.ts), the GPU
  * cascades (src/fft/gpuWaveFields.ts), the GPU local waves (src/layers/gpuLocalWaves.ts) and the
  * GPU foam (src/layers/whitecapFoam.ts) ask of a device: float field targets, fullscreen passes
- * into them, and read-back. src/device/webgl2/ implements it on three.js's WebGLRenderer; another
+ * into them, read-back, and what the device can do (asked by gpuSupport, src/fft/gpuWaveFields.ts,
+ * and the simulation). src/device/webgl2/ implements it on three.js's WebGLRenderer; another
  * backend is one more folder that implements it (docs/architecture.md, "Adding a GPU backend").
  */
 import type { ShaderMaterial, Texture } from 'three';
@@ -56,17 +57,33 @@ export interface TexelRows {
 /** A fragment shader (GLSL 3, see src/shaderSource.ts) with its uniforms, drawn over a whole target. */
 export type PassMaterial = ShaderMaterial;
 
+/** What a device can lack, as the capability flags of GpuDevice name it. */
+export type GpuCapability = 'float32Targets' | 'float16Targets' | 'float32Filterable' | 'drawBuffers';
+
 export interface GpuDevice {
+  /**
+   * Why this device cannot run passes at all, in words (no WebGL 2, say, or a three.js whose
+   * internals the device reaches into have changed), or null when it can. Asked before the flags
+   * below, which mean nothing when it is not null.
+   */
+  readonly unavailableReason: string | null;
   /** Whether float32 targets can be rendered to. */
   readonly float32Targets: boolean;
   /** Whether float16 targets can be rendered to. */
   readonly float16Targets: boolean;
   /** Whether float32 textures filter linearly (float16 ones always do). */
   readonly float32Filterable: boolean;
+  /** How many textures one pass can write at once (a LayeredTarget needs LAYERED_ATTACHMENTS). */
+  readonly drawBuffers: number;
   /** Whether the device renders in software, where each pass has a high fixed cost. */
   readonly software: boolean;
+  /**
+   * What the device calls `capability`, for a message that says what it lacks: its extension or
+   * limit (on WebGL 2, 'EXT_color_buffer_float' for float32Targets, 'MAX_DRAW_BUFFERS' for drawBuffers).
+   */
+  capabilityName(capability: GpuCapability): string;
   createFieldTarget(options: FieldTargetOptions): FieldTarget;
-  /** Throws an UnsupportedError if the device cannot render to all eight layers at once. */
+  /** Throws an UnsupportedError if the device cannot render to all eight layers at once (or is unavailable). */
   createLayeredTarget(size: number, precision: GpuPrecision): LayeredTarget;
   /** A material for `draw`: `fragmentShader` is GLSL source (shaderSource). */
   passMaterial(fragmentShader: string, uniforms: Record<string, { value: unknown }>, defines?: Record<string, unknown>): PassMaterial;

@@ -21,42 +21,24 @@
  * frees them in dispose().
  */
 import { DataTexture, FloatType, NearestFilter, RGBAFormat, type PixelFormat, type Texture, type WebGLRenderTarget, type WebGLRenderer } from 'three';
-import { LAYERED_ATTACHMENTS, type GpuPrecision, type PassMaterial } from '../device/gpuDevice';
+import type { GpuPrecision, PassMaterial } from '../device/gpuDevice';
+import { gpuSupport } from '../device/gpuSupport';
 import { WebGL2Device, type WebGL2FieldTarget } from '../device/webgl2/webgl2Device';
 import { shaderSource } from '../shaderSource';
 import { fillPhaseTable, PHASE_TABLE_SIZE } from '../spectrum/dispersion';
 import { largestFrequency, type InitialSpectrum } from '../spectrum/initialSpectrum';
 import type { FftFieldSource } from './fieldSource';
 import { GpuFft, type WorkingSet } from './gpuFft';
-import { checkThreeInternals, missingThreeInternals } from './threeInternals';
 import { FIELD_TEXTURES } from './waveFieldLayout';
 
 export type { GpuPrecision };
 
-/** Which GPU precision this renderer can render to, best first; null when neither works. */
+/** Which GPU precision this renderer can render to, best first; null when neither works (gpuSupport). */
 export function supportedGpuPrecision(renderer: WebGLRenderer): GpuPrecision | null {
-  return gpuSupport(renderer).precision;
-}
-
-/** MAX_DRAW_BUFFERS per context (gpuSupport). */
-const maxDrawBuffers = new WeakMap<WebGL2RenderingContext, number>();
-
-/**
- * What the GPU path can use on this renderer, and why not the best: the precision (null: none)
- * and, when it is not RGBA32F, the reason in words.
- */
-export function gpuSupport(renderer: WebGLRenderer): { precision: GpuPrecision | null; reason: string } {
-  const gl = renderer.getContext();
-  if (!renderer.capabilities.isWebGL2 || !(gl instanceof WebGL2RenderingContext)) return { precision: null, reason: 'no WebGL 2' };
-  // Asked once per context: getParameter waits for the GPU to finish its queue, and the limit stays.
-  const drawBuffers = maxDrawBuffers.get(gl) ?? (gl.getParameter(gl.MAX_DRAW_BUFFERS) as number);
-  maxDrawBuffers.set(gl, drawBuffers);
-  if (drawBuffers < LAYERED_ATTACHMENTS) return { precision: null, reason: `MAX_DRAW_BUFFERS is ${drawBuffers} (the GPU FFT writes ${LAYERED_ATTACHMENTS} at once)` };
-  const missingInternals = missingThreeInternals(renderer);
-  if (missingInternals !== null) return { precision: null, reason: missingInternals };
-  if (renderer.extensions.has('EXT_color_buffer_float')) return { precision: 'float32', reason: '' };
-  if (renderer.extensions.has('EXT_color_buffer_half_float')) return { precision: 'float16', reason: 'no EXT_color_buffer_float: half floats' };
-  return { precision: null, reason: 'no float render targets (EXT_color_buffer_float, EXT_color_buffer_half_float)' };
+  const device = new WebGL2Device(renderer);
+  const { precision } = gpuSupport(device);
+  device.dispose();
+  return precision;
 }
 
 /** The working set the evolution pass writes. */
@@ -88,7 +70,6 @@ export class GpuWaveFields implements FftFieldSource {
     spectrum: InitialSpectrum,
     readonly precision: GpuPrecision,
   ) {
-    checkThreeInternals(renderer);
     this.repeatPeriod = spectrum.repeatPeriod;
     const n = spectrum.resolution;
     const sizeLog2 = Math.log2(n);

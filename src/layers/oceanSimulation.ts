@@ -17,7 +17,9 @@
  * and frees them in dispose().
  */
 import type { WebGLRenderer } from 'three';
-import { gpuSupport, type GpuPrecision } from '../fft/gpuWaveFields';
+import type { GpuDevice, GpuPrecision } from '../device/gpuDevice';
+import { gpuSupport } from '../device/gpuSupport';
+import { WebGL2Device } from '../device/webgl2/webgl2Device';
 import {
   ParameterError,
   SHADER_ONLY_PARAMETERS,
@@ -26,7 +28,6 @@ import {
 } from '../parameters/parameters';
 import { checkOptionNames } from '../parameters/options';
 import { createCascadeSpectra, type InitialSpectrum } from '../spectrum/initialSpectrum';
-import { isSoftwareRenderer } from '../device/webgl2/webgl2Device';
 import { FftCascade, gpuBackend, jsBackend, type FftBackend } from './fftCascade';
 import { LOCAL_WAVES_OPTION_KEYS, LocalWaves, type LocalWavesOptions } from './localWaves';
 import { orderLayers, type WaveLayer } from './waveLayer';
@@ -106,6 +107,8 @@ export class OceanSimulation {
   private retired: { dispose(): void }[] = [];
   /** What rebuilds made since the last update (cascades, foam, local waves): none of it drew yet. */
   private readonly madeSinceUpdate = new Set<{ dispose(): void }>();
+  /** The GPU device, asked what it can do (the path and its reason, the local waves' solver). */
+  private readonly device: GpuDevice;
 
   constructor(
     private readonly renderer: WebGLRenderer,
@@ -120,7 +123,13 @@ export class OceanSimulation {
     this.localWaveOptions = checkLocalWaves(options.localWaves ?? defaults.localWaves);
     const localPath = this.localWaveOptions?.path ?? 'auto';
     if (!isPathPreference(localPath)) throw new ParameterError('localWaves.path', localPath, PATH_PREFERENCES_TEXT);
-    this.rebuild(true);
+    this.device = new WebGL2Device(renderer);
+    try {
+      this.rebuild(true);
+    } catch (error) {
+      this.device.dispose();
+      throw error;
+    }
   }
 
   get parameters(): Readonly<SimulationParameters> {
@@ -273,13 +282,14 @@ export class OceanSimulation {
     this.currentLocalWaves = null;
     this.addedLayers.length = 0;
     this.currentLayers = [];
+    this.device.dispose();
   }
 
   private rebuild(newSpectra: boolean): void {
     const params = this.currentParameters;
     const spectra = newSpectra ? createCascadeSpectra(params) : this.spectra;
     if (newSpectra) this.spectraParameters = params;
-    const support = this.preference === 'js' ? { precision: null, reason: 'asked for' } : gpuSupport(this.renderer);
+    const support = this.preference === 'js' ? { precision: null, reason: 'asked for' } : gpuSupport(this.device);
     let precision: GpuPrecision | null = support.precision;
     this.currentReason = support.reason;
     // The new layers are built before the old ones are freed (see `retired`); each may take over the
@@ -312,7 +322,7 @@ export class OceanSimulation {
     for (const cascade of previous) this.notUpdatedYet.delete(cascade);
     this.retire(previous);
     const localPath = this.localWaveOptions?.path ?? 'auto';
-    this.rebuildLocalWaves(precision === 'float32' && (localPath === 'gpu' || (localPath === 'auto' && !isSoftwareRenderer(this.renderer))));
+    this.rebuildLocalWaves(precision === 'float32' && (localPath === 'gpu' || (localPath === 'auto' && !this.device.software)));
     this.layersChanged(true);
   }
 

@@ -2,7 +2,9 @@
  * The ocean surface's ShaderMaterial: shaders/surface/ocean.vert and ocean.frag, the course
  * report's shading model (exact Fresnel, cubemap reflection and refraction, Beer–Lambert
  * absorption, Guardado caustics) plus a sun glint, and debug modes that reproduce the report's
- * figures. Typed setters check their values and keep the last good one when a value is bad.
+ * figures. Typed setters check their values and keep the last good one when a value is bad. The
+ * SeaSurfaceMaterial (seaSurfaceMaterial.ts) the surface drives, in GLSL: only this file names the
+ * shaders' uniforms.
  */
 import { Color, DoubleSide, Matrix4, ShaderMaterial, UniformsLib, UniformsUtils, Vector2, Vector3, type Texture } from 'three';
 import { COPY_OFFSET, largestPeriodicLayer, patchBlendUniforms } from '../layers/patchBlend';
@@ -15,9 +17,7 @@ import { FOAM_PATTERN_PERIOD, foamPatternDefines, foamPatternTextures } from './
 import { finestTexel, RING_COUNT } from './horizonGrid';
 import { SLOPE_FILTER_LEVELS, seaLightingValues } from './seaLighting';
 import { beaufortAppearance } from './beaufortAppearance';
-
-/** Where the eye is against the sea surface (the uniform eyeSide of ocean.frag). */
-export const EYE_SIDE = { above: 0, below: 1, near: 2 } as const;
+import { EYE_SIDE, type EyeSide, type RingPlacement, type SeaSurfaceMaterial } from './seaSurfaceMaterial';
 
 /** Shading options as the Ocean takes them: ShadingChanges (src/parameters/sceneOptions.ts). */
 export type OceanShadingOptions = ShadingChanges;
@@ -34,7 +34,7 @@ export interface OceanMaterialInputs {
   daylight?: { skyDaylight: { value: number }; skySunVisibility: { value: number } };
 }
 
-export class OceanMaterial extends ShaderMaterial {
+export class OceanMaterial extends ShaderMaterial implements SeaSurfaceMaterial {
   /** The list of layers bound last (bindLayers). */
   private boundLayers: readonly WaveLayer[] | null = null;
   /** The patch size of the layer drawn blended (the last one bound). */
@@ -222,6 +222,24 @@ export class OceanMaterial extends ShaderMaterial {
     const w = u.windAlong.value;
     const along = (1 - 1 / u.streakElongation.value) * (x * w.x + z * w.y);
     u.foamPatternOrigin.value.set((x - along * w.x) % FOAM_PATTERN_PERIOD, (z - along * w.y) % FOAM_PATTERN_PERIOD);
+  }
+
+  setRings(rings: RingPlacement, cellsPerRing: number): void {
+    const u = this.uniforms;
+    u.ringFrames.value = rings.frames;
+    u.ringLayerUvOrigins.value = rings.uvOrigins;
+    u.ringOffsets.value = rings.offsets;
+    u.halfRingCells.value = cellsPerRing / 2;
+  }
+
+  setEyeSide(side: EyeSide, inWater: boolean): void {
+    this.uniforms.eyeSide.value = side;
+    this.uniforms.eyeInWater.value = inWater;
+  }
+
+  /** The scatterColor uniform itself, which setShading updates in place. */
+  get deepWater(): { readonly value: Vector3 } {
+    return this.uniforms.scatterColor;
   }
 
   /** Changes shading options; throws a ParameterError naming the first bad one and changes nothing. */

@@ -1,8 +1,9 @@
 /**
- * The visible sea: a Mesh of the horizon grid (horizonGrid.ts) with the OceanMaterial, displaced
- * and shaded from the simulation's field textures. Add it to any scene; before each render it
+ * The visible sea: a Mesh of the horizon grid (horizonGrid.ts) with a SeaSurfaceMaterial
+ * (seaSurfaceMaterial.ts; OceanMaterial on WebGLRenderer), displaced and shaded from the
+ * simulation's field textures, driven only through that interface. Add it to any scene; before each render it
  * places its rings around the rendering camera. The sea is the plane y = 0 of world space (the
- * mesh's own transform is not used). Owns its geometry, material, scene reflection
+ * mesh's own transform is not used). Owns its geometry, the material it is given, scene reflection
  * (SceneReflection, the `reflections: 'scene'` option) and the capture of the scene under it
  * (SceneRefraction, the `refractions: 'scene'` option).
  */
@@ -15,7 +16,8 @@ import { addSea, removeSea } from './sceneCapture';
 import { SceneReflection, type ReflectionLayers } from './sceneReflection';
 import { BACKGROUND_WATER } from './skyBackground';
 import { SceneRefraction } from './sceneRefraction';
-import { EYE_SIDE, OceanMaterial, type OceanMaterialInputs, type OceanShadingOptions } from './oceanMaterial';
+import type { OceanMaterial } from './oceanMaterial';
+import { EYE_SIDE, type EyeSide, type SeaSurfaceMeshMaterial } from './seaSurfaceMaterial';
 
 /** Metres from the surface within which the eye is taken to be at the waterline (about a camera's near distance). */
 const WATERLINE_BAND = 0.5;
@@ -23,7 +25,7 @@ const WATERLINE_BAND = 0.5;
 /** The fewest cells per ring that can be asked for (OceanSurface.fewestCellsPerRing). */
 const FEWEST_CELLS_ALLOWED = 16;
 
-export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeometry>, OceanMaterial> {
+export class OceanSurface<M extends SeaSurfaceMeshMaterial = OceanMaterial> extends Mesh<ReturnType<typeof createHorizonGridGeometry>, M> {
   private cellsPerRing = 0;
   private fewestCells = FEWEST_CELLS_PER_RING;
   private readonly rings = new RingFrames();
@@ -41,11 +43,12 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
   private readonly reflection = new SceneReflection();
 
   /**
+   * @param material what shades the sea (OceanMaterial on WebGLRenderer); the surface owns it from now on
    * @param waves the layers to draw and the choppiness, asked before every render (they change
    *   when the simulation's parameters do)
    */
   constructor(
-    inputs: OceanMaterialInputs,
+    material: M,
     private readonly waves: () => {
       layers: readonly WaveLayer[];
       choppiness: number;
@@ -63,9 +66,8 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
       /** The layer whose grid carries the foam of hulls under way (LocalWaves, hullFoam.ts), one of `layers`; null or left out: none. */
       hullFoam?: (WaveLayer & { readonly foam: { readonly texture: Texture } }) | null;
     },
-    shading: OceanShadingOptions = {},
   ) {
-    super(createHorizonGridGeometry(32), new OceanMaterial(inputs, shading));
+    super(createHorizonGridGeometry(32), material);
     this.name = 'OceanSurface';
     this.frustumCulled = false; // the vertex shader moves every vertex; the sea is always in view
     this.cellsPerRing = 32;
@@ -172,19 +174,15 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
   /** Centres the rings under `camera` (done before every render; public for the geometry test). */
   placeRings(camera: Camera): void {
     const position = camera.getWorldPosition(this.cameraPosition);
-    const u = this.material.uniforms;
     const { layers, choppiness, foam, surfaceBound, waterHeightAt, windSpeed, windDirection, shore, hullFoam } = this.waves();
     this.material.bindLayers(layers, choppiness, foam, windSpeed, windDirection);
     this.material.bindHullFoam(hullFoam ? layers.indexOf(hullFoam) : -1, hullFoam?.foam.texture ?? null);
     this.material.setEye(position.x, position.z);
     this.material.bindShore(shore ?? null, position.x, position.z);
     this.rings.update(position.x, position.z, position.y, layers, this.cellsPerRing);
-    u.ringFrames.value = this.rings.frames;
-    u.ringLayerUvOrigins.value = this.rings.uvOrigins;
-    u.ringOffsets.value = this.rings.offsets;
-    u.halfRingCells.value = this.cellsPerRing / 2;
-    const side = this.eyeSide(position, surfaceBound, waterHeightAt);
-    u.eyeSide.value = side;
+    this.material.setRings(this.rings, this.cellsPerRing);
+    const { side, inWater } = this.eyeSide(position, surfaceBound, waterHeightAt);
+    this.material.setEyeSide(side, inWater);
     // What the sky background shows (background.frag): under the water, the depths wherever no
     // surface is drawn; with the eye at the surface, the depths below the horizon only.
     this.backgroundWater.value =
@@ -196,14 +194,19 @@ export class OceanSurface extends Mesh<ReturnType<typeof createHorizonGridGeomet
    * above, one from an eye in the water first from below, so one test of the eye decides for the
    * whole picture; only within WATERLINE_BAND of the surface, where the near plane crosses it, each
    * triangle tells by the side it shows (ocean.frag). The water's height is asked only between the
-   * highest crest and the lowest trough.
+   * highest crest and the lowest trough; `inWater` says whether the eye is below the water's
+   * height there (what the farther triangles follow when it is near).
    */
-  private eyeSide(position: Vector3, surfaceBound: number | undefined, waterHeightAt: ((x: number, z: number) => number) | undefined): number {
-    if (surfaceBound === undefined || position.y > surfaceBound + WATERLINE_BAND) return EYE_SIDE.above;
-    if (position.y < -surfaceBound - WATERLINE_BAND) return EYE_SIDE.below;
+  private eyeSide(
+    position: Vector3,
+    surfaceBound: number | undefined,
+    waterHeightAt: ((x: number, z: number) => number) | undefined,
+  ): { side: EyeSide; inWater: boolean } {
+    if (surfaceBound === undefined || position.y > surfaceBound + WATERLINE_BAND) return { side: EYE_SIDE.above, inWater: false };
+    if (position.y < -surfaceBound - WATERLINE_BAND) return { side: EYE_SIDE.below, inWater: true };
     const above = waterHeightAt === undefined ? 0 : position.y - waterHeightAt(position.x, position.z);
-    this.material.uniforms.eyeInWater.value = above < 0;
-    return above > WATERLINE_BAND ? EYE_SIDE.above : above < -WATERLINE_BAND ? EYE_SIDE.below : EYE_SIDE.near;
+    const side = above > WATERLINE_BAND ? EYE_SIDE.above : above < -WATERLINE_BAND ? EYE_SIDE.below : EYE_SIDE.near;
+    return { side, inWater: above < 0 };
   }
 
   dispose(): void {

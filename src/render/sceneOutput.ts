@@ -24,7 +24,7 @@ import {
   type Object3D,
   type WebGLRenderer,
 } from 'three';
-import { drawLikeCanvas } from '../fft/threeInternals';
+import { drawLikeCanvas } from '../device/webgl2/threeInternals';
 import { shaderSource } from '../shaderSource';
 
 /** Samples per pixel with MSAA on: what browsers give a canvas made with antialias: true. */

@@ -2,12 +2,12 @@
  * The FFT's working storage on WebGL 2 (a LayeredTarget of ../gpuDevice.ts): two array textures of
  * four layers and a framebuffer with all eight layers as colour attachments, so one pass writes a
  * butterfly's four outputs to each texture. three.js cannot render to several layers at once, so
- * the layers are attached to a framebuffer of its own, handed to three.js (src/fft/threeInternals.ts,
+ * the layers are attached to a framebuffer of its own, handed to three.js (threeInternals.ts,
  * the one adapter for what three.js does not make public); three.js still allocates, binds and
  * frees the textures.
  */
 import { NearestFilter, RGBAFormat, type Texture, type TextureDataType, WebGLArrayRenderTarget, WebGLRenderTarget, type WebGLRenderer } from 'three';
-import { glTextureOf, useExternalFramebuffer } from '../../fft/threeInternals';
+import { glTextureOf, useExternalFramebuffer } from './threeInternals';
 import { UnsupportedError } from '../../parameters/options';
 import type { LayeredTarget, TexelRows } from '../gpuDevice';
 

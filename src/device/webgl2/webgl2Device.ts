@@ -19,29 +19,44 @@ import {
   WebGLRenderTarget,
   type WebGLRenderer,
 } from 'three';
-import { LAYERED_ATTACHMENTS, type FieldTarget, type FieldTargetOptions, type GpuDevice, type GpuPrecision, type LayeredTarget, type PassMaterial, type TexelRows } from '../gpuDevice';
+import { LAYERED_ATTACHMENTS, type FieldTarget, type GpuCapability, type FieldTargetOptions, type GpuDevice, type GpuPrecision, type LayeredTarget, type PassMaterial, type TexelRows } from '../gpuDevice';
 import { FullscreenPass, fullscreenMaterial, runPasses } from './fullscreenPass';
 import { WebGL2LayeredTarget } from './layeredTarget';
+import { missingThreeInternals } from './threeInternals';
+import { UnsupportedError } from '../../parameters/options';
 
 /**
- * Whether the context renders in software (SwiftShader, llvmpipe, …). There each fragment pass
- * costs ~0.6 ms of fixed overhead, and a step of the local waves at N = 128 took 30 ms in 31 passes
- * where the JS solver takes 4 ms (measured under SwiftShader on 2 cores); on a GPU the passes take
- * well under 1 ms.
+ * What is asked of a context once: getParameter may wait for the GPU to finish its queue, and the
+ * answers do not change. `software`: whether it renders in software (SwiftShader, llvmpipe, …),
+ * where each fragment pass costs ~0.6 ms of fixed overhead, and a step of the local waves at
+ * N = 128 took 30 ms in 31 passes where the JS solver takes 4 ms (measured under SwiftShader on
+ * 2 cores); on a GPU the passes take well under 1 ms.
  */
-export function isSoftwareRenderer(renderer: WebGLRenderer): boolean {
-  const gl = renderer.getContext();
-  // Asked once per context: getParameter may wait for the GPU to finish its queue.
-  let software = softwareContexts.get(gl);
-  if (software === undefined) {
-    const info = gl.getExtension('WEBGL_debug_renderer_info');
-    software = /swiftshader|llvmpipe|softpipe|software/i.test(String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER)));
-    softwareContexts.set(gl, software);
-  }
-  return software;
+interface ContextFacts {
+  software: boolean;
+  drawBuffers: number;
 }
 
-const softwareContexts = new WeakMap<WebGLRenderingContext | WebGL2RenderingContext, boolean>();
+const contextFacts = new WeakMap<WebGL2RenderingContext, ContextFacts>();
+
+function factsOf(gl: WebGL2RenderingContext): ContextFacts {
+  let facts = contextFacts.get(gl);
+  if (facts === undefined) {
+    const info = gl.getExtension('WEBGL_debug_renderer_info');
+    const name = String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER));
+    facts = { software: /swiftshader|llvmpipe|softpipe|software/i.test(name), drawBuffers: gl.getParameter(gl.MAX_DRAW_BUFFERS) as number };
+    contextFacts.set(gl, facts);
+  }
+  return facts;
+}
+
+/** The extension or limit of WebGL 2 behind each capability flag (GpuDevice.capabilityName). */
+const CAPABILITY_NAMES: Record<GpuCapability, string> = {
+  float32Targets: 'EXT_color_buffer_float',
+  float16Targets: 'EXT_color_buffer_half_float',
+  float32Filterable: 'OES_texture_float_linear',
+  drawBuffers: 'MAX_DRAW_BUFFERS',
+};
 
 /** A FieldTarget on WebGL 2: a WebGLRenderTarget, which tests and the bench read back directly. */
 export class WebGL2FieldTarget implements FieldTarget {
@@ -68,6 +83,11 @@ export class WebGL2Device implements GpuDevice {
 
   constructor(readonly renderer: WebGLRenderer) {}
 
+  get unavailableReason(): string | null {
+    if (!this.renderer.capabilities.isWebGL2 || !(this.renderer.getContext() instanceof WebGL2RenderingContext)) return 'no WebGL 2';
+    return missingThreeInternals(this.renderer);
+  }
+
   get float32Targets(): boolean {
     return this.renderer.extensions.has('EXT_color_buffer_float');
   }
@@ -80,8 +100,16 @@ export class WebGL2Device implements GpuDevice {
     return this.renderer.extensions.has('OES_texture_float_linear');
   }
 
+  get drawBuffers(): number {
+    return factsOf(this.gl).drawBuffers;
+  }
+
   get software(): boolean {
-    return isSoftwareRenderer(this.renderer);
+    return factsOf(this.gl).software;
+  }
+
+  capabilityName(capability: GpuCapability): string {
+    return CAPABILITY_NAMES[capability];
   }
 
   createFieldTarget({ size, precision, count = 1, channels = 'rgba', sampling = 'texels' }: FieldTargetOptions): WebGL2FieldTarget {
@@ -103,6 +131,8 @@ export class WebGL2Device implements GpuDevice {
   }
 
   createLayeredTarget(size: number, precision: GpuPrecision): LayeredTarget {
+    const unavailable = this.unavailableReason;
+    if (unavailable !== null) throw new UnsupportedError('three.js', `three-fft-ocean: ${unavailable}`);
     const target = new WebGL2LayeredTarget(this.renderer, size, precision === 'float32' ? FloatType : HalfFloatType);
     // Checked now rather than at the first pass, so that a device that cannot render to the
     // layered framebuffer makes the caller throw (and the 'auto' path fall back to JS with the reason).
@@ -130,7 +160,7 @@ export class WebGL2Device implements GpuDevice {
 
   clear(target: FieldTarget | LayeredTarget, rows: TexelRows | null = null): void {
     const drawBuffers = this.bind(target, rows);
-    const gl = this.renderer.getContext() as WebGL2RenderingContext;
+    const gl = this.gl;
     this.renderer.state.buffers.color.setMask(true); // a material's colorWrite: false would mask the clear
     for (let drawBuffer = 0; drawBuffer < drawBuffers; drawBuffer++) gl.clearBufferfv(gl.COLOR, drawBuffer, ZERO_TEXEL);
   }
@@ -154,6 +184,10 @@ export class WebGL2Device implements GpuDevice {
 
   dispose(): void {
     this.pass.dispose();
+  }
+
+  private get gl(): WebGL2RenderingContext {
+    return this.renderer.getContext() as WebGL2RenderingContext;
   }
 
   /** Makes `target` (`rows` of it) the render target; returns its number of colour attachments. */

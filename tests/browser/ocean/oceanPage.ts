@@ -18,7 +18,7 @@ import {
 } from 'three';
 import { Ocean, type OceanOptions } from '../../../src/ocean';
 import { shaderSource } from '../../../src/shaderSource';
-import type { OceanShadingOptions } from '../../../src/render/oceanMaterial';
+import { OceanMaterial, type OceanShadingOptions } from '../../../src/render/oceanMaterial';
 import { OceanSurface } from '../../../src/render/oceanSurface';
 import { OceanSimulation } from '../../../src/layers/oceanSimulation';
 import type { SimulationParameters } from '../../../src/parameters/parameters';
@@ -72,11 +72,12 @@ export function setup(parameters: Partial<SimulationParameters>, shading: OceanS
   current.simulation?.dispose();
   const sim = new OceanSimulation(renderer, parameters, { path: 'gpu', worker: false });
   current.simulation = sim;
-  current.surface = new OceanSurface(
-    { environment, sunDirection: { value: sunDirection } },
-    () => ({ layers: sim.layers, choppiness: sim.parameters.choppiness, foam: sim.foam.texture, surfaceBound: current.surfaceBound }),
-    shading,
-  );
+  current.surface = new OceanSurface(new OceanMaterial({ environment, sunDirection: { value: sunDirection } }, shading), () => ({
+    layers: sim.layers,
+    choppiness: sim.parameters.choppiness,
+    foam: sim.foam.texture,
+    surfaceBound: current.surfaceBound,
+  }));
   scene.add(current.surface);
 }
 
