@@ -41,6 +41,8 @@ export class OceanMaterial extends ShaderMaterial implements SeaSurfaceMaterial 
   private blendedSize = 1;
   /** The wind the sub-pixel slopes were set for (seaLighting.ts), with the layers bound then. */
   private litWindSpeed = Number.NaN;
+  /** The wind (speed m/s, direction °) the streaks' and spray's uniforms were set for: bindLayers runs every frame, they change with the wind only. */
+  private lookWind: [number, number] = [Number.NaN, Number.NaN];
 
   constructor(inputs: OceanMaterialInputs, options: OceanShadingOptions = {}, defines: Record<string, unknown> = {}) {
     super({
@@ -134,14 +136,17 @@ export class OceanMaterial extends ShaderMaterial implements SeaSurfaceMaterial 
     const u = this.uniforms;
     u.choppiness.value = choppiness;
     u.tFoam = foam;
-    const look = beaufortAppearance(windSpeed, windDirection);
-    u.windAlong.value.fromArray(look.windAlong);
-    u.streakShare.value = look.streakShare;
-    u.streakLength.value = look.streakLength;
-    u.streakElongation.value = look.streakElongation;
-    u.streakGain.value = look.streakGain;
-    u.sprayExtinction.value = look.sprayExtinction;
-    u.spindrift.value = look.spindrift;
+    if (windSpeed !== this.lookWind[0] || windDirection !== this.lookWind[1]) {
+      this.lookWind = [windSpeed, windDirection];
+      const look = beaufortAppearance(windSpeed, windDirection);
+      u.windAlong.value.fromArray(look.windAlong);
+      u.streakShare.value = look.streakShare;
+      u.streakLength.value = look.streakLength;
+      u.streakElongation.value = look.streakElongation;
+      u.streakGain.value = look.streakGain;
+      u.sprayExtinction.value = look.sprayExtinction;
+      u.spindrift.value = look.spindrift;
+    }
     if (layers === this.boundLayers && windSpeed === this.litWindSpeed) return;
     this.litWindSpeed = windSpeed;
     const light = seaLightingValues(layers, windSpeed);
