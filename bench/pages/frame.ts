@@ -12,6 +12,7 @@ import { ACESFilmicToneMapping, BoxGeometry, Mesh, MeshBasicMaterial, Perspectiv
 import type { PressureSource } from '../../src/layers/localWaves';
 import { Ocean, type OceanOptions } from '../../src/ocean';
 import { islandFrames } from './island';
+import { timeRounds } from './timedRounds';
 
 export interface FrameOptions {
   resolution: number;
@@ -64,32 +65,21 @@ async function frames(options: FrameOptions): Promise<FrameSamples[]> {
     const hull: PressureSource | null = activeLocalWaves ? (ocean.localWaves?.addPressure({ length: 8, beam: 2.6, draft: 0.6 }, { x: 30, z: -40, heading: 0 }) ?? null) : null;
     return { label, scene, ocean, hull, samples: [] as number[], calls: 0, triangles: 0 };
   });
-  const pixel = new Uint8Array(4);
-  const sync = () => gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
   try {
-    let t = 3;
-    for (let round = 0; round < options.warmup + options.rounds; round++) {
-      t += 1 / 30;
-      for (const subject of subjects) {
-        sync();
-        const start = performance.now();
-        if (subject.hull) {
-          // 5 m/s round a 30 m circle ahead of the camera, and a stone every second.
-          const angle = t / 6;
-          subject.hull.setPose(30 + 30 * Math.cos(angle), -40 + 30 * Math.sin(angle), angle + Math.PI / 2);
-          if (round % 30 === 0) subject.ocean.localWaves?.drop(20, -25);
-        }
-        subject.ocean.update(t);
-        camera.far = Math.max(1e4, 1.5 * subject.ocean.horizonDistance);
-        camera.updateProjectionMatrix();
-        renderer.render(subject.scene, camera);
-        sync();
-        if (round >= options.warmup) subject.samples.push(performance.now() - start);
-        subject.calls = renderer.info.render.calls;
-        subject.triangles = renderer.info.render.triangles;
-        await new Promise((resolve) => setTimeout(resolve, 0));
+    await timeRounds(gl, subjects, options, (subject, t, round) => {
+      if (subject.hull) {
+        // 5 m/s round a 30 m circle ahead of the camera, and a stone every second.
+        const angle = t / 6;
+        subject.hull.setPose(30 + 30 * Math.cos(angle), -40 + 30 * Math.sin(angle), angle + Math.PI / 2);
+        if (round % 30 === 0) subject.ocean.localWaves?.drop(20, -25);
       }
-    }
+      subject.ocean.update(t);
+      camera.far = Math.max(1e4, 1.5 * subject.ocean.horizonDistance);
+      camera.updateProjectionMatrix();
+      renderer.render(subject.scene, camera);
+      subject.calls = renderer.info.render.calls;
+      subject.triangles = renderer.info.render.triangles;
+    });
     return subjects.map(({ label, ocean, samples, calls, triangles }) => ({
       label,
       patchSizes: [...ocean.simulation.parameters.patchSizes],

@@ -14,6 +14,7 @@ import { SunLight } from '../../src/objects/sunLight';
 import { fitFarPlane, Ocean } from '../../src/index';
 import { ParameterError } from '../../src/parameters/options';
 import { QUALITY_STEPS, simulationAtQuality, type QualityLevel } from '../../src/runtime/adaptiveQuality';
+import { timeRounds } from './timedRounds';
 
 export interface IslandFrameOptions {
   width: number;
@@ -68,30 +69,17 @@ export async function islandFrames(options: IslandFrameOptions): Promise<IslandF
     scene.add(ocean, light);
     return { label, scene, ocean, samples: [] as number[], updateSamples: [] as number[], calls: 0 };
   });
-  const pixel = new Uint8Array(4);
-  const sync = () => gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
   try {
-    let t = 3;
-    for (let round = 0; round < options.warmup + options.rounds; round++) {
-      t += 1 / 30;
-      for (const subject of subjects) {
-        subject.scene.add(island);
-        sync();
-        const start = performance.now();
-        subject.ocean.update(t, camera);
-        const updated = performance.now();
-        island.update(subject.ocean);
-        fitFarPlane(camera, subject.ocean);
-        renderer.render(subject.scene, camera);
-        sync();
-        if (round >= options.warmup) {
-          subject.samples.push(performance.now() - start);
-          subject.updateSamples.push(updated - start);
-        }
-        subject.calls = renderer.info.render.calls;
-        await new Promise((resolve) => setTimeout(resolve, 0));
-      }
-    }
+    await timeRounds(gl, subjects, options, (subject, t, _round, timed) => {
+      subject.scene.add(island); // a reparenting, nothing drawn
+      const start = performance.now();
+      subject.ocean.update(t, camera);
+      if (timed) subject.updateSamples.push(performance.now() - start);
+      island.update(subject.ocean);
+      fitFarPlane(camera, subject.ocean);
+      renderer.render(subject.scene, camera);
+      subject.calls = renderer.info.render.calls;
+    });
     return subjects.map(({ label, ocean, samples, updateSamples, calls }) => ({
       label,
       samples,

@@ -1,0 +1,29 @@
+/**
+ * The frame pages' timed loop (frame.ts, island.ts): each round advances the simulated time by a
+ * 30 fps frame and draws every subject once, interleaved so that the machine's drifts fall on all
+ * alike. A frame is timed from an idle GPU to a 1-pixel readPixels after it (gl.finish does not
+ * block in Chromium: BROWSER.md), and yields to the event loop before the next one.
+ */
+export async function timeRounds<S extends { samples: number[] }>(
+  gl: WebGLRenderingContext | WebGL2RenderingContext,
+  subjects: readonly S[],
+  counts: { warmup: number; rounds: number },
+  /** Draws `subject` at time `t`; `timed` is false during the warm-up, whose frames are not kept. */
+  drawFrame: (subject: S, t: number, round: number, timed: boolean) => void,
+): Promise<void> {
+  const pixel = new Uint8Array(4);
+  const sync = () => gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+  let t = 3;
+  for (let round = 0; round < counts.warmup + counts.rounds; round++) {
+    t += 1 / 30;
+    const timed = round >= counts.warmup;
+    for (const subject of subjects) {
+      sync();
+      const start = performance.now();
+      drawFrame(subject, t, round, timed);
+      sync();
+      if (timed) subject.samples.push(performance.now() - start);
+      await new Promise((resolve) => setTimeout(resolve, 0));
+    }
+  }
+}
