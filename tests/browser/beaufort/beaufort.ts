@@ -4,10 +4,11 @@
  * towards +x, under the sky the preset goes with (presetCloudCover), rendered once (ACES, sRGB, as
  * the app) and read back as 8-bit pixels, rows from the top.
  */
-import { ACESFilmicToneMapping, PerspectiveCamera, Scene, SRGBColorSpace, Vector3, WebGLRenderer } from 'three';
+import { Vector3 } from 'three';
 import { Ocean } from '../../../src/ocean';
 import { beaufortPreset, presetCloudCover } from '../../../src/spectrum/presets';
 import { fitFarPlane } from '../../../src/runtime/farPlane';
+import { pictureRenderer } from '../shared/pictureRenderer';
 
 export interface BeaufortView {
   force: number;
@@ -31,14 +32,7 @@ export interface BeaufortPicture {
   png: string | null;
 }
 
-const canvas = document.createElement('canvas');
-document.body.append(canvas);
-const renderer = new WebGLRenderer({ canvas, antialias: false, preserveDrawingBuffer: true });
-renderer.toneMapping = ACESFilmicToneMapping;
-renderer.outputColorSpace = SRGBColorSpace;
-renderer.setPixelRatio(1);
-const scene = new Scene();
-const camera = new PerspectiveCamera(50, 1, 0.5, 100_000);
+const { canvas, renderer, scene, camera } = pictureRenderer();
 let ocean: Ocean | null = null;
 
 function render(view: BeaufortView): BeaufortPicture {

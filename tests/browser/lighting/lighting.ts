@@ -4,12 +4,13 @@
  * test places, rendered once (ACES, sRGB, as the app) and read back as 8-bit pixels; or the same
  * view rendered at k× the size and box-averaged k×k down (a supersampled reference).
  */
-import { ACESFilmicToneMapping, FloatType, PerspectiveCamera, Scene, SRGBColorSpace, Vector3, WebGLRenderer, WebGLRenderTarget } from 'three';
+import { FloatType, Vector3, WebGLRenderTarget } from 'three';
 import { Ocean } from '../../../src/ocean';
 import { DEFAULT_PARAMETERS } from '../../../src/parameters/parameters';
 import { DEFAULT_SHADING, type ShadingMode } from '../../../src/parameters/sceneOptions';
 import { QUALITY_STEPS, simulationAtQuality, type QualityLevel } from '../../../src/runtime/adaptiveQuality';
 import { fitFarPlane } from '../../../src/runtime/farPlane';
+import { pictureRenderer } from '../shared/pictureRenderer';
 
 export interface ViewRequest {
   windSpeed: number;
@@ -61,13 +62,7 @@ export interface ViewResult {
   png: string | null;
 }
 
-const canvas = document.createElement('canvas');
-document.body.append(canvas);
-const renderer = new WebGLRenderer({ canvas, antialias: false, preserveDrawingBuffer: true });
-renderer.toneMapping = ACESFilmicToneMapping;
-renderer.outputColorSpace = SRGBColorSpace;
-const scene = new Scene();
-const camera = new PerspectiveCamera(50, 1, 0.5, 100_000);
+const { canvas, renderer, scene, camera } = pictureRenderer();
 let ocean: Ocean | null = null;
 let built = '';
 
