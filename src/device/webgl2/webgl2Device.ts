@@ -89,15 +89,15 @@ export class WebGL2Device implements GpuDevice {
   }
 
   get float32Targets(): boolean {
-    return this.renderer.extensions.has('EXT_color_buffer_float');
+    return this.renderer.extensions.has(CAPABILITY_NAMES.float32Targets);
   }
 
   get float16Targets(): boolean {
-    return this.renderer.extensions.has('EXT_color_buffer_half_float') || this.float32Targets;
+    return this.renderer.extensions.has(CAPABILITY_NAMES.float16Targets) || this.float32Targets;
   }
 
   get float32Filterable(): boolean {
-    return this.renderer.extensions.has('OES_texture_float_linear');
+    return this.renderer.extensions.has(CAPABILITY_NAMES.float32Filterable);
   }
 
   get drawBuffers(): number {
