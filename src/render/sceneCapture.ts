@@ -73,8 +73,7 @@ function onlySea(object: Object3D, sea: ReadonlySet<Object3D>): boolean {
 /**
  * Collects into `out` the visible meshes of `object` that lie wholly under the plane y = 0: their
  * geometry's bounding box, placed in the world, has its top below it. Only plain meshes without
- * children whose
- * vertices are where their geometry says (no skinning, instances, morph targets, displacement map
+ * children whose vertices are where their geometry says (no skinning, instances, morph targets, displacement map
  * or vertex shader of the user's) are judged; anything else is kept.
  */
 export function belowWaterMeshes(object: Object3D, out: Object3D[]): void {

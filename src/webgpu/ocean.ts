@@ -34,6 +34,7 @@ import { colorToLinear, DEFAULT_SHADING, SHADING_OPTIONS, type ColorInput } from
 import { createCascadeSpectra } from '../spectrum/initialSpectrum';
 import { seaGridGeometry } from './seaGrid';
 import { seaMaterial, skyMaterial, type SeaUniforms } from './seaNodes';
+import { checkCoordinates } from '../oceanQueries';
 
 export interface WebGPUOceanOptions extends Partial<SimulationParameters> {
   /** Refractive index of water n_w, (1, 3] (ShadingOptions.ior). @defaultValue 1.333 */
@@ -166,14 +167,14 @@ export class Ocean extends Object3D {
    */
   heightAt(x: number, z: number): number {
     this.checkAlive('heightAt');
-    checkPoint('heightAt', x, z);
+    checkCoordinates('heightAt', x, z);
     return heightAt(this.currentLayers, this.parameters.choppiness, this.currentTime, x, z);
   }
 
   /** Upward unit normal of the water surface over (x, z), written into `target` (surfaceQuery.ts). */
   normalAt(x: number, z: number, target: Vector3 = new Vector3()): Vector3 {
     this.checkAlive('normalAt');
-    checkPoint('normalAt', x, z);
+    checkCoordinates('normalAt', x, z);
     return normalAt(this.currentLayers, this.parameters.choppiness, this.currentTime, x, z, target);
   }
 
@@ -246,9 +247,4 @@ function linearColor(name: string, value: ColorInput | undefined, fallback: read
   const rgb = colorToLinear(value);
   if (rgb === undefined || !rgb.every((c) => Number.isFinite(c) && c >= 0 && c <= 100)) throw new ParameterError(name, value, 'a colour: a three.js Color, a CSS colour string, a hex number or linear [r, g, b] from 0 to 100');
   return rgb;
-}
-
-function checkPoint(method: string, x: number, z: number): void {
-  if (!Number.isFinite(x)) throw new ParameterError(`${method} x`, x, 'a finite number of metres');
-  if (!Number.isFinite(z)) throw new ParameterError(`${method} z`, z, 'a finite number of metres');
 }
