@@ -11,13 +11,13 @@
  * This first slice draws the FFT cascades of the same sea as the WebGL Ocean (the same parameters,
  * spectra and seeded amplitudes, computed by the JS FFT: src/fft/cpuFieldTextures.ts, in a worker
  * by default, uploaded as float textures each frame; there is no GPU FFT on WebGPURenderer yet),
- * displaced and lit in TSL (seaNodes.ts) by the sky's Fresnel reflection over the deep water's
- * colour, on a fixed grid around the origin (seaGrid.ts). heightAt and normalAt answer from the
+ * displaced and lit in TSL (seaNodes.ts) by the Fresnel reflection of the WebGL Ocean's analytic
+ * sky (skyNodes.ts, its sun and clouds, also drawn behind everything) over the deep water's colour, on a fixed grid around the origin (seaGrid.ts). heightAt and normalAt answer from the
  * same fields and code as the WebGL Ocean's (src/layers/surfaceQuery.ts), so for the same options
  * and time they return the same numbers.
  *
  * What it does not draw yet throws an UnsupportedError when asked for (NOT_YET), and what is on by
- * default in the WebGL Ocean but missing here (whitecap foam, the sun, the analytic sky) is named in
+ * default in the WebGL Ocean but missing here (whitecap foam, the glint) is named in
  * one console warning per page. Owns its cascades, textures, geometry and materials; dispose()
  * frees them, after which every method throws a DisposedError.
  */
@@ -28,12 +28,14 @@ import { CpuFieldTextures, type FloatTextureSupport } from '../fft/cpuFieldTextu
 import { FftCascade, type FftBackend } from '../layers/fftCascade';
 import { heightAt, normalAt } from '../layers/surfaceQuery';
 import { orderLayers, type WaveLayer } from '../layers/waveLayer';
-import { checkOptionNames, DisposedError, UnsupportedError } from '../parameters/options';
+import { checkOption, checkOptionNames, DisposedError, UnsupportedError } from '../parameters/options';
 import { ParameterError, SIMULATION_OPTIONS, validateParameters, type SimulationParameters } from '../parameters/parameters';
-import { colorToLinear, DEFAULT_SHADING, SHADING_OPTIONS, type ColorInput } from '../parameters/sceneOptions';
+import { colorToLinear, DEFAULT_SHADING, DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ColorInput } from '../parameters/sceneOptions';
+import { sunAngles, type SunDirection } from '../render/skyEnvironment';
 import { createCascadeSpectra } from '../spectrum/initialSpectrum';
 import { seaGridGeometry } from './seaGrid';
 import { seaMaterial, skyMaterial, type SeaUniforms } from './seaNodes';
+import { skyUniforms } from './skyNodes';
 import { checkCoordinates } from '../oceanQueries';
 
 export interface WebGPUOceanOptions extends Partial<SimulationParameters> {
@@ -41,10 +43,14 @@ export interface WebGPUOceanOptions extends Partial<SimulationParameters> {
   ior?: number;
   /** Colour of the light deep water scatters back, any ColorInput (an array is linear RGB). @defaultValue [0.0, 0.035, 0.06] */
   scatterColor?: ColorInput;
-  /** The sky's colour at the horizon, any ColorInput (an array is linear RGB). @defaultValue [0.45, 0.6, 0.8] */
-  horizonColor?: ColorInput;
-  /** The sky's colour straight up, any ColorInput (an array is linear RGB). @defaultValue [0.1, 0.25, 0.6] */
-  zenithColor?: ColorInput;
+  /** Sun elevation above the horizon in degrees, [-90, 90] (OceanOptions.sunElevation). @defaultValue 30 */
+  sunElevation?: number;
+  /** Sun azimuth in degrees from +x towards +z (OceanOptions.sunAzimuth). @defaultValue 40 */
+  sunAzimuth?: number;
+  /** Direction towards the sun instead of sunElevation and sunAzimuth, y up, any length (OceanOptions.sunDirection). @defaultValue undefined */
+  sunDirection?: SunDirection;
+  /** How much of the sky is cloud, [0, 1]: 0 clear, 1 overcast (OceanOptions.cloudCover). @defaultValue 0 */
+  cloudCover?: number;
   /** Compute the JS FFT in a Web Worker (SimulationOptions.worker). @defaultValue true where Worker exists */
   worker?: boolean;
   /** 'auto' or 'js': both the JS FFT here; 'gpu' throws (no GPU FFT on WebGPURenderer yet). @defaultValue 'auto' */
@@ -70,19 +76,10 @@ const NOT_YET: Record<string, { drawn: unknown; missing: string }> = {
   causticPower: { drawn: undefined, missing: 'caustics (causticPower)' },
   causticColor: { drawn: undefined, missing: 'caustics (causticColor)' },
   absorption: { drawn: undefined, missing: 'absorption along a shallow path (absorption): the sea is infinitely deep' },
-  sunElevation: { drawn: undefined, missing: 'the sun and the analytic sky (sunElevation): the sky is a two-colour gradient' },
-  sunAzimuth: { drawn: undefined, missing: 'the sun and the analytic sky (sunAzimuth)' },
-  sunDirection: { drawn: undefined, missing: 'the sun and the analytic sky (sunDirection)' },
-  cloudCover: { drawn: undefined, missing: 'the analytic sky (cloudCover)' },
 };
 
 const SIMULATION_KEYS = Object.keys(SIMULATION_OPTIONS) as (keyof SimulationParameters)[];
-const OPTION_KEYS: readonly string[] = [...SIMULATION_KEYS, 'ior', 'scatterColor', 'horizonColor', 'zenithColor', 'worker', ...Object.keys(NOT_YET)];
-
-export const WEBGPU_OCEAN_DEFAULTS = Object.freeze({
-  horizonColor: [0.45, 0.6, 0.8] as const,
-  zenithColor: [0.1, 0.25, 0.6] as const,
-});
+const OPTION_KEYS: readonly string[] = [...SIMULATION_KEYS, 'ior', 'scatterColor', 'worker', ...Object.keys(SUN_OPTIONS), 'sunDirection', ...Object.keys(NOT_YET)];
 
 /** The one warning of what the WebGL Ocean draws by default and this one does not, once per page. */
 let warnedOfMissing = false;
@@ -117,12 +114,16 @@ export class Ocean extends Object3D {
     this.parameters = validateParameters(simulation);
     const ior = options.ior ?? DEFAULT_SHADING.ior;
     if (!SHADING_OPTIONS.ior.check(ior)) throw new ParameterError('ior', ior, SHADING_OPTIONS.ior.allowed);
+    const sun = sunAngles({ elevation: options.sunElevation, azimuth: options.sunAzimuth, direction: options.sunDirection }, { elevation: DEFAULT_SUN.sunElevation, azimuth: DEFAULT_SUN.sunAzimuth }, 'sunDirection');
+    checkOption(SUN_OPTIONS, 'sunElevation', sun.elevation);
+    checkOption(SUN_OPTIONS, 'sunAzimuth', sun.azimuth);
+    const cloudCover = options.cloudCover ?? DEFAULT_SUN.cloudCover;
+    checkOption(SUN_OPTIONS, 'cloudCover', cloudCover);
     this.uniforms = {
       choppiness: uniform(this.parameters.choppiness),
       ior: uniform(ior),
       scatterColor: uniform(new Vector3(...linearColor('scatterColor', options.scatterColor, DEFAULT_SHADING.scatterColor))),
-      horizonColor: uniform(new Vector3(...linearColor('horizonColor', options.horizonColor, WEBGPU_OCEAN_DEFAULTS.horizonColor))),
-      zenithColor: uniform(new Vector3(...linearColor('zenithColor', options.zenithColor, WEBGPU_OCEAN_DEFAULTS.zenithColor))),
+      sky: skyUniforms(sun.elevation, sun.azimuth, cloudCover),
     };
     this.useWorker = options.worker ?? typeof Worker !== 'undefined';
     this.buildCascades();
@@ -136,7 +137,7 @@ export class Ocean extends Object3D {
     this.add(this.skyMesh, this.surface);
     if (!warnedOfMissing && this.parameters.foamAmount > 0) {
       warnedOfMissing = true;
-      console.warn('three-fft-ocean/webgpu: not drawn yet on WebGPURenderer: whitecap foam (foamAmount), the sun and its glint, the analytic sky (a two-colour gradient instead), the horizon rings that follow the camera, quality levels.');
+      console.warn('three-fft-ocean/webgpu: not drawn yet on WebGPURenderer: whitecap foam (foamAmount), the sun\'s glint, the horizon rings that follow the camera, quality levels.');
     }
   }
 

@@ -8,7 +8,8 @@
  *             cos θ·P(x0) + sin θ·P(x0 + o) (shaders/surface/ocean.vert, src/layers/patchBlend.ts)
  *   fragment: the normal from the summed slopes (shaders/surface/choppyNormal.glsl), then
  *             c = R·c_sky(reflect) + (1 − R)·c_deep, R the exact Fresnel reflectance
- *             (shaders/common/fresnel.glsl), c_deep the deep water's scatter colour
+ *             (shaders/common/fresnel.glsl), c_sky the analytic sky (skyNodes.ts,
+ *             shaders/sky/analyticSky.glsl), c_deep the deep water's scatter colour in the sky's daylight
  *             (shaders/surface/absorption.glsl: what a ray refracted into an infinitely deep sea sees)
  */
 import { BackSide, type Texture } from 'three';
@@ -42,10 +43,10 @@ import {
 } from 'three/tsl';
 import { COPY_OFFSET, patchBlendUniforms } from '../layers/patchBlend';
 import type { WaveLayer } from '../layers/waveLayer';
+import { analyticSkyRadiance, backgroundRadiance, type SkyUniforms } from './skyNodes';
 
 type FloatNode = Node<'float'>;
 type Vec2Node = Node<'vec2'>;
-type Vec3Node = Node<'vec3'>;
 type Vec4Node = Node<'vec4'>;
 
 /** The uniforms the surface and the sky share, which the Ocean sets. */
@@ -56,9 +57,8 @@ export interface SeaUniforms {
   ior: UniformNode<'float'>;
   /** Linear RGB of the light deep water scatters back. */
   scatterColor: UniformNode<'vec3'>;
-  /** The sky's colour at the horizon and straight up, linear RGB. */
-  horizonColor: UniformNode<'vec3'>;
-  zenithColor: UniformNode<'vec3'>;
+  /** The analytic sky and its sun (skyNodes.ts). */
+  sky: SkyUniforms;
 }
 
 /**
@@ -75,17 +75,6 @@ export const fresnelReflectance = Fn(([cosIncident, n1, n2]: [FloatNode, FloatNo
   const rp = n2.mul(cosI).sub(n1.mul(cosT)).div(n2.mul(cosI).add(n1.mul(cosT)));
   return select(sinT.greaterThanEqual(1), float(1), rs.mul(rs).add(rp.mul(rp)).mul(0.5));
 });
-
-/**
- * The sky the sea reflects and the background shows, along the unit direction `dir`: a gradient
- * from the horizon colour to the zenith colour over the square root of the elevation's sine, and
- * the deep water's colour below the horizon. A stand-in, not a model: the WebGL Ocean's analytic
- * sky (shaders/sky/analyticSky.glsl, sun and clouds) is not ported yet.
- */
-export function skyRadiance(uniforms: SeaUniforms, dir: Vec3Node): Vec3Node {
-  const up = sqrt(clamp(dir.y, 0, 1));
-  return select(dir.y.lessThan(0), uniforms.scatterColor, mix(uniforms.horizonColor, uniforms.zenithColor, up)) as unknown as Vec3Node;
-}
 
 /** Each layer's texture coordinates of the rest point x0: x0/size + ½ texel (ocean.vert's ringLayerUvOrigins, at the origin). */
 function layerUv(layer: WaveLayer, rest: Vec2Node): Vec2Node {
@@ -170,14 +159,15 @@ export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms)
     const reflected = reflect(view, normal).toVar();
     // A ray reflected downwards would hit the next wave: mirrored up (ocean.frag).
     reflected.y.assign(abs(reflected.y));
-    return mix(uniforms.scatterColor, skyRadiance(uniforms, reflected), reflectance);
+    return mix(uniforms.scatterColor.mul(uniforms.sky.daylight), analyticSkyRadiance(uniforms.sky, reflected), reflectance);
   })();
   return material;
 }
 
 /**
  * The sky behind everything: a unit sphere seen from inside, drawn first without depth, at the far
- * plane in every direction from the eye (so any camera's far plane holds it), shaded by skyRadiance.
+ * plane in every direction from the eye (so any camera's far plane holds it), shaded as the WebGL
+ * Ocean's SkyBackground (background.frag, skyNodes.ts).
  */
 export function skyMaterial(uniforms: SeaUniforms): MeshBasicNodeMaterial {
   const material = new MeshBasicNodeMaterial({ side: BackSide, depthTest: false, depthWrite: false });
@@ -188,6 +178,6 @@ export function skyMaterial(uniforms: SeaUniforms): MeshBasicNodeMaterial {
     // Just inside the far plane: z = w would be clipped by rounding.
     return vec4(clip.x, clip.y, clip.w.mul(0.99999), clip.w);
   })();
-  material.colorNode = skyRadiance(uniforms, normalize(varying(direction)));
+  material.colorNode = backgroundRadiance(uniforms.sky, uniforms.scatterColor, varying(direction));
   return material;
 }

@@ -7,10 +7,10 @@ import { MeshBasicNodeMaterial, WebGPURenderer } from 'three/webgpu';
 import { positionWorld, vec4 } from 'three/tsl';
 import { Ocean, type WebGPUOceanOptions } from '../../../src/webgpu/index';
 import { Ocean as WebGLOcean } from '../../../src/ocean';
-import { WebGLRenderer } from 'three';
+import { WebGLRenderer, WebGLRenderTarget } from 'three';
 
 /** A small sea for quick tests: N = 64, the JS FFT on this thread (the fields are there at once). */
-const SEA_PARAMETERS = { resolution: 64, windSpeed: 10, seed: 3 };
+const SEA_PARAMETERS = { resolution: 64, windSpeed: 10, seed: 3, foamAmount: 0 };
 const SEA: WebGPUOceanOptions = { ...SEA_PARAMETERS, worker: false };
 
 let renderer: WebGPURenderer | null = null;
@@ -33,34 +33,80 @@ async function open(backend: 'webgl' | 'webgpu'): Promise<{ isWebGPUBackend: boo
   return { isWebGPUBackend, reason };
 }
 
-/**
- * The default view, 4 m over the sea looking slightly down towards −z, at time t, drawn into an
- * sRGB 8-bit target of the canvas's size and read back, rows from the top. (Into a target, not the
- * canvas: headless Chromium's SwiftShader WebGPU lost its device after presenting one frame to a
- * canvas, even of an empty scene, "A valid external Instance reference no longer exists".)
- */
-async function drawView(t: number): Promise<{ width: number; height: number; data: number[] }> {
-  const scene = new Scene();
-  const ocean = new Ocean(renderer!, SEA);
-  scene.add(ocean);
+/** The default view's camera: 4 m over the sea looking slightly down towards −z. */
+function viewCamera(): PerspectiveCamera {
   const camera = new PerspectiveCamera(60, 16 / 9, 0.5, 30_000);
   camera.position.set(0, 4, 0);
   camera.lookAt(0, 1, -40);
-  const [width, height] = [320, 180];
-  const target = new RenderTarget(width, height);
+  camera.updateMatrixWorld();
+  return camera;
+}
+
+/** RGBA rows read back from a target, reordered top first (WebGL's come bottom first, WebGPU's top first). */
+function topFirst(pixels: Uint8Array, width: number, height: number, bottomFirst: boolean): number[] {
+  const data: number[] = [];
+  for (let row = 0; row < height; row++) {
+    const from = bottomFirst ? height - 1 - row : row;
+    data.push(...pixels.subarray(4 * width * from, 4 * width * (from + 1)));
+  }
+  return data;
+}
+
+/** An sRGB 8-bit picture of `width` × `height` pixels: what both Oceans are read back from. */
+function pictureTarget<T extends RenderTarget | WebGLRenderTarget>(Target: new (w: number, h: number) => T, width: number, height: number): T {
+  const target = new Target(width, height);
   target.texture.colorSpace = SRGBColorSpace;
+  return target;
+}
+
+/**
+ * The default view of the WebGPU Ocean at time t, drawn into an sRGB 8-bit target of width ×
+ * height and read back, rows from the top. (Into a target, not the canvas: headless Chromium's
+ * SwiftShader WebGPU lost its device after presenting one frame to a canvas, even of an empty
+ * scene, "A valid external Instance reference no longer exists".)
+ */
+async function drawView(t: number, width = 320, height = 180): Promise<{ width: number; height: number; data: number[] }> {
+  const scene = new Scene();
+  const ocean = new Ocean(renderer!, SEA);
+  scene.add(ocean);
+  const target = pictureTarget(RenderTarget, width, height);
   ocean.update(t);
   renderer!.setRenderTarget(target);
-  renderer!.render(scene, camera);
+  renderer!.render(scene, viewCamera());
   renderer!.setRenderTarget(null);
   const pixels = (await renderer!.readRenderTargetPixelsAsync(target, 0, 0, width, height)) as Uint8Array;
   target.dispose();
   ocean.dispose();
-  // WebGL's rows come bottom first, WebGPU's top first.
   const bottomFirst = !(renderer!.backend as { isWebGPUBackend?: boolean }).isWebGPUBackend;
-  const data: number[] = [];
-  for (let row = 0; row < height; row++) data.push(...pixels.subarray(4 * width * (bottomFirst ? height - 1 - row : row), 4 * width * ((bottomFirst ? height - 1 - row : row) + 1)));
-  return { width, height, data };
+  return { width, height, data: topFirst(pixels, width, height, bottomFirst) };
+}
+
+/**
+ * The same view of the same sea drawn by the WebGL Ocean on a WebGLRenderer, with what the WebGPU
+ * Ocean does not draw yet left out of both (foam; scene reflections and refractions, which show
+ * the sky here anyway), no tone mapping as in open(). Only while no WebGPU device lives in the
+ * page (see the spec).
+ */
+function drawWebGLView(t: number, width: number, height: number): { width: number; height: number; data: number[] } {
+  const gl = new WebGLRenderer({ antialias: false });
+  gl.toneMapping = NoToneMapping;
+  gl.setPixelRatio(1);
+  gl.setSize(width, height);
+  const ocean = new WebGLOcean(gl, { ...SEA_PARAMETERS, path: 'js', worker: false, localWaves: false, reflections: 'sky', refractions: 'sky' });
+  const scene = new Scene();
+  scene.add(ocean);
+  const camera = viewCamera();
+  const target = pictureTarget(WebGLRenderTarget, width, height);
+  ocean.update(t, camera);
+  gl.setRenderTarget(target);
+  gl.render(scene, camera);
+  const pixels = new Uint8Array(4 * width * height);
+  gl.readRenderTargetPixels(target, 0, 0, width, height, pixels);
+  gl.setRenderTarget(null);
+  target.dispose();
+  ocean.dispose();
+  gl.dispose();
+  return { width, height, data: topFirst(pixels, width, height, true) };
 }
 
 /**
@@ -198,7 +244,7 @@ function badInputs(): [string, string][] {
   return thrown;
 }
 
-const harness = { open, drawView, heightAgreement, sameQueriesAsWebGL, memoryCycle, badInputs };
+const harness = { open, drawView, drawWebGLView, heightAgreement, sameQueriesAsWebGL, memoryCycle, badInputs };
 declare global {
   interface Window {
     webgpuOcean: typeof harness;
