@@ -15,7 +15,7 @@ import { DEFAULT_SHADING, SHADING_MODES, SHADING_OPTIONS, type ShadingChanges, t
 import { shaderSource, withLayerCount } from '../shaderSource';
 import { FOAM_PATTERN_PERIOD, foamPatternDefines, foamPatternTextures } from './foamPattern';
 import { finestTexel, RING_COUNT } from './horizonGrid';
-import { SEA_SUN_COLOR, SLOPE_FILTER_LEVELS, seaLightingValues } from './seaLighting';
+import { SEA_SUN_COLOR, SLOPE_FILTER_LEVELS, seaLightingValues, VIEW_DEPTH } from './seaLighting';
 import { beaufortAppearance } from './beaufortAppearance';
 import { EYE_SIDE, type EyeSide, type RingPlacement, type SeaSurfaceMaterial } from './seaSurfaceMaterial';
 
@@ -91,7 +91,7 @@ export class OceanMaterial extends ShaderMaterial implements SeaSurfaceMaterial 
           iorWater: { value: DEFAULT_SHADING.ior },
           absorption: { value: new Vector3(...DEFAULT_SHADING.absorption) },
           scatterColor: { value: new Vector3(...DEFAULT_SHADING.scatterColor) },
-          viewDepth: { value: 4 },
+          viewDepth: { value: VIEW_DEPTH },
           causticPower: { value: DEFAULT_SHADING.causticPower },
           causticColor: { value: new Vector3(...DEFAULT_SHADING.causticColor) },
           heightScale: { value: 3 },

@@ -17,7 +17,7 @@
  * and time they return the same numbers.
  *
  * What it does not draw yet throws an UnsupportedError when asked for (NOT_YET), and what is on by
- * default in the WebGL Ocean but missing here (whitecap foam, the glint) is named in
+ * default in the WebGL Ocean but missing here (whitecap foam) is named in
  * one console warning per page. Owns its cascades, textures, geometry and materials; dispose()
  * frees them, after which every method throws a DisposedError.
  */
@@ -36,6 +36,7 @@ import { createCascadeSpectra } from '../spectrum/initialSpectrum';
 import { seaGridGeometry } from './seaGrid';
 import { seaMaterial, skyMaterial, type SeaUniforms } from './seaNodes';
 import { skyUniforms } from './skyNodes';
+import { seaLightingValues } from '../render/seaLighting';
 import { checkCoordinates } from '../oceanQueries';
 
 export interface WebGPUOceanOptions extends Partial<SimulationParameters> {
@@ -43,6 +44,12 @@ export interface WebGPUOceanOptions extends Partial<SimulationParameters> {
   ior?: number;
   /** Colour of the light deep water scatters back, any ColorInput (an array is linear RGB). @defaultValue [0.0, 0.035, 0.06] */
   scatterColor?: ColorInput;
+  /** Beer–Lambert absorption σ per colour channel, 1/m (ShadingOptions.absorption). @defaultValue [0.45, 0.07, 0.04] */
+  absorption?: [number, number, number];
+  /** Exponent of the caustics' brightness (ShadingOptions.causticPower). @defaultValue 32 */
+  causticPower?: number;
+  /** Colour of the caustics, any ColorInput (ShadingOptions.causticColor). @defaultValue [0.12, 0.12, 0.12] */
+  causticColor?: ColorInput;
   /** Sun elevation above the horizon in degrees, [-90, 90] (OceanOptions.sunElevation). @defaultValue 30 */
   sunElevation?: number;
   /** Sun azimuth in degrees from +x towards +z (OceanOptions.sunAzimuth). @defaultValue 40 */
@@ -73,13 +80,10 @@ const NOT_YET: Record<string, { drawn: unknown; missing: string }> = {
   localWaves: { drawn: false, missing: 'local waves (stones, hulls)' },
   seabed: { drawn: null, missing: 'a seabed (shoaling, breaking, the shore)' },
   shadingMode: { drawn: 'full', missing: "the debug shading modes (shadingMode other than 'full')" },
-  causticPower: { drawn: undefined, missing: 'caustics (causticPower)' },
-  causticColor: { drawn: undefined, missing: 'caustics (causticColor)' },
-  absorption: { drawn: undefined, missing: 'absorption along a shallow path (absorption): the sea is infinitely deep' },
 };
 
 const SIMULATION_KEYS = Object.keys(SIMULATION_OPTIONS) as (keyof SimulationParameters)[];
-const OPTION_KEYS: readonly string[] = [...SIMULATION_KEYS, 'ior', 'scatterColor', 'worker', ...Object.keys(SUN_OPTIONS), 'sunDirection', ...Object.keys(NOT_YET)];
+const OPTION_KEYS: readonly string[] = [...SIMULATION_KEYS, 'ior', 'scatterColor', 'absorption', 'causticPower', 'causticColor', 'worker', ...Object.keys(SUN_OPTIONS), 'sunDirection', ...Object.keys(NOT_YET)];
 
 /** The one warning of what the WebGL Ocean draws by default and this one does not, once per page. */
 let warnedOfMissing = false;
@@ -113,7 +117,11 @@ export class Ocean extends Object3D {
     for (const key of SIMULATION_KEYS) if (options[key] !== undefined) (simulation as Record<string, unknown>)[key] = options[key];
     this.parameters = validateParameters(simulation);
     const ior = options.ior ?? DEFAULT_SHADING.ior;
-    if (!SHADING_OPTIONS.ior.check(ior)) throw new ParameterError('ior', ior, SHADING_OPTIONS.ior.allowed);
+    const absorption = options.absorption ?? DEFAULT_SHADING.absorption;
+    const causticPower = options.causticPower ?? DEFAULT_SHADING.causticPower;
+    checkOption(SHADING_OPTIONS, 'ior', ior);
+    checkOption(SHADING_OPTIONS, 'absorption', absorption);
+    checkOption(SHADING_OPTIONS, 'causticPower', causticPower);
     const sun = sunAngles({ elevation: options.sunElevation, azimuth: options.sunAzimuth, direction: options.sunDirection }, { elevation: DEFAULT_SUN.sunElevation, azimuth: DEFAULT_SUN.sunAzimuth }, 'sunDirection');
     checkOption(SUN_OPTIONS, 'sunElevation', sun.elevation);
     checkOption(SUN_OPTIONS, 'sunAzimuth', sun.azimuth);
@@ -123,11 +131,14 @@ export class Ocean extends Object3D {
       choppiness: uniform(this.parameters.choppiness),
       ior: uniform(ior),
       scatterColor: uniform(new Vector3(...linearColor('scatterColor', options.scatterColor, DEFAULT_SHADING.scatterColor))),
+      absorption: uniform(new Vector3(...absorption)),
+      causticPower: uniform(causticPower),
+      causticColor: uniform(new Vector3(...linearColor('causticColor', options.causticColor, DEFAULT_SHADING.causticColor))),
       sky: skyUniforms(sun.elevation, sun.azimuth, cloudCover),
     };
     this.useWorker = options.worker ?? typeof Worker !== 'undefined';
     this.buildCascades();
-    this.surface = new Mesh(seaGridGeometry(), seaMaterial(this.currentLayers, this.uniforms));
+    this.surface = new Mesh(seaGridGeometry(), seaMaterial(this.currentLayers, this.uniforms, seaLightingValues(this.currentLayers, this.parameters.windSpeed)));
     this.surface.name = 'OceanWebGPU surface';
     this.surface.frustumCulled = false; // the grid moves up and down by the waves
     this.skyMesh = new Mesh(new SphereGeometry(1, 32, 16), skyMaterial(this.uniforms));
@@ -137,7 +148,7 @@ export class Ocean extends Object3D {
     this.add(this.skyMesh, this.surface);
     if (!warnedOfMissing && this.parameters.foamAmount > 0) {
       warnedOfMissing = true;
-      console.warn('three-fft-ocean/webgpu: not drawn yet on WebGPURenderer: whitecap foam (foamAmount), the sun\'s glint, the horizon rings that follow the camera, quality levels.');
+      console.warn('three-fft-ocean/webgpu: not drawn yet on WebGPURenderer: whitecap foam (foamAmount), the horizon rings that follow the camera, quality levels.');
     }
   }
 
@@ -190,7 +201,7 @@ export class Ocean extends Object3D {
     for (const cascade of this.cascades) cascade.dispose();
     this.buildCascades();
     const old = this.surface.material;
-    this.surface.material = seaMaterial(this.currentLayers, this.uniforms);
+    this.surface.material = seaMaterial(this.currentLayers, this.uniforms, seaLightingValues(this.currentLayers, this.parameters.windSpeed));
     old.dispose();
   }
 

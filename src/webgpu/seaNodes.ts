@@ -7,34 +7,31 @@
  *   vertex:   P = x0 + Σ (λ·Dx, h, λ·Dz) over the cascades at the rest point x0, the largest one as
  *             cos θ·P(x0) + sin θ·P(x0 + o) (shaders/surface/ocean.vert, src/layers/patchBlend.ts)
  *   fragment: the normal from the summed slopes (shaders/surface/choppyNormal.glsl), then
- *             c = R·c_sky(reflect) + (1 − R)·c_deep, R the exact Fresnel reflectance
- *             (shaders/common/fresnel.glsl), c_sky the analytic sky (skyNodes.ts,
- *             shaders/sky/analyticSky.glsl), c_deep the deep water's scatter colour in the sky's daylight
- *             (shaders/surface/absorption.glsl: what a ray refracted into an infinitely deep sea sees)
+ *             ocean.frag's c = R·c_sky + (1 − R)·c_water + K·c_caustic + glint + crest glow, R the
+ *             exact Fresnel reflectance, c_sky the analytic sky (skyNodes.ts) reflected by the
+ *             pixel's unresolved slopes, the glint a Cox–Munk lobe (lightNodes.ts, twins of
+ *             seaLighting.glsl, absorption.glsl, caustics.glsl and fresnel.glsl)
  */
 import { BackSide, type Texture } from 'three';
 import { MeshBasicNodeMaterial, type Node, type UniformNode } from 'three/webgpu';
 import {
-  abs,
   attribute,
   cameraPosition,
   cameraProjectionMatrix,
   cameraViewMatrix,
-  clamp,
   cos,
   cross,
+  dFdx,
+  dFdy,
   Fn,
   float,
   log2,
   max,
-  mix,
   normalize,
   positionGeometry,
   positionWorld,
-  reflect,
-  select,
+  refract,
   sin,
-  sqrt,
   texture,
   varying,
   vec2,
@@ -43,10 +40,13 @@ import {
 } from 'three/tsl';
 import { COPY_OFFSET, patchBlendUniforms } from '../layers/patchBlend';
 import type { WaveLayer } from '../layers/waveLayer';
+import { SEA_SUN_COLOR, VIEW_DEPTH, type SeaLightingValues } from '../render/seaLighting';
 import { analyticSkyRadiance, backgroundRadiance, type SkyUniforms } from './skyNodes';
+import { causticBrightness, crestGlow, facingEye, filteredSkyReflection, footprintLevel, subPixelSlopeVariance, sunGlint, throughWater } from './lightNodes';
 
 type FloatNode = Node<'float'>;
 type Vec2Node = Node<'vec2'>;
+type Vec3Node = Node<'vec3'>;
 type Vec4Node = Node<'vec4'>;
 
 /** The uniforms the surface and the sky share, which the Ocean sets. */
@@ -57,24 +57,14 @@ export interface SeaUniforms {
   ior: UniformNode<'float'>;
   /** Linear RGB of the light deep water scatters back. */
   scatterColor: UniformNode<'vec3'>;
+  /** Beer–Lambert absorption σ per channel, 1/m. */
+  absorption: UniformNode<'vec3'>;
+  /** The caustics' exponent p and linear colour. */
+  causticPower: UniformNode<'float'>;
+  causticColor: UniformNode<'vec3'>;
   /** The analytic sky and its sun (skyNodes.ts). */
   sky: SkyUniforms;
 }
-
-/**
- * Exact Fresnel reflectance of unpolarized light, in its amplitude form (shaders/common/fresnel.glsl,
- * course report §2.2, after Tessendorf 2001 §3.3):
- *   r_s = (n1·cos θi − n2·cos θt)/(n1·cos θi + n2·cos θt),  r_p = (n2·cos θi − n1·cos θt)/(n2·cos θi + n1·cos θt),
- *   R = ½·(r_s² + r_p²), n1·sin θi = n2·sin θt; 1 beyond the critical angle.
- */
-export const fresnelReflectance = Fn(([cosIncident, n1, n2]: [FloatNode, FloatNode, FloatNode]) => {
-  const cosI = clamp(cosIncident, 0, 1);
-  const sinT = n1.div(n2).mul(sqrt(max(float(1).sub(cosI.mul(cosI)), 0)));
-  const cosT = sqrt(max(float(1).sub(sinT.mul(sinT)), 0));
-  const rs = n1.mul(cosI).sub(n2.mul(cosT)).div(n1.mul(cosI).add(n2.mul(cosT)));
-  const rp = n2.mul(cosI).sub(n1.mul(cosT)).div(n2.mul(cosI).add(n1.mul(cosT)));
-  return select(sinT.greaterThanEqual(1), float(1), rs.mul(rs).add(rp.mul(rp)).mul(0.5));
-});
 
 /** Each layer's texture coordinates of the rest point x0: x0/size + ½ texel (ocean.vert's ringLayerUvOrigins, at the origin). */
 function layerUv(layer: WaveLayer, rest: Vec2Node): Vec2Node {
@@ -102,7 +92,7 @@ function blendWeights(size: number, rest: Vec2Node): Vec4Node {
  * The surface's material over `layers` (the periodic FFT cascades, the largest last as
  * orderLayers gives them, with the textures they hold now).
  */
-export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms): MeshBasicNodeMaterial {
+export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms, lighting: SeaLightingValues): MeshBasicNodeMaterial {
   const material = new MeshBasicNodeMaterial();
   material.name = 'OceanWebGPU';
   const rest = positionGeometry.xz;
@@ -135,6 +125,7 @@ export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms)
   const crossDerivative = varying(displacement.w.mul(choppiness));
   const blendSlopeAtFragment = varying(blendSlope);
   const blendAtFragment = varying(blend.xy);
+  const restAtFragment = varying(rest);
 
   // Fragment: Σ (∂h/∂x, ∂h/∂z, ∂Dx/∂x, ∂Dz/∂z), mipmapped by the pixel's footprint (ocean.frag).
   let derivatives: Vec4Node = vec4(0, 0, 0, 0);
@@ -153,13 +144,23 @@ export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms)
     // choppyNormal.glsl: ∂P/∂z0 × ∂P/∂x0 with ∂P/∂x0 = (1 + λ∂Dx/∂x, ∂h/∂x, λ∂Dx/∂z), ∂P/∂z0 = (λ∂Dx/∂z, ∂h/∂z, 1 + λ∂Dz/∂z).
     const alongX = vec3(stretch.x.add(1), slopes.x, crossDerivative);
     const alongZ = vec3(crossDerivative, slopes.y, stretch.y.add(1));
-    const normal = normalize(cross(alongZ, alongX));
     const view = normalize(positionWorld.sub(cameraPosition));
-    const reflectance = fresnelReflectance(view.dot(normal).negate(), float(1), uniforms.ior);
-    const reflected = reflect(view, normal).toVar();
-    // A ray reflected downwards would hit the next wave: mirrored up (ocean.frag).
-    reflected.y.assign(abs(reflected.y));
-    return mix(uniforms.scatterColor.mul(uniforms.sky.daylight), analyticSkyRadiance(uniforms.sky, reflected), reflectance);
+    const normal = facingEye(view, normalize(cross(alongZ, alongX))).toVar();
+    const [air, water] = [float(1), uniforms.ior];
+    const sky = uniforms.sky;
+    const skyRadiance = (direction: Vec3Node) => analyticSkyRadiance(sky, direction);
+    // ocean.frag's full shading, without what is not drawn here yet (scene reflections and refractions, foam, spray).
+    const slopeVariance = subPixelSlopeVariance(lighting, footprintLevel(dFdx(restAtFragment), dFdy(restAtFragment))).toVar();
+    const reflection = filteredSkyReflection(view, normal, slopeVariance, air, water, skyRadiance);
+    const reflectance = reflection.reflectance.toVar();
+    const refracted = refract(view, normal, air.div(water));
+    const deepWater = uniforms.scatterColor.mul(sky.daylight);
+    const below = throughWater(skyRadiance(refracted), refracted, uniforms.absorption, deepWater, VIEW_DEPTH);
+    const caustic = causticBrightness(normal, sky.sunDirection, water.div(air), uniforms.causticPower);
+    const sunLight = vec3(...SEA_SUN_COLOR).mul(sky.sunVisibility);
+    const glint = sunLight.mul(sunGlint(view, normal, sky.sunDirection, slopeVariance, air, water));
+    const crest = crestGlow(view, normal, sky.sunDirection, positionWorld.y, lighting.heightRms, reflectance, sunLight, uniforms.scatterColor);
+    return reflection.radiance.mul(reflectance).add(below.mul(float(1).sub(reflectance))).add(uniforms.causticColor.mul(caustic.mul(sky.sunVisibility))).add(glint).add(crest);
   })();
   return material;
 }

@@ -13,6 +13,9 @@ import { WebGLRenderer, WebGLRenderTarget } from 'three';
 const SEA_PARAMETERS = { resolution: 64, windSpeed: 10, seed: 3, foamAmount: 0 };
 const SEA: WebGPUOceanOptions = { ...SEA_PARAMETERS, worker: false };
 
+/** Where the sun is in a compared view (the default's when empty). */
+type SunOptions = Pick<WebGPUOceanOptions, 'sunElevation' | 'sunAzimuth' | 'cloudCover'>;
+
 let renderer: WebGPURenderer | null = null;
 
 /**
@@ -65,9 +68,9 @@ function pictureTarget<T extends RenderTarget | WebGLRenderTarget>(Target: new (
  * SwiftShader WebGPU lost its device after presenting one frame to a canvas, even of an empty
  * scene, "A valid external Instance reference no longer exists".)
  */
-async function drawView(t: number, width = 320, height = 180): Promise<{ width: number; height: number; data: number[] }> {
+async function drawView(t: number, width = 320, height = 180, sun: SunOptions = {}): Promise<{ width: number; height: number; data: number[] }> {
   const scene = new Scene();
-  const ocean = new Ocean(renderer!, SEA);
+  const ocean = new Ocean(renderer!, { ...SEA, ...sun });
   scene.add(ocean);
   const target = pictureTarget(RenderTarget, width, height);
   ocean.update(t);
@@ -82,17 +85,17 @@ async function drawView(t: number, width = 320, height = 180): Promise<{ width: 
 }
 
 /**
- * The same view of the same sea drawn by the WebGL Ocean on a WebGLRenderer, with what the WebGPU
+ * The same view of the same sea under the same sun drawn by the WebGL Ocean on a WebGLRenderer, with what the WebGPU
  * Ocean does not draw yet left out of both (foam; scene reflections and refractions, which show
  * the sky here anyway), no tone mapping as in open(). Only while no WebGPU device lives in the
  * page (see the spec).
  */
-function drawWebGLView(t: number, width: number, height: number): { width: number; height: number; data: number[] } {
+function drawWebGLView(t: number, width: number, height: number, sun: SunOptions = {}): { width: number; height: number; data: number[] } {
   const gl = new WebGLRenderer({ antialias: false });
   gl.toneMapping = NoToneMapping;
   gl.setPixelRatio(1);
   gl.setSize(width, height);
-  const ocean = new WebGLOcean(gl, { ...SEA_PARAMETERS, path: 'js', worker: false, localWaves: false, reflections: 'sky', refractions: 'sky' });
+  const ocean = new WebGLOcean(gl, { ...SEA_PARAMETERS, path: 'js', worker: false, localWaves: false, reflections: 'sky', refractions: 'sky', ...sun });
   const scene = new Scene();
   scene.add(ocean);
   const camera = viewCamera();
