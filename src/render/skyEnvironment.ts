@@ -47,7 +47,7 @@ import {
   type Texture,
   type WebGLRenderer,
 } from 'three';
-import { cloudSunTransmittance, overcastZenithLuminance, skyDaylight, sunAboveHorizon } from './daylight';
+import { skyLight } from './daylight';
 import { shaderSource } from '../shaderSource';
 import { checkOption, checkOptionNames, DisposedError, ParameterError } from '../parameters/options';
 import { DEFAULT_SUN, SUN_OPTIONS } from '../parameters/sceneOptions';
@@ -382,12 +382,12 @@ export class SkyEnvironment {
     this.elevation = elevationDeg;
     this.azimuth = azimuthDeg;
     sunDirectionFromAngles(elevationDeg, azimuthDeg, this.sun);
-    this.skyUniforms.skyDaylight.value = skyDaylight(elevationDeg);
-    const cloudSun = cloudSunTransmittance(this.cloud);
-    this.skyUniforms.skySunVisibility.value = sunAboveHorizon(elevationDeg) * cloudSun;
+    const light = skyLight(elevationDeg, this.cloud);
+    this.skyUniforms.skyDaylight.value = light.daylight;
+    this.skyUniforms.skySunVisibility.value = light.sunVisibility;
     this.skyUniforms.skyCloudCover.value = this.cloud;
-    this.skyUniforms.skyOvercastZenith.value = overcastZenithLuminance(elevationDeg);
-    this.skyUniforms.skyCloudSun.value = cloudSun;
+    this.skyUniforms.skyOvercastZenith.value = light.overcastZenith;
+    this.skyUniforms.skyCloudSun.value = light.cloudSun;
     if (!this.loaded) this.render();
   }
 

@@ -7,13 +7,9 @@
  * from under the surface (shaders/surface/absorption.glsl) and the caustic term
  * (shaders/surface/caustics.glsl).
  */
-import type { Node } from 'three/webgpu';
 import { clamp, cross, dot, exp, float, floor, Fn, int, length, log2, max, min, mix, normalize, pow, reflect, refract, select, sqrt, uniformArray, vec3 } from 'three/tsl';
 import { SLOPE_FILTER_LEVELS, type SeaLightingValues } from '../render/seaLighting';
-
-type FloatNode = Node<'float'>;
-type Vec2Node = Node<'vec2'>;
-type Vec3Node = Node<'vec3'>;
+import type { FloatNode, Vec2Node, Vec3Node } from './nodeTypes';
 
 /**
  * Exact Fresnel reflectance of unpolarized light, in its amplitude form (shaders/common/fresnel.glsl,

@@ -11,17 +11,19 @@
  * This first slice draws the FFT cascades of the same sea as the WebGL Ocean (the same parameters,
  * spectra and seeded amplitudes, computed by the JS FFT: src/fft/cpuFieldTextures.ts, in a worker
  * by default, uploaded as float textures each frame; there is no GPU FFT on WebGPURenderer yet),
- * displaced and lit in TSL (seaNodes.ts) by the Fresnel reflection of the WebGL Ocean's analytic
- * sky (skyNodes.ts, its sun and clouds, also drawn behind everything) over the deep water's colour, on a fixed grid around the origin (seaGrid.ts). heightAt and normalAt answer from the
- * same fields and code as the WebGL Ocean's (src/layers/surfaceQuery.ts), so for the same options
- * and time they return the same numbers.
+ * displaced and lit in TSL (seaNodes.ts, lightNodes.ts) as the WebGL Ocean's ocean.frag lights it:
+ * the reflection of its analytic sky (skyNodes.ts, also drawn behind everything), the light from
+ * under the surface, the caustics, the sun's glint and the crests' glow; on its horizon rings round
+ * the camera (seaRings.ts), placed before each draw. heightAt and normalAt answer from the same
+ * fields and code as the WebGL Ocean's (src/layers/surfaceQuery.ts), so for the same options and
+ * time they return the same numbers.
  *
  * What it does not draw yet throws an UnsupportedError when asked for (NOT_YET), and what is on by
- * default in the WebGL Ocean but missing here (whitecap foam) is named in
- * one console warning per page. Owns its cascades, textures, geometry and materials; dispose()
+ * default in the WebGL Ocean but missing here (whitecap foam) is named in one console warning per
+ * page. Owns its cascades, textures, geometry and materials; dispose()
  * frees them, after which every method throws a DisposedError.
  */
-import { Mesh, Object3D, SphereGeometry, Vector3 } from 'three';
+import { Mesh, Object3D, SphereGeometry, Vector2, Vector3, type BufferGeometry } from 'three';
 import type { MeshBasicNodeMaterial, WebGPURenderer } from 'three/webgpu';
 import { uniform } from 'three/tsl';
 import { CpuFieldTextures, type FloatTextureSupport } from '../fft/cpuFieldTextures';
@@ -33,7 +35,8 @@ import { ParameterError, SIMULATION_OPTIONS, validateParameters, type Simulation
 import { colorToLinear, DEFAULT_SHADING, DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ColorInput } from '../parameters/sceneOptions';
 import { sunAngles, type SunDirection } from '../render/skyEnvironment';
 import { createCascadeSpectra } from '../spectrum/initialSpectrum';
-import { seaGridGeometry } from './seaGrid';
+import { SeaRings } from './seaRings';
+import { cellsPerRingForViewport, createHorizonGridGeometry } from '../render/horizonGrid';
 import { seaMaterial, skyMaterial, type SeaUniforms } from './seaNodes';
 import { skyUniforms } from './skyNodes';
 import { seaLightingValues } from '../render/seaLighting';
@@ -96,7 +99,12 @@ export class Ocean extends Object3D {
   private readonly uniforms: SeaUniforms;
   private readonly useWorker: boolean;
   private readonly support: FloatTextureSupport;
-  private readonly surface: Mesh<ReturnType<typeof seaGridGeometry>, MeshBasicNodeMaterial>;
+  private readonly surface: Mesh<BufferGeometry, MeshBasicNodeMaterial>;
+  /** The rings' uniforms of the surface's material (made with it by surfaceMaterial), placed under the camera before each draw. */
+  private rings!: SeaRings;
+  /** Cells on a side of each ring, for the drawing buffer's height (cellsPerRingForViewport). */
+  private cellsPerRing: number;
+  private readonly drawingBuffer = new Vector2();
   private readonly skyMesh: Mesh<SphereGeometry, MeshBasicNodeMaterial>;
   private currentTime = 0;
   private lastTime = NaN;
@@ -138,9 +146,14 @@ export class Ocean extends Object3D {
     };
     this.useWorker = options.worker ?? typeof Worker !== 'undefined';
     this.buildCascades();
-    this.surface = new Mesh(seaGridGeometry(), seaMaterial(this.currentLayers, this.uniforms, seaLightingValues(this.currentLayers, this.parameters.windSpeed)));
+    this.cellsPerRing = cellsPerRingForViewport(renderer.getDrawingBufferSize(this.drawingBuffer).y);
+    this.surface = new Mesh(createHorizonGridGeometry(this.cellsPerRing), this.surfaceMaterial());
     this.surface.name = 'OceanWebGPU surface';
-    this.surface.frustumCulled = false; // the grid moves up and down by the waves
+    this.surface.frustumCulled = false; // the grid follows the camera and moves up and down by the waves
+    this.surface.onBeforeRender = (drawing, _scene, camera) => {
+      this.fitGrid(drawing as unknown as WebGPURenderer);
+      this.rings.place(camera, this.cellsPerRing);
+    };
     this.skyMesh = new Mesh(new SphereGeometry(1, 32, 16), skyMaterial(this.uniforms));
     this.skyMesh.name = 'OceanWebGPU sky';
     this.skyMesh.frustumCulled = false;
@@ -148,7 +161,7 @@ export class Ocean extends Object3D {
     this.add(this.skyMesh, this.surface);
     if (!warnedOfMissing && this.parameters.foamAmount > 0) {
       warnedOfMissing = true;
-      console.warn('three-fft-ocean/webgpu: not drawn yet on WebGPURenderer: whitecap foam (foamAmount), the horizon rings that follow the camera, quality levels.');
+      console.warn('three-fft-ocean/webgpu: not drawn yet on WebGPURenderer: whitecap foam (foamAmount), quality levels.');
     }
   }
 
@@ -201,7 +214,7 @@ export class Ocean extends Object3D {
     for (const cascade of this.cascades) cascade.dispose();
     this.buildCascades();
     const old = this.surface.material;
-    this.surface.material = seaMaterial(this.currentLayers, this.uniforms, seaLightingValues(this.currentLayers, this.parameters.windSpeed));
+    this.surface.material = this.surfaceMaterial();
     old.dispose();
   }
 
@@ -217,6 +230,24 @@ export class Ocean extends Object3D {
     this.skyMesh.material.dispose();
     this.removeFromParent();
     this.disposed = true;
+  }
+
+  /** The surface's material over the current layers, with new rings for them. */
+  private surfaceMaterial(): MeshBasicNodeMaterial {
+    this.rings = new SeaRings(this.currentLayers);
+    return seaMaterial(this.currentLayers, this.uniforms, seaLightingValues(this.currentLayers, this.parameters.windSpeed), this.rings);
+  }
+
+  /**
+   * Gives the grid as many cells a ring as the drawing buffer's height asks for. three takes a
+   * mesh's geometry before its onBeforeRender, so a grid replaced there is drawn from the next frame.
+   */
+  private fitGrid(renderer: WebGPURenderer): void {
+    const cells = cellsPerRingForViewport(renderer.getDrawingBufferSize(this.drawingBuffer).y);
+    if (cells === this.cellsPerRing) return;
+    this.surface.geometry.dispose();
+    this.surface.geometry = createHorizonGridGeometry(cells);
+    this.cellsPerRing = cells;
   }
 
   /** The cascades of the parameters: their textures ask nothing more of the renderer than `support`, read once. */

@@ -13,9 +13,10 @@
  *             seaLighting.glsl, absorption.glsl, caustics.glsl and fresnel.glsl)
  */
 import { BackSide, type Texture } from 'three';
-import { MeshBasicNodeMaterial, type Node, type UniformNode } from 'three/webgpu';
+import { MeshBasicNodeMaterial, type UniformNode } from 'three/webgpu';
 import {
-  attribute,
+  abs,
+  Discard,
   cameraPosition,
   cameraProjectionMatrix,
   cameraViewMatrix,
@@ -25,7 +26,6 @@ import {
   dFdy,
   Fn,
   float,
-  log2,
   max,
   normalize,
   positionGeometry,
@@ -38,16 +38,14 @@ import {
   vec3,
   vec4,
 } from 'three/tsl';
-import { COPY_OFFSET, patchBlendUniforms } from '../layers/patchBlend';
+import { COPY_OFFSET } from '../layers/patchBlend';
+import { finestTexel } from '../render/horizonGrid';
+import type { SeaRings } from './seaRings';
 import type { WaveLayer } from '../layers/waveLayer';
 import { SEA_SUN_COLOR, VIEW_DEPTH, type SeaLightingValues } from '../render/seaLighting';
-import { analyticSkyRadiance, backgroundRadiance, type SkyUniforms } from './skyNodes';
+import { analyticSkyRadiance, type SkyUniforms } from './skyNodes';
 import { causticBrightness, crestGlow, facingEye, filteredSkyReflection, footprintLevel, subPixelSlopeVariance, sunGlint, throughWater } from './lightNodes';
-
-type FloatNode = Node<'float'>;
-type Vec2Node = Node<'vec2'>;
-type Vec3Node = Node<'vec3'>;
-type Vec4Node = Node<'vec4'>;
+import type { FloatNode, Vec2Node, Vec3Node, Vec4Node } from './nodeTypes';
 
 /** The uniforms the surface and the sky share, which the Ocean sets. */
 export interface SeaUniforms {
@@ -66,79 +64,77 @@ export interface SeaUniforms {
   sky: SkyUniforms;
 }
 
-/** Each layer's texture coordinates of the rest point x0: x0/size + ½ texel (ocean.vert's ringLayerUvOrigins, at the origin). */
-function layerUv(layer: WaveLayer, rest: Vec2Node): Vec2Node {
-  return rest.div(layer.frame.size).add(0.5 / layer.frame.resolution);
-}
-
 /**
- * θ(x0) and its gradient of the largest layer's blend (patchBlend.ts): (cos θ, sin θ, ∂θ/∂x, ∂θ/∂z),
- * with the components' phases at the world origin (this grid's positions are world coordinates).
+ * θ and its gradient of the largest layer's blend at the rest point `fromEye` (metres from the eye),
+ * (cos θ, sin θ, ∂θ/∂x, ∂θ/∂z): waveLayers.glsl's blendWeights, over the rings' patchBlend.
  */
-function blendWeights(size: number, rest: Vec2Node): Vec4Node {
-  const components = patchBlendUniforms(size, new Float64Array(12));
+function blendWeights(rings: SeaRings, fromEye: Vec2Node): Vec4Node {
   let theta: FloatNode = float(0);
   let gradient: Vec2Node = vec2(0, 0);
   for (let j = 0; j < 3; j++) {
-    const k = vec2(components[4 * j], components[4 * j + 1]);
-    const phase = rest.dot(k).add(components[4 * j + 2]);
-    theta = theta.add(sin(phase).mul(components[4 * j + 3]));
-    gradient = gradient.add(k.mul(cos(phase).mul(components[4 * j + 3])));
+    const component = rings.patchBlend.element(j) as unknown as Vec4Node;
+    const phase = fromEye.dot(component.xy).add(component.z);
+    theta = theta.add(sin(phase).mul(component.w));
+    gradient = gradient.add(component.xy.mul(cos(phase).mul(component.w)));
   }
   return vec4(cos(theta), sin(theta), gradient);
 }
 
 /**
  * The surface's material over `layers` (the periodic FFT cascades, the largest last as
- * orderLayers gives them, with the textures they hold now).
+ * orderLayers gives them, with the textures they hold now), on the grid `rings` places.
  */
-export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms, lighting: SeaLightingValues): MeshBasicNodeMaterial {
+export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms, lighting: SeaLightingValues, rings: SeaRings): MeshBasicNodeMaterial {
   const material = new MeshBasicNodeMaterial();
   material.name = 'OceanWebGPU';
-  const rest = positionGeometry.xz;
-  const cell = attribute<'float'>('cell', 'float');
+  const point = rings.point();
   const largest = layers.length - 1;
   const copyOffset = vec2(COPY_OFFSET[0], COPY_OFFSET[1]);
-  const blend = blendWeights(layers[largest].frame.size, rest);
+  const blend = blendWeights(rings, point.fromEye);
+  const finest = finestTexel(layers);
 
-  // Vertex: the displacement summed at the mip level that averages one cell (ocean.vert).
+  // Vertex (ocean.vert): the displacement summed at the ring's mip level, whole levels apart between layers.
   let displacement: Vec4Node = vec4(0, 0, 0, 0);
   let blendSlope: Vec2Node = vec2(0, 0);
-  layers.forEach((layer, i) => {
-    const texel = layer.frame.size / layer.frame.resolution;
-    const level = max(log2(cell.div(texel)), 0);
-    const uv = layerUv(layer, rest);
+  const uvs = layers.map((layer, i) => {
+    const uv = rings.layerUv(point, i, layer.frame.size);
+    const level = point.lod.add(Math.round(Math.log2(finest / (layer.frame.size / layer.frame.resolution))));
     const map = layer.textures.displacement.value as Texture;
     const first = texture(map, uv).level(level);
     if (i !== largest) {
       displacement = displacement.add(first);
-      return;
+      return varying(uv);
     }
     const copy = texture(map, uv.add(copyOffset)).level(level);
     displacement = displacement.add(first.mul(blend.x)).add(copy.mul(blend.y));
     // The blend's own change adds (−sin θ·h1 + cos θ·h2)·∇θ to the height's slope (ocean.vert's vBlendSlope).
     blendSlope = blend.zw.mul(copy.y.mul(blend.x).sub(first.y.mul(blend.y)));
+    return varying(uv);
   });
   const choppiness = uniforms.choppiness;
-  material.positionNode = vec3(rest.x.add(displacement.x.mul(choppiness)), displacement.y, rest.y.add(displacement.z.mul(choppiness)));
+  // World coordinates: the eye's plus the rest point and displacement from it.
+  material.positionNode = vec3(point.fromEye.x.add(displacement.x.mul(choppiness)), displacement.y, point.fromEye.y.add(displacement.z.mul(choppiness))).add(vec3(cameraPosition.x, 0, cameraPosition.z));
   // Per vertex, as the WebGL Ocean: λ·∂Dx/∂z (a second-order part of the normal) and the blend's slope.
   const crossDerivative = varying(displacement.w.mul(choppiness));
   const blendSlopeAtFragment = varying(blendSlope);
   const blendAtFragment = varying(blend.xy);
-  const restAtFragment = varying(rest);
+  const restAtFragment = varying(point.fromEye);
+  const innerRing = varying(rings.innerRing(point));
 
   // Fragment: Σ (∂h/∂x, ∂h/∂z, ∂Dx/∂x, ∂Dz/∂z), mipmapped by the pixel's footprint (ocean.frag).
   let derivatives: Vec4Node = vec4(0, 0, 0, 0);
   layers.forEach((layer, i) => {
-    const uv = layerUv(layer, rest);
     const map = layer.textures.derivatives.value as Texture;
     if (i !== largest) {
-      derivatives = derivatives.add(texture(map, uv));
+      derivatives = derivatives.add(texture(map, uvs[i]));
       return;
     }
-    derivatives = derivatives.add(texture(map, uv).mul(blendAtFragment.x)).add(texture(map, uv.add(copyOffset)).mul(blendAtFragment.y));
+    derivatives = derivatives.add(texture(map, uvs[i]).mul(blendAtFragment.x)).add(texture(map, uvs[i].add(copyOffset)).mul(blendAtFragment.y));
   });
   material.colorNode = Fn(() => {
+    // Each point of the rest plane is drawn by one ring: a ring drops its overlap with the one inside (ocean.frag).
+    const fromInner = abs(restAtFragment.sub(innerRing.xy));
+    Discard(max(fromInner.x, fromInner.y).lessThan(innerRing.z));
     const slopes = derivatives.xy.add(blendSlopeAtFragment);
     const stretch = derivatives.zw.mul(choppiness);
     // choppyNormal.glsl: ∂P/∂z0 × ∂P/∂x0 with ∂P/∂x0 = (1 + λ∂Dx/∂x, ∂h/∂x, λ∂Dx/∂z), ∂P/∂z0 = (λ∂Dx/∂z, ∂h/∂z, 1 + λ∂Dz/∂z).
@@ -179,6 +175,8 @@ export function skyMaterial(uniforms: SeaUniforms): MeshBasicNodeMaterial {
     // Just inside the far plane: z = w would be clipped by rounding.
     return vec4(clip.x, clip.y, clip.w.mul(0.99999), clip.w);
   })();
-  material.colorNode = backgroundRadiance(uniforms.sky, uniforms.scatterColor, varying(direction));
+  // background.frag with backgroundWater 'none', as the WebGL Ocean draws it for an eye above the
+  // waves: the environment in every direction (the eye at or under the surface is not drawn here yet).
+  material.colorNode = analyticSkyRadiance(uniforms.sky, normalize(varying(direction)));
   return material;
 }

@@ -1,17 +1,15 @@
 /**
- * The WebGPU Ocean's sky in TSL: the WebGL Ocean's analytic sky (shaders/sky/analyticSky.glsl) and
- * its background (shaders/sky/background.frag), the same formulas node for node. The WebGL Ocean
+ * The WebGPU Ocean's sky in TSL: the WebGL Ocean's analytic sky (shaders/sky/analyticSky.glsl),
+ * the same formulas node for node. The WebGL Ocean
  * draws the sky once into an RGBM cube (src/render/skyEnvironment.ts) and samples it; here it is
  * evaluated per pixel, which leaves out the cube's 8-bit encoding and bilinear filtering.
  */
 import { Vector3 } from 'three';
-import type { Node, UniformNode } from 'three/webgpu';
-import { asin, clamp, cos, degrees, distance, exp, float, Fn, log, max, min, mix, normalize, pow, select, smoothstep, sqrt, uniform, vec3 } from 'three/tsl';
-import { cloudSunTransmittance, overcastZenithLuminance, skyDaylight, sunAboveHorizon } from '../render/daylight';
+import type { UniformNode } from 'three/webgpu';
+import { asin, clamp, cos, degrees, distance, exp, float, Fn, log, max, min, mix, pow, select, smoothstep, sqrt, uniform, vec3 } from 'three/tsl';
+import { skyLight } from '../render/daylight';
 import { SKY_DEEP_WATER, SKY_SUN_INTENSITY, sunDirectionFromAngles } from '../render/skyEnvironment';
-
-type FloatNode = Node<'float'>;
-type Vec3Node = Node<'vec3'>;
+import type { FloatNode, Vec3Node } from './nodeTypes';
 
 /** The analytic sky's uniforms (analyticSky.glsl's sky… uniforms), and the sun's visibility the sea's light needs. */
 export interface SkyUniforms {
@@ -31,14 +29,14 @@ export interface SkyUniforms {
 
 /** The uniforms for a sun at these angles (degrees) under this cloud cover, as SkyEnvironment.applySun sets them. */
 export function skyUniforms(elevation: number, azimuth: number, cloudCover: number): SkyUniforms {
-  const cloudSun = cloudSunTransmittance(cloudCover);
+  const light = skyLight(elevation, cloudCover);
   return {
     sunDirection: uniform(sunDirectionFromAngles(elevation, azimuth, new Vector3())),
-    daylight: uniform(skyDaylight(elevation)),
-    sunVisibility: uniform(sunAboveHorizon(elevation) * cloudSun),
+    daylight: uniform(light.daylight),
+    sunVisibility: uniform(light.sunVisibility),
     cloudCover: uniform(cloudCover),
-    overcastZenith: uniform(overcastZenithLuminance(elevation)),
-    cloudSun: uniform(cloudSun),
+    overcastZenith: uniform(light.overcastZenith),
+    cloudSun: uniform(light.cloudSun),
   };
 }
 
@@ -95,13 +93,4 @@ export function analyticSkyRadiance(sky: SkyUniforms, d: Vec3Node): Vec3Node {
     const faded = exp(mix(log(max(deepWater, darkest)), log(max(radiance, darkest)), skyWeight));
     return select(skyWeight.lessThanEqual(0), deepWater, select(skyWeight.greaterThanEqual(1), radiance, faded));
   })() as unknown as Vec3Node;
-}
-
-/**
- * background.frag with backgroundWater 1 (the eye above the sea): the deep water's daylight colour
- * below the horizon, the sky above it, along the view ray `direction` (any length).
- */
-export function backgroundRadiance(sky: SkyUniforms, scatterColor: Vec3Node, direction: Vec3Node): Vec3Node {
-  const d = normalize(direction);
-  return select(d.y.lessThan(0), scatterColor.mul(sky.daylight), analyticSkyRadiance(sky, d)) as unknown as Vec3Node;
 }

@@ -70,10 +70,10 @@ function savePicture({ width, height, data }: { width: number; height: number; d
 
 /**
  * How far picture `a` is from `b`: the mean absolute difference of the RGB levels, the share of
- * pixels whose every channel is within 8 levels, and the largest difference; also writes the
+ * pixels whose every channel is within 8 levels (and the number beyond), and the largest difference; also writes the
  * difference (|a − b| × 8, so a 32-level miss is white) as a PNG.
  */
-function pictureDifference(a: Picture, b: Picture, name: string, fromRow = 0, toRow = a.height): { mean: number; within8: number; worst: number } {
+function pictureDifference(a: Picture, b: Picture, name: string, fromRow = 0, toRow = a.height): { mean: number; within8: number; beyond8: number; worst: number } {
   const difference = new PNG({ width: a.width, height: a.height });
   let sum = 0;
   let within = 0;
@@ -92,7 +92,7 @@ function pictureDifference(a: Picture, b: Picture, name: string, fromRow = 0, to
   }
   writeFileSync(`.tmp/${name}.png`, PNG.sync.write(difference));
   const count = (toRow - fromRow) * a.width;
-  return { mean: sum / (3 * count), within8: within / count, worst };
+  return { mean: sum / (3 * count), within8: within / count, beyond8: count - within, worst };
 }
 
 /** The WebGL Ocean's pictures of the compared views, drawn on the WebGL2 backend's page before any WebGPU device lives. */
@@ -100,9 +100,11 @@ const webglReferences: Record<string, Picture> = {};
 const COMPARED = { t: 2, width: 480, height: 270 };
 /** The views compared, each with the bounds its picture reaches now (whole picture). */
 const COMPARED_VIEWS = [
-  { name: 'the default view', file: 'default', sun: {}, meanBound: 4.5, within8Bound: 0.83 },
+  { name: 'the default view', file: 'default', options: {}, meanBound: 0.3, within8Bound: 0.999 },
   // The sun 12° up straight ahead (azimuth −90°: towards −z), its glint on the sea below it.
-  { name: 'the sun ahead and its glint', file: 'glint', sun: { sunElevation: 12, sunAzimuth: -90 }, meanBound: 4.8, within8Bound: 0.81 },
+  { name: 'the sun ahead and its glint', file: 'glint', options: { sunElevation: 12, sunAzimuth: -90 }, meanBound: 0.3, within8Bound: 0.999 },
+  // 36 km from the origin: the rings follow the camera and the sea still reaches the horizon.
+  { name: 'the default view 36 km away', file: 'far', options: { at: [30_000, -20_000] as [number, number] }, meanBound: 0.3, within8Bound: 0.999 },
 ];
 
 function backendTests(backend: 'webgl' | 'webgpu'): void {
@@ -140,14 +142,14 @@ function backendTests(backend: 'webgl' | 'webgpu'): void {
     for (const view of COMPARED_VIEWS) {
       test(`draws ${view.name} as the WebGL Ocean draws it`, async () => {
         const { t, width, height } = COMPARED;
-        const compared = { ...COMPARED, sun: view.sun };
+        const compared = { ...COMPARED, options: view.options };
         // The WebGL Ocean's picture, made once, here: a WebGLRenderer made later, beside a live WebGPU device, would drop it.
-        const reference = (webglReferences[view.name] ??= savePicture(await page.evaluate((v) => window.webgpuOcean.drawWebGLView(v.t, v.width, v.height, v.sun), compared), `compare-${view.file}-webgl-ocean`));
-        const drawn = savePicture(await page.evaluate((v) => window.webgpuOcean.drawView(v.t, v.width, v.height, v.sun), compared), `compare-${view.file}-webgpu-ocean-${backend}`);
+        const reference = (webglReferences[view.name] ??= savePicture(await page.evaluate((v) => window.webgpuOcean.drawWebGLView(v.t, v.width, v.height, v.options), compared), `compare-${view.file}-webgl-ocean`));
+        const drawn = savePicture(await page.evaluate((v) => window.webgpuOcean.drawView(v.t, v.width, v.height, v.options), compared), `compare-${view.file}-webgpu-ocean-${backend}`);
         const whole = pictureDifference(drawn, reference, `compare-${view.file}-difference-${backend}`);
         // The sky alone: the rows above the horizon (row ~117 of 270: 4 m up, looking 4.3° down in a 60° field).
         const sky = pictureDifference(drawn, reference, `compare-${view.file}-difference-sky-${backend}`, 0, 100);
-        const figures = (f: typeof sky) => `mean |Δ| ${f.mean.toFixed(2)} levels, ${(100 * f.within8).toFixed(2)} % of pixels within 8 levels, worst ${f.worst}`;
+        const figures = (f: typeof sky) => `mean |Δ| ${f.mean.toFixed(2)} levels, ${(100 * f.within8).toFixed(3)} % of pixels within 8 levels (${f.beyond8} beyond), worst ${f.worst}`;
         console.log(`${backend}, ${view.name}: WebGPU Ocean against WebGL Ocean at ${width}×${height}, t = ${t} s: whole picture ${figures(whole)}; sky rows 0–99 ${figures(sky)}`);
         // What the twin reaches now (the issue's target: 1 level, 99.9 %); tightened as it improves.
         expect(sky.mean).toBeLessThan(1);
@@ -158,7 +160,7 @@ function backendTests(backend: 'webgl' | 'webgpu'): void {
     }
 
     test('draws the surface where heightAt puts it', async () => {
-      // Patches whose finest texel (40/64 m) is coarser than the grid's 0.5 m cell: every vertex
+      // Under a camera 2.5 m up the rings' finest cells are the finest texel (40/64 m): every vertex
       // samples level 0, as heightAt does, so the drawn surface differs from heightAt only by the
       // linear interpolation between vertices, which interpolationBound (webgpu.ts) bounds per pixel.
       const options = { patchSizes: [40, 231, 1337] };

@@ -7,14 +7,15 @@ import { MeshBasicNodeMaterial, WebGPURenderer } from 'three/webgpu';
 import { positionWorld, vec4 } from 'three/tsl';
 import { Ocean, type WebGPUOceanOptions } from '../../../src/webgpu/index';
 import { Ocean as WebGLOcean } from '../../../src/ocean';
+import { finestTexel } from '../../../src/render/horizonGrid';
 import { WebGLRenderer, WebGLRenderTarget } from 'three';
 
 /** A small sea for quick tests: N = 64, the JS FFT on this thread (the fields are there at once). */
 const SEA_PARAMETERS = { resolution: 64, windSpeed: 10, seed: 3, foamAmount: 0 };
 const SEA: WebGPUOceanOptions = { ...SEA_PARAMETERS, worker: false };
 
-/** Where the sun is in a compared view (the default's when empty). */
-type SunOptions = Pick<WebGPUOceanOptions, 'sunElevation' | 'sunAzimuth' | 'cloudCover'>;
+/** A compared view: where the sun is (the default's where left out), and the camera's (x, z) (the origin's). */
+type ViewOptions = Pick<WebGPUOceanOptions, 'sunElevation' | 'sunAzimuth' | 'cloudCover'> & { at?: [number, number] };
 
 let renderer: WebGPURenderer | null = null;
 
@@ -36,11 +37,11 @@ async function open(backend: 'webgl' | 'webgpu'): Promise<{ isWebGPUBackend: boo
   return { isWebGPUBackend, reason };
 }
 
-/** The default view's camera: 4 m over the sea looking slightly down towards −z. */
-function viewCamera(): PerspectiveCamera {
+/** The default view's camera: 4 m over the sea at (x, z) looking slightly down towards −z. */
+function viewCamera(x = 0, z = 0): PerspectiveCamera {
   const camera = new PerspectiveCamera(60, 16 / 9, 0.5, 30_000);
-  camera.position.set(0, 4, 0);
-  camera.lookAt(0, 1, -40);
+  camera.position.set(x, 4, z);
+  camera.lookAt(x, 1, z - 40);
   camera.updateMatrixWorld();
   return camera;
 }
@@ -68,14 +69,14 @@ function pictureTarget<T extends RenderTarget | WebGLRenderTarget>(Target: new (
  * SwiftShader WebGPU lost its device after presenting one frame to a canvas, even of an empty
  * scene, "A valid external Instance reference no longer exists".)
  */
-async function drawView(t: number, width = 320, height = 180, sun: SunOptions = {}): Promise<{ width: number; height: number; data: number[] }> {
+async function drawView(t: number, width = 320, height = 180, { at = [0, 0], ...sun }: ViewOptions = {}): Promise<{ width: number; height: number; data: number[] }> {
   const scene = new Scene();
   const ocean = new Ocean(renderer!, { ...SEA, ...sun });
   scene.add(ocean);
   const target = pictureTarget(RenderTarget, width, height);
   ocean.update(t);
   renderer!.setRenderTarget(target);
-  renderer!.render(scene, viewCamera());
+  renderer!.render(scene, viewCamera(...at));
   renderer!.setRenderTarget(null);
   const pixels = (await renderer!.readRenderTargetPixelsAsync(target, 0, 0, width, height)) as Uint8Array;
   target.dispose();
@@ -90,7 +91,7 @@ async function drawView(t: number, width = 320, height = 180, sun: SunOptions = 
  * the sky here anyway), no tone mapping as in open(). Only while no WebGPU device lives in the
  * page (see the spec).
  */
-function drawWebGLView(t: number, width: number, height: number, sun: SunOptions = {}): { width: number; height: number; data: number[] } {
+function drawWebGLView(t: number, width: number, height: number, { at = [0, 0], ...sun }: ViewOptions = {}): { width: number; height: number; data: number[] } {
   const gl = new WebGLRenderer({ antialias: false });
   gl.toneMapping = NoToneMapping;
   gl.setPixelRatio(1);
@@ -98,7 +99,7 @@ function drawWebGLView(t: number, width: number, height: number, sun: SunOptions
   const ocean = new WebGLOcean(gl, { ...SEA_PARAMETERS, path: 'js', worker: false, localWaves: false, reflections: 'sky', refractions: 'sky', ...sun });
   const scene = new Scene();
   scene.add(ocean);
-  const camera = viewCamera();
+  const camera = viewCamera(...at);
   const target = pictureTarget(WebGLRenderTarget, width, height);
   ocean.update(t, camera);
   gl.setRenderTarget(target);
@@ -133,8 +134,10 @@ async function heightAgreement(cx: number, cz: number, side: number, t: number, 
   ocean.getObjectByName('OceanWebGPU sky')!.visible = false;
   const size = 64;
   const target = new RenderTarget(size, size, { type: FloatType });
-  const camera = new OrthographicCamera(-side / 2, side / 2, side / 2, -side / 2, 1, 200);
-  camera.position.set(cx, 100, cz);
+  // 2.5 m up: the rings' finest cells are then the finest texel (finestRingLevel in horizonGrid.ts,
+  // 32 cells a ring), and ring 0 covers ±10 m around the camera, the whole square.
+  const camera = new OrthographicCamera(-side / 2, side / 2, side / 2, -side / 2, 0.01, 10);
+  camera.position.set(cx, 2.5, cz);
   camera.up.set(0, 0, -1);
   camera.lookAt(cx, 0, cz);
   renderer!.setRenderTarget(target);
@@ -152,7 +155,7 @@ async function heightAgreement(cx: number, cz: number, side: number, t: number, 
     drawn.push(y);
     const h = ocean.heightAt(x, z);
     queried.push(h);
-    bound.push(interpolationBound(ocean, x, z, h));
+    bound.push(interpolationBound(ocean, x, z, h, finestTexel(ocean.waveLayers)));
     sumSquares += y * y;
   }
   surface.material = shaded;
@@ -166,18 +169,18 @@ async function heightAgreement(cx: number, cz: number, side: number, t: number, 
  * How far the drawn triangles may lie from the surface at (x, z): the mesh is linear between
  * vertices, and linear interpolation over an edge of length L misses a function by at most
  * L²/8·max|f''| along it (the remainder of linear interpolation, e.g. Burden & Faires, Numerical
- * Analysis, Theorem 3.3). L is the cell's diagonal, √2·0.5 m (seaGrid.ts' near cells), stretched by
+ * Analysis, Theorem 3.3). L is the diagonal of a cell `cell` m wide, stretched by
  * up to 1.5 where the choppy displacement pulls vertices apart; f'' is heightAt's second difference
  * over half a metre along x, z and both diagonals, the largest of the four.
  */
-function interpolationBound(ocean: Ocean, x: number, z: number, h: number): number {
+function interpolationBound(ocean: Ocean, x: number, z: number, h: number, cell: number): number {
   const step = 0.5;
   let curvature = 0;
   for (const [dx, dz] of [[1, 0], [0, 1], [Math.SQRT1_2, Math.SQRT1_2], [Math.SQRT1_2, -Math.SQRT1_2]]) {
     const second = (ocean.heightAt(x + step * dx, z + step * dz) - 2 * h + ocean.heightAt(x - step * dx, z - step * dz)) / (step * step);
     curvature = Math.max(curvature, Math.abs(second));
   }
-  const edge = 1.5 * Math.SQRT2 * 0.5;
+  const edge = 1.5 * Math.SQRT2 * cell;
   return (edge * edge * curvature) / 8;
 }
 
