@@ -103,6 +103,8 @@ const COMPARED_VIEWS = [
   { name: 'the default view', file: 'default', options: {}, meanBound: 0.3, within8Bound: 0.999 },
   // The sun 12° up straight ahead (azimuth −90°: towards −z), its glint on the sea below it.
   { name: 'the sun ahead and its glint', file: 'glint', options: { sunElevation: 12, sunAzimuth: -90 }, meanBound: 0.3, within8Bound: 0.999 },
+  // Half overcast, the sun low behind the camera: the CIE overcast sky mixed in, the sun's light dimmed.
+  { name: 'a half-overcast sky', file: 'cloud', options: { cloudCover: 0.5, sunElevation: 20, sunAzimuth: 90 }, meanBound: 0.3, within8Bound: 0.999 },
   // 36 km from the origin: the rings follow the camera and the sea still reaches the horizon.
   { name: 'the default view 36 km away', file: 'far', options: { at: [30_000, -20_000] as [number, number] }, meanBound: 0.3, within8Bound: 0.999 },
 ];
@@ -208,7 +210,7 @@ test.describe('three-fft-ocean/webgpu', () => {
     expect(new Set(heights(webgpu)).size).toBe(2 * points.length); // a real sea that the new wind changed
   });
 
-  test('bad input: the wrong renderer, what is not drawn yet and a bad parameter throw clear errors', async () => {
+  test('bad input: the wrong renderer, what is not drawn yet and bad parameters throw clear errors', async () => {
     const thrown = await page.evaluate(() => window.webgpuOcean.badInputs());
     expect(thrown[0][0]).toBe('UnsupportedError');
     expect(thrown[0][1]).toContain('WebGPURenderer');
@@ -218,6 +220,14 @@ test.describe('three-fft-ocean/webgpu', () => {
     expect(thrown[2][1]).toContain('GPU FFT');
     expect(thrown[3][0]).toBe('ParameterError');
     expect(thrown[3][1]).toContain('windSpeed');
+    expect(thrown[4][0]).toBe('ParameterError');
+    expect(thrown[4][1]).toContain('sunElevation');
+    expect(thrown[5][0]).toBe('ParameterError');
+    expect(thrown[5][1]).toContain('sunDirection');
+    expect(thrown[6][0]).toBe('ParameterError');
+    expect(thrown[6][1]).toContain('cloudCover');
+    expect(thrown[7][0]).toBe('ParameterError');
+    expect(thrown[7][1]).toContain('causticPower');
   });
 });
 

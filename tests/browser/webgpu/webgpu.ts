@@ -237,6 +237,10 @@ function badInputs(): [string, string][] {
     () => new Ocean(renderer!, { reflections: 'scene' }),
     () => new Ocean(renderer!, { path: 'gpu' }),
     () => new Ocean(renderer!, { windSpeed: -1 }),
+    () => new Ocean(renderer!, { sunElevation: 100 }),
+    () => new Ocean(renderer!, { sunDirection: [0, 1, 0], sunAzimuth: 10 }),
+    () => new Ocean(renderer!, { cloudCover: 2 }),
+    () => new Ocean(renderer!, { causticPower: 0 }),
   ];
   const thrown = attempts.map((attempt): [string, string] => {
     try {
