@@ -132,6 +132,9 @@ export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms,
     derivatives = derivatives.add(texture(map, uvs[i]).mul(blendAtFragment.x)).add(texture(map, uvs[i].add(copyOffset)).mul(blendAtFragment.y));
   });
   material.colorNode = Fn(() => {
+    // The slopes this pixel's normal does not show (seaLighting.glsl), from the rest point's change to
+    // the next pixel: taken first, as ocean.frag does, since derivatives need the whole 2×2 quad.
+    const slopeVariance = subPixelSlopeVariance(lighting, footprintLevel(dFdx(restAtFragment), dFdy(restAtFragment))).toVar();
     // Each point of the rest plane is drawn by one ring: a ring drops its overlap with the one inside (ocean.frag).
     const fromInner = abs(restAtFragment.sub(innerRing.xy));
     Discard(max(fromInner.x, fromInner.y).lessThan(innerRing.z));
@@ -146,7 +149,6 @@ export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms,
     const sky = uniforms.sky;
     const skyRadiance = (direction: Vec3Node) => analyticSkyRadiance(sky, direction);
     // ocean.frag's full shading, without what is not drawn here yet (scene reflections and refractions, foam, spray).
-    const slopeVariance = subPixelSlopeVariance(lighting, footprintLevel(dFdx(restAtFragment), dFdy(restAtFragment))).toVar();
     const reflection = filteredSkyReflection(view, normal, slopeVariance, air, water, skyRadiance);
     const reflectance = reflection.reflectance.toVar();
     const refracted = refract(view, normal, air.div(water));
