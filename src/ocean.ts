@@ -16,7 +16,7 @@ import { OceanSurface } from './render/oceanSurface';
 import type { ReflectionLayers } from './render/sceneReflection';
 import { OceanMaterial, type OceanShadingOptions } from './render/oceanMaterial';
 import { SkyBackground } from './render/skyBackground';
-import { SkyEnvironment, sunAnglesFromDirection, type SunAngles, type SunDirection } from './render/skyEnvironment';
+import { SkyEnvironment, sunAngles, type SunDirection } from './render/skyEnvironment';
 import { OceanSimulation, type PathPreference, type SimulationOptions, type SimulationPath } from './layers/oceanSimulation';
 import type { LocalWaves } from './layers/localWaves';
 import type { WaveLayer } from './layers/waveLayer';
@@ -466,18 +466,6 @@ export class Ocean extends Object3D<OceanEventMap> {
   private checkAlive(method: string): void {
     if (this.disposed) throw new DisposedError(`Ocean.${method}`);
   }
-}
-
-/**
- * The angles `sun` asks for: its direction's, or its elevation and azimuth, `current` where it
- * gives none. A direction with an angle is an error (`directionName` is what the caller called it).
- */
-function sunAngles(sun: SunPosition, current: SunAngles, directionName: string): SunAngles {
-  if (sun.direction === undefined) return { elevation: sun.elevation ?? current.elevation, azimuth: sun.azimuth ?? current.azimuth };
-  if (sun.elevation !== undefined || sun.azimuth !== undefined) {
-    throw new ParameterError(directionName, sun.direction, 'given without an elevation or azimuth (it sets both)');
-  }
-  return sunAnglesFromDirection(sun.direction, directionName);
 }
 
 function pick<T extends object, K extends keyof T>(source: T, keys: readonly K[]): Partial<Pick<T, K>> {

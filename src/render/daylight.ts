@@ -65,3 +65,25 @@ export function overcastLuminance(cosZenith: number): number {
 export function overcastZenithLuminance(sunElevationDeg: number): number {
   return (123 + 8600 * Math.max(Math.sin((sunElevationDeg * Math.PI) / 180), 0)) / 128000;
 }
+
+/** What the sky's and the sun's light come to for a sun at this elevation (degrees) under this cloud cover: the sky's uniforms. */
+export interface SkyLight {
+  /** skyDaylight(elevation). */
+  daylight: number;
+  /** The direct sunlight: the fraction of the sun's disk above the horizon times what the clouds let through. */
+  sunVisibility: number;
+  /** overcastZenithLuminance(elevation). */
+  overcastZenith: number;
+  /** cloudSunTransmittance(cloudCover). */
+  cloudSun: number;
+}
+
+export function skyLight(sunElevationDeg: number, cloudCover: number): SkyLight {
+  const cloudSun = cloudSunTransmittance(cloudCover);
+  return {
+    daylight: skyDaylight(sunElevationDeg),
+    sunVisibility: sunAboveHorizon(sunElevationDeg) * cloudSun,
+    overcastZenith: overcastZenithLuminance(sunElevationDeg),
+    cloudSun,
+  };
+}

@@ -15,7 +15,7 @@ import { DEFAULT_SHADING, SHADING_MODES, SHADING_OPTIONS, type ShadingChanges, t
 import { shaderSource, withLayerCount } from '../shaderSource';
 import { FOAM_PATTERN_PERIOD, foamPatternDefines, foamPatternTextures } from './foamPattern';
 import { finestTexel, RING_COUNT } from './horizonGrid';
-import { SLOPE_FILTER_LEVELS, seaLightingValues } from './seaLighting';
+import { SEA_SUN_COLOR, SLOPE_FILTER_LEVELS, seaLightingValues, VIEW_DEPTH } from './seaLighting';
 import { beaufortAppearance } from './beaufortAppearance';
 import { EYE_SIDE, type EyeSide, type RingPlacement, type SeaSurfaceMaterial } from './seaSurfaceMaterial';
 
@@ -82,9 +82,7 @@ export class OceanMaterial extends ShaderMaterial implements SeaSurfaceMaterial 
           copyOffset: { value: new Vector2(...COPY_OFFSET) },
           ringOffsets: { value: new Float32Array(2 * (RING_COUNT + 1)) },
           halfRingCells: { value: 32 },
-          // The sun's irradiance at the sea on a plane facing it (for the glint, the foam and the
-          // crests' glow); the sky's E_sun·T_sun for a sun ~30° high (analyticSky.glsl).
-          sunColor: { value: new Color(12, 11, 9.5) },
+          sunColor: { value: new Color(...SEA_SUN_COLOR) },
           unresolvedSlopeVariance: { value: 0 },
           layerFilteredSlopes: { value: new Array<number>(SLOPE_FILTER_LEVELS).fill(0) },
           layerTexels: { value: [1] },
@@ -93,7 +91,7 @@ export class OceanMaterial extends ShaderMaterial implements SeaSurfaceMaterial 
           iorWater: { value: DEFAULT_SHADING.ior },
           absorption: { value: new Vector3(...DEFAULT_SHADING.absorption) },
           scatterColor: { value: new Vector3(...DEFAULT_SHADING.scatterColor) },
-          viewDepth: { value: 4 },
+          viewDepth: { value: VIEW_DEPTH },
           causticPower: { value: DEFAULT_SHADING.causticPower },
           causticColor: { value: new Vector3(...DEFAULT_SHADING.causticColor) },
           heightScale: { value: 3 },

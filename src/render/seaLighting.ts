@@ -17,6 +17,18 @@ import type { WaveLayer } from '../layers/waveLayer';
 import type { InitialSpectrum } from '../spectrum/initialSpectrum';
 
 /**
+ * The sun's irradiance at the sea on a plane facing it, linear RGB (for the glint, the foam and the
+ * crests' glow): the sky's E_sun·T_sun for a sun ~30° high (shaders/sky/analyticSky.glsl).
+ */
+export const SEA_SUN_COLOR: readonly [number, number, number] = [12, 11, 9.5];
+
+/**
+ * How deep (m) the ray refracted into the sea is followed through the water before the deep water's
+ * own colour takes over (absorption.glsl's viewDepth, along the vertical).
+ */
+export const VIEW_DEPTH = 4;
+
+/**
  * Mip levels per layer in the table of filtered slope variance: 0 … 11 covers N up to 2048 (the
  * last levels of a smaller grid hold its whole variance: its 1×1 level keeps only the mean).
  */

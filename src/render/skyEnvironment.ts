@@ -47,7 +47,7 @@ import {
   type Texture,
   type WebGLRenderer,
 } from 'three';
-import { cloudSunTransmittance, overcastZenithLuminance, skyDaylight, sunAboveHorizon } from './daylight';
+import { skyLight } from './daylight';
 import { shaderSource } from '../shaderSource';
 import { checkOption, checkOptionNames, DisposedError, ParameterError } from '../parameters/options';
 import { DEFAULT_SUN, SUN_OPTIONS } from '../parameters/sceneOptions';
@@ -130,6 +130,23 @@ export function sunDirectionFromAngles(elevationDeg: number, azimuthDeg: number,
   return target.set(Math.cos(elevation) * Math.cos(azimuth), Math.sin(elevation), Math.cos(elevation) * Math.sin(azimuth));
 }
 
+/**
+ * The angles `sun` asks for: its direction's, or its elevation and azimuth, `current` where it
+ * gives none. A direction with an angle is an error (`directionName` is what the caller called it).
+ */
+export function sunAngles(sun: { elevation?: number; azimuth?: number; direction?: SunDirection }, current: SunAngles, directionName: string): SunAngles {
+  if (sun.direction === undefined) return { elevation: sun.elevation ?? current.elevation, azimuth: sun.azimuth ?? current.azimuth };
+  if (sun.elevation !== undefined || sun.azimuth !== undefined) {
+    throw new ParameterError(directionName, sun.direction, 'given without an elevation or azimuth (it sets both)');
+  }
+  return sunAnglesFromDirection(sun.direction, directionName);
+}
+
+/** E_sun, the analytic sky's sun irradiance above the atmosphere (skySunIntensity; its colour is white). */
+export const SKY_SUN_INTENSITY = 16;
+/** Linear RGB; about sRGB (13, 26, 52): the report's "very dark blue" ocean depth (skyDeepWaterColor). */
+export const SKY_DEEP_WATER: readonly [number, number, number] = [0.004, 0.01, 0.035];
+
 const FACE_ORDER = ['px', 'nx', 'py', 'ny', 'pz', 'nz'] as const;
 
 export class SkyEnvironment {
@@ -208,9 +225,8 @@ export class SkyEnvironment {
     this.skyUniforms = {
       skySunDirection: { value: this.sun },
       skySunColor: { value: new Color(1, 1, 1) },
-      skySunIntensity: { value: 16 },
-      // Linear RGB; about sRGB (13, 26, 52): the report's "very dark blue" ocean depth.
-      skyDeepWaterColor: { value: new Color(0.004, 0.01, 0.035) },
+      skySunIntensity: { value: SKY_SUN_INTENSITY },
+      skyDeepWaterColor: { value: new Color(...SKY_DEEP_WATER) },
       skyDaylight: { value: 1 },
       skySunVisibility: { value: 1 },
       skyCloudCover: { value: 0 },
@@ -366,12 +382,12 @@ export class SkyEnvironment {
     this.elevation = elevationDeg;
     this.azimuth = azimuthDeg;
     sunDirectionFromAngles(elevationDeg, azimuthDeg, this.sun);
-    this.skyUniforms.skyDaylight.value = skyDaylight(elevationDeg);
-    const cloudSun = cloudSunTransmittance(this.cloud);
-    this.skyUniforms.skySunVisibility.value = sunAboveHorizon(elevationDeg) * cloudSun;
+    const light = skyLight(elevationDeg, this.cloud);
+    this.skyUniforms.skyDaylight.value = light.daylight;
+    this.skyUniforms.skySunVisibility.value = light.sunVisibility;
     this.skyUniforms.skyCloudCover.value = this.cloud;
-    this.skyUniforms.skyOvercastZenith.value = overcastZenithLuminance(elevationDeg);
-    this.skyUniforms.skyCloudSun.value = cloudSun;
+    this.skyUniforms.skyOvercastZenith.value = light.overcastZenith;
+    this.skyUniforms.skyCloudSun.value = light.cloudSun;
     if (!this.loaded) this.render();
   }
 

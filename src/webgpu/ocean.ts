@@ -11,29 +11,35 @@
  * This first slice draws the FFT cascades of the same sea as the WebGL Ocean (the same parameters,
  * spectra and seeded amplitudes, computed by the JS FFT: src/fft/cpuFieldTextures.ts, in a worker
  * by default, uploaded as float textures each frame; there is no GPU FFT on WebGPURenderer yet),
- * displaced and lit in TSL (seaNodes.ts) by the sky's Fresnel reflection over the deep water's
- * colour, on a fixed grid around the origin (seaGrid.ts). heightAt and normalAt answer from the
- * same fields and code as the WebGL Ocean's (src/layers/surfaceQuery.ts), so for the same options
- * and time they return the same numbers.
+ * displaced and lit in TSL (seaNodes.ts, lightNodes.ts) as the WebGL Ocean's ocean.frag lights it:
+ * the reflection of its analytic sky (skyNodes.ts, also drawn behind everything), the light from
+ * under the surface, the caustics, the sun's glint and the crests' glow; on its horizon rings round
+ * the camera (seaRings.ts), placed before each draw. heightAt and normalAt answer from the same
+ * fields and code as the WebGL Ocean's (src/layers/surfaceQuery.ts), so for the same options and
+ * time they return the same numbers.
  *
  * What it does not draw yet throws an UnsupportedError when asked for (NOT_YET), and what is on by
- * default in the WebGL Ocean but missing here (whitecap foam, the sun, the analytic sky) is named in
- * one console warning per page. Owns its cascades, textures, geometry and materials; dispose()
+ * default in the WebGL Ocean but missing here (whitecap foam) is named in one console warning per
+ * page. Owns its cascades, textures, geometry and materials; dispose()
  * frees them, after which every method throws a DisposedError.
  */
-import { Mesh, Object3D, SphereGeometry, Vector3 } from 'three';
+import { Mesh, Object3D, SphereGeometry, Vector2, Vector3, type BufferGeometry } from 'three';
 import type { MeshBasicNodeMaterial, WebGPURenderer } from 'three/webgpu';
 import { uniform } from 'three/tsl';
 import { CpuFieldTextures, type FloatTextureSupport } from '../fft/cpuFieldTextures';
 import { FftCascade, type FftBackend } from '../layers/fftCascade';
 import { heightAt, normalAt } from '../layers/surfaceQuery';
 import { orderLayers, type WaveLayer } from '../layers/waveLayer';
-import { checkOptionNames, DisposedError, UnsupportedError } from '../parameters/options';
+import { checkOption, checkOptionNames, DisposedError, UnsupportedError } from '../parameters/options';
 import { ParameterError, SIMULATION_OPTIONS, validateParameters, type SimulationParameters } from '../parameters/parameters';
-import { colorToLinear, DEFAULT_SHADING, SHADING_OPTIONS, type ColorInput } from '../parameters/sceneOptions';
+import { colorToLinear, DEFAULT_SHADING, DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ColorInput } from '../parameters/sceneOptions';
+import { sunAngles, type SunDirection } from '../render/skyEnvironment';
 import { createCascadeSpectra } from '../spectrum/initialSpectrum';
-import { seaGridGeometry } from './seaGrid';
+import { SeaRings } from './seaRings';
+import { cellsPerRingForViewport, createHorizonGridGeometry } from '../render/horizonGrid';
 import { seaMaterial, skyMaterial, type SeaUniforms } from './seaNodes';
+import { skyUniforms } from './skyNodes';
+import { seaLightingValues } from '../render/seaLighting';
 import { checkCoordinates } from '../oceanQueries';
 
 export interface WebGPUOceanOptions extends Partial<SimulationParameters> {
@@ -41,10 +47,20 @@ export interface WebGPUOceanOptions extends Partial<SimulationParameters> {
   ior?: number;
   /** Colour of the light deep water scatters back, any ColorInput (an array is linear RGB). @defaultValue [0.0, 0.035, 0.06] */
   scatterColor?: ColorInput;
-  /** The sky's colour at the horizon, any ColorInput (an array is linear RGB). @defaultValue [0.45, 0.6, 0.8] */
-  horizonColor?: ColorInput;
-  /** The sky's colour straight up, any ColorInput (an array is linear RGB). @defaultValue [0.1, 0.25, 0.6] */
-  zenithColor?: ColorInput;
+  /** Beer–Lambert absorption σ per colour channel, 1/m (ShadingOptions.absorption). @defaultValue [0.45, 0.07, 0.04] */
+  absorption?: [number, number, number];
+  /** Exponent of the caustics' brightness (ShadingOptions.causticPower). @defaultValue 32 */
+  causticPower?: number;
+  /** Colour of the caustics, any ColorInput (ShadingOptions.causticColor). @defaultValue [0.12, 0.12, 0.12] */
+  causticColor?: ColorInput;
+  /** Sun elevation above the horizon in degrees, [-90, 90] (OceanOptions.sunElevation). @defaultValue 30 */
+  sunElevation?: number;
+  /** Sun azimuth in degrees from +x towards +z (OceanOptions.sunAzimuth). @defaultValue 40 */
+  sunAzimuth?: number;
+  /** Direction towards the sun instead of sunElevation and sunAzimuth, y up, any length (OceanOptions.sunDirection). @defaultValue undefined */
+  sunDirection?: SunDirection;
+  /** How much of the sky is cloud, [0, 1]: 0 clear, 1 overcast (OceanOptions.cloudCover). @defaultValue 0 */
+  cloudCover?: number;
   /** Compute the JS FFT in a Web Worker (SimulationOptions.worker). @defaultValue true where Worker exists */
   worker?: boolean;
   /** 'auto' or 'js': both the JS FFT here; 'gpu' throws (no GPU FFT on WebGPURenderer yet). @defaultValue 'auto' */
@@ -67,22 +83,10 @@ const NOT_YET: Record<string, { drawn: unknown; missing: string }> = {
   localWaves: { drawn: false, missing: 'local waves (stones, hulls)' },
   seabed: { drawn: null, missing: 'a seabed (shoaling, breaking, the shore)' },
   shadingMode: { drawn: 'full', missing: "the debug shading modes (shadingMode other than 'full')" },
-  causticPower: { drawn: undefined, missing: 'caustics (causticPower)' },
-  causticColor: { drawn: undefined, missing: 'caustics (causticColor)' },
-  absorption: { drawn: undefined, missing: 'absorption along a shallow path (absorption): the sea is infinitely deep' },
-  sunElevation: { drawn: undefined, missing: 'the sun and the analytic sky (sunElevation): the sky is a two-colour gradient' },
-  sunAzimuth: { drawn: undefined, missing: 'the sun and the analytic sky (sunAzimuth)' },
-  sunDirection: { drawn: undefined, missing: 'the sun and the analytic sky (sunDirection)' },
-  cloudCover: { drawn: undefined, missing: 'the analytic sky (cloudCover)' },
 };
 
 const SIMULATION_KEYS = Object.keys(SIMULATION_OPTIONS) as (keyof SimulationParameters)[];
-const OPTION_KEYS: readonly string[] = [...SIMULATION_KEYS, 'ior', 'scatterColor', 'horizonColor', 'zenithColor', 'worker', ...Object.keys(NOT_YET)];
-
-export const WEBGPU_OCEAN_DEFAULTS = Object.freeze({
-  horizonColor: [0.45, 0.6, 0.8] as const,
-  zenithColor: [0.1, 0.25, 0.6] as const,
-});
+const OPTION_KEYS: readonly string[] = [...SIMULATION_KEYS, 'ior', 'scatterColor', 'absorption', 'causticPower', 'causticColor', 'worker', ...Object.keys(SUN_OPTIONS), 'sunDirection', ...Object.keys(NOT_YET)];
 
 /** The one warning of what the WebGL Ocean draws by default and this one does not, once per page. */
 let warnedOfMissing = false;
@@ -95,7 +99,12 @@ export class Ocean extends Object3D {
   private readonly uniforms: SeaUniforms;
   private readonly useWorker: boolean;
   private readonly support: FloatTextureSupport;
-  private readonly surface: Mesh<ReturnType<typeof seaGridGeometry>, MeshBasicNodeMaterial>;
+  private readonly surface: Mesh<BufferGeometry, MeshBasicNodeMaterial>;
+  /** The rings' uniforms of the surface's material (made with it by surfaceMaterial), placed under the camera before each draw. */
+  private rings!: SeaRings;
+  /** Cells on a side of each ring, for the drawing buffer's height (cellsPerRingForViewport). */
+  private cellsPerRing: number;
+  private readonly drawingBuffer = new Vector2();
   private readonly skyMesh: Mesh<SphereGeometry, MeshBasicNodeMaterial>;
   private currentTime = 0;
   private lastTime = NaN;
@@ -116,19 +125,35 @@ export class Ocean extends Object3D {
     for (const key of SIMULATION_KEYS) if (options[key] !== undefined) (simulation as Record<string, unknown>)[key] = options[key];
     this.parameters = validateParameters(simulation);
     const ior = options.ior ?? DEFAULT_SHADING.ior;
-    if (!SHADING_OPTIONS.ior.check(ior)) throw new ParameterError('ior', ior, SHADING_OPTIONS.ior.allowed);
+    const absorption = options.absorption ?? DEFAULT_SHADING.absorption;
+    const causticPower = options.causticPower ?? DEFAULT_SHADING.causticPower;
+    checkOption(SHADING_OPTIONS, 'ior', ior);
+    checkOption(SHADING_OPTIONS, 'absorption', absorption);
+    checkOption(SHADING_OPTIONS, 'causticPower', causticPower);
+    const sun = sunAngles({ elevation: options.sunElevation, azimuth: options.sunAzimuth, direction: options.sunDirection }, { elevation: DEFAULT_SUN.sunElevation, azimuth: DEFAULT_SUN.sunAzimuth }, 'sunDirection');
+    checkOption(SUN_OPTIONS, 'sunElevation', sun.elevation);
+    checkOption(SUN_OPTIONS, 'sunAzimuth', sun.azimuth);
+    const cloudCover = options.cloudCover ?? DEFAULT_SUN.cloudCover;
+    checkOption(SUN_OPTIONS, 'cloudCover', cloudCover);
     this.uniforms = {
       choppiness: uniform(this.parameters.choppiness),
       ior: uniform(ior),
       scatterColor: uniform(new Vector3(...linearColor('scatterColor', options.scatterColor, DEFAULT_SHADING.scatterColor))),
-      horizonColor: uniform(new Vector3(...linearColor('horizonColor', options.horizonColor, WEBGPU_OCEAN_DEFAULTS.horizonColor))),
-      zenithColor: uniform(new Vector3(...linearColor('zenithColor', options.zenithColor, WEBGPU_OCEAN_DEFAULTS.zenithColor))),
+      absorption: uniform(new Vector3(...absorption)),
+      causticPower: uniform(causticPower),
+      causticColor: uniform(new Vector3(...linearColor('causticColor', options.causticColor, DEFAULT_SHADING.causticColor))),
+      sky: skyUniforms(sun.elevation, sun.azimuth, cloudCover),
     };
     this.useWorker = options.worker ?? typeof Worker !== 'undefined';
     this.buildCascades();
-    this.surface = new Mesh(seaGridGeometry(), seaMaterial(this.currentLayers, this.uniforms));
+    this.cellsPerRing = cellsPerRingForViewport(renderer.getDrawingBufferSize(this.drawingBuffer).y);
+    this.surface = new Mesh(createHorizonGridGeometry(this.cellsPerRing), this.surfaceMaterial());
     this.surface.name = 'OceanWebGPU surface';
-    this.surface.frustumCulled = false; // the grid moves up and down by the waves
+    this.surface.frustumCulled = false; // the grid follows the camera and moves up and down by the waves
+    this.surface.onBeforeRender = (drawing, _scene, camera) => {
+      this.fitGrid(drawing as unknown as WebGPURenderer);
+      this.rings.place(camera, this.cellsPerRing);
+    };
     this.skyMesh = new Mesh(new SphereGeometry(1, 32, 16), skyMaterial(this.uniforms));
     this.skyMesh.name = 'OceanWebGPU sky';
     this.skyMesh.frustumCulled = false;
@@ -136,7 +161,7 @@ export class Ocean extends Object3D {
     this.add(this.skyMesh, this.surface);
     if (!warnedOfMissing && this.parameters.foamAmount > 0) {
       warnedOfMissing = true;
-      console.warn('three-fft-ocean/webgpu: not drawn yet on WebGPURenderer: whitecap foam (foamAmount), the sun and its glint, the analytic sky (a two-colour gradient instead), the horizon rings that follow the camera, quality levels.');
+      console.warn('three-fft-ocean/webgpu: not drawn yet on WebGPURenderer: whitecap foam (foamAmount), quality levels.');
     }
   }
 
@@ -189,7 +214,7 @@ export class Ocean extends Object3D {
     for (const cascade of this.cascades) cascade.dispose();
     this.buildCascades();
     const old = this.surface.material;
-    this.surface.material = seaMaterial(this.currentLayers, this.uniforms);
+    this.surface.material = this.surfaceMaterial();
     old.dispose();
   }
 
@@ -205,6 +230,24 @@ export class Ocean extends Object3D {
     this.skyMesh.material.dispose();
     this.removeFromParent();
     this.disposed = true;
+  }
+
+  /** The surface's material over the current layers, with new rings for them. */
+  private surfaceMaterial(): MeshBasicNodeMaterial {
+    this.rings = new SeaRings(this.currentLayers);
+    return seaMaterial(this.currentLayers, this.uniforms, seaLightingValues(this.currentLayers, this.parameters.windSpeed), this.rings);
+  }
+
+  /**
+   * Gives the grid as many cells a ring as the drawing buffer's height asks for. three takes a
+   * mesh's geometry before its onBeforeRender, so a grid replaced there is drawn from the next frame.
+   */
+  private fitGrid(renderer: WebGPURenderer): void {
+    const cells = cellsPerRingForViewport(renderer.getDrawingBufferSize(this.drawingBuffer).y);
+    if (cells === this.cellsPerRing) return;
+    this.surface.geometry.dispose();
+    this.surface.geometry = createHorizonGridGeometry(cells);
+    this.cellsPerRing = cells;
   }
 
   /** The cascades of the parameters: their textures ask nothing more of the renderer than `support`, read once. */

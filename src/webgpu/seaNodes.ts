@@ -7,46 +7,45 @@
  *   vertex:   P = x0 + Σ (λ·Dx, h, λ·Dz) over the cascades at the rest point x0, the largest one as
  *             cos θ·P(x0) + sin θ·P(x0 + o) (shaders/surface/ocean.vert, src/layers/patchBlend.ts)
  *   fragment: the normal from the summed slopes (shaders/surface/choppyNormal.glsl), then
- *             c = R·c_sky(reflect) + (1 − R)·c_deep, R the exact Fresnel reflectance
- *             (shaders/common/fresnel.glsl), c_deep the deep water's scatter colour
- *             (shaders/surface/absorption.glsl: what a ray refracted into an infinitely deep sea sees)
+ *             ocean.frag's c = R·c_sky + (1 − R)·c_water + K·c_caustic + glint + crest glow, R the
+ *             exact Fresnel reflectance, c_sky the analytic sky (skyNodes.ts) reflected by the
+ *             pixel's unresolved slopes, the glint a Cox–Munk lobe (lightNodes.ts, twins of
+ *             seaLighting.glsl, absorption.glsl, caustics.glsl and fresnel.glsl)
  */
 import { BackSide, type Texture } from 'three';
-import { MeshBasicNodeMaterial, type Node, type UniformNode } from 'three/webgpu';
+import { MeshBasicNodeMaterial, type UniformNode } from 'three/webgpu';
 import {
   abs,
-  attribute,
+  Discard,
   cameraPosition,
   cameraProjectionMatrix,
   cameraViewMatrix,
-  clamp,
   cos,
   cross,
+  dFdx,
+  dFdy,
   Fn,
   float,
-  log2,
   max,
-  mix,
   normalize,
   positionGeometry,
   positionWorld,
-  reflect,
-  select,
+  refract,
   sin,
-  sqrt,
   texture,
   varying,
   vec2,
   vec3,
   vec4,
 } from 'three/tsl';
-import { COPY_OFFSET, patchBlendUniforms } from '../layers/patchBlend';
+import { COPY_OFFSET } from '../layers/patchBlend';
+import { finestTexel } from '../render/horizonGrid';
+import type { SeaRings } from './seaRings';
 import type { WaveLayer } from '../layers/waveLayer';
-
-type FloatNode = Node<'float'>;
-type Vec2Node = Node<'vec2'>;
-type Vec3Node = Node<'vec3'>;
-type Vec4Node = Node<'vec4'>;
+import { SEA_SUN_COLOR, VIEW_DEPTH, type SeaLightingValues } from '../render/seaLighting';
+import { analyticSkyRadiance, type SkyUniforms } from './skyNodes';
+import { causticBrightness, crestGlow, facingEye, filteredSkyReflection, footprintLevel, subPixelSlopeVariance, sunGlint, throughWater } from './lightNodes';
+import type { FloatNode, Vec2Node, Vec3Node, Vec4Node } from './nodeTypes';
 
 /** The uniforms the surface and the sky share, which the Ocean sets. */
 export interface SeaUniforms {
@@ -56,128 +55,118 @@ export interface SeaUniforms {
   ior: UniformNode<'float'>;
   /** Linear RGB of the light deep water scatters back. */
   scatterColor: UniformNode<'vec3'>;
-  /** The sky's colour at the horizon and straight up, linear RGB. */
-  horizonColor: UniformNode<'vec3'>;
-  zenithColor: UniformNode<'vec3'>;
+  /** Beer–Lambert absorption σ per channel, 1/m. */
+  absorption: UniformNode<'vec3'>;
+  /** The caustics' exponent p and linear colour. */
+  causticPower: UniformNode<'float'>;
+  causticColor: UniformNode<'vec3'>;
+  /** The analytic sky and its sun (skyNodes.ts). */
+  sky: SkyUniforms;
 }
 
 /**
- * Exact Fresnel reflectance of unpolarized light, in its amplitude form (shaders/common/fresnel.glsl,
- * course report §2.2, after Tessendorf 2001 §3.3):
- *   r_s = (n1·cos θi − n2·cos θt)/(n1·cos θi + n2·cos θt),  r_p = (n2·cos θi − n1·cos θt)/(n2·cos θi + n1·cos θt),
- *   R = ½·(r_s² + r_p²), n1·sin θi = n2·sin θt; 1 beyond the critical angle.
+ * θ and its gradient of the largest layer's blend at the rest point `fromEye` (metres from the eye),
+ * (cos θ, sin θ, ∂θ/∂x, ∂θ/∂z): waveLayers.glsl's blendWeights, over the rings' patchBlend.
  */
-export const fresnelReflectance = Fn(([cosIncident, n1, n2]: [FloatNode, FloatNode, FloatNode]) => {
-  const cosI = clamp(cosIncident, 0, 1);
-  const sinT = n1.div(n2).mul(sqrt(max(float(1).sub(cosI.mul(cosI)), 0)));
-  const cosT = sqrt(max(float(1).sub(sinT.mul(sinT)), 0));
-  const rs = n1.mul(cosI).sub(n2.mul(cosT)).div(n1.mul(cosI).add(n2.mul(cosT)));
-  const rp = n2.mul(cosI).sub(n1.mul(cosT)).div(n2.mul(cosI).add(n1.mul(cosT)));
-  return select(sinT.greaterThanEqual(1), float(1), rs.mul(rs).add(rp.mul(rp)).mul(0.5));
-});
-
-/**
- * The sky the sea reflects and the background shows, along the unit direction `dir`: a gradient
- * from the horizon colour to the zenith colour over the square root of the elevation's sine, and
- * the deep water's colour below the horizon. A stand-in, not a model: the WebGL Ocean's analytic
- * sky (shaders/sky/analyticSky.glsl, sun and clouds) is not ported yet.
- */
-export function skyRadiance(uniforms: SeaUniforms, dir: Vec3Node): Vec3Node {
-  const up = sqrt(clamp(dir.y, 0, 1));
-  return select(dir.y.lessThan(0), uniforms.scatterColor, mix(uniforms.horizonColor, uniforms.zenithColor, up)) as unknown as Vec3Node;
-}
-
-/** Each layer's texture coordinates of the rest point x0: x0/size + ½ texel (ocean.vert's ringLayerUvOrigins, at the origin). */
-function layerUv(layer: WaveLayer, rest: Vec2Node): Vec2Node {
-  return rest.div(layer.frame.size).add(0.5 / layer.frame.resolution);
-}
-
-/**
- * θ(x0) and its gradient of the largest layer's blend (patchBlend.ts): (cos θ, sin θ, ∂θ/∂x, ∂θ/∂z),
- * with the components' phases at the world origin (this grid's positions are world coordinates).
- */
-function blendWeights(size: number, rest: Vec2Node): Vec4Node {
-  const components = patchBlendUniforms(size, new Float64Array(12));
+function blendWeights(rings: SeaRings, fromEye: Vec2Node): Vec4Node {
   let theta: FloatNode = float(0);
   let gradient: Vec2Node = vec2(0, 0);
   for (let j = 0; j < 3; j++) {
-    const k = vec2(components[4 * j], components[4 * j + 1]);
-    const phase = rest.dot(k).add(components[4 * j + 2]);
-    theta = theta.add(sin(phase).mul(components[4 * j + 3]));
-    gradient = gradient.add(k.mul(cos(phase).mul(components[4 * j + 3])));
+    const component = rings.patchBlend.element(j) as unknown as Vec4Node;
+    const phase = fromEye.dot(component.xy).add(component.z);
+    theta = theta.add(sin(phase).mul(component.w));
+    gradient = gradient.add(component.xy.mul(cos(phase).mul(component.w)));
   }
   return vec4(cos(theta), sin(theta), gradient);
 }
 
 /**
  * The surface's material over `layers` (the periodic FFT cascades, the largest last as
- * orderLayers gives them, with the textures they hold now).
+ * orderLayers gives them, with the textures they hold now), on the grid `rings` places.
  */
-export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms): MeshBasicNodeMaterial {
+export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms, lighting: SeaLightingValues, rings: SeaRings): MeshBasicNodeMaterial {
   const material = new MeshBasicNodeMaterial();
   material.name = 'OceanWebGPU';
-  const rest = positionGeometry.xz;
-  const cell = attribute<'float'>('cell', 'float');
+  const point = rings.point();
   const largest = layers.length - 1;
   const copyOffset = vec2(COPY_OFFSET[0], COPY_OFFSET[1]);
-  const blend = blendWeights(layers[largest].frame.size, rest);
+  const blend = blendWeights(rings, point.fromEye);
+  const finest = finestTexel(layers);
 
-  // Vertex: the displacement summed at the mip level that averages one cell (ocean.vert).
+  // Vertex (ocean.vert): the displacement summed at the ring's mip level, whole levels apart between layers.
   let displacement: Vec4Node = vec4(0, 0, 0, 0);
   let blendSlope: Vec2Node = vec2(0, 0);
-  layers.forEach((layer, i) => {
-    const texel = layer.frame.size / layer.frame.resolution;
-    const level = max(log2(cell.div(texel)), 0);
-    const uv = layerUv(layer, rest);
+  const uvs = layers.map((layer, i) => {
+    const uv = rings.layerUv(point, i, layer.frame.size);
+    const level = point.lod.add(Math.round(Math.log2(finest / (layer.frame.size / layer.frame.resolution))));
     const map = layer.textures.displacement.value as Texture;
     const first = texture(map, uv).level(level);
     if (i !== largest) {
       displacement = displacement.add(first);
-      return;
+      return varying(uv);
     }
     const copy = texture(map, uv.add(copyOffset)).level(level);
     displacement = displacement.add(first.mul(blend.x)).add(copy.mul(blend.y));
     // The blend's own change adds (−sin θ·h1 + cos θ·h2)·∇θ to the height's slope (ocean.vert's vBlendSlope).
     blendSlope = blend.zw.mul(copy.y.mul(blend.x).sub(first.y.mul(blend.y)));
+    return varying(uv);
   });
   const choppiness = uniforms.choppiness;
-  material.positionNode = vec3(rest.x.add(displacement.x.mul(choppiness)), displacement.y, rest.y.add(displacement.z.mul(choppiness)));
+  // World coordinates: the eye's plus the rest point and displacement from it.
+  material.positionNode = vec3(point.fromEye.x.add(displacement.x.mul(choppiness)), displacement.y, point.fromEye.y.add(displacement.z.mul(choppiness))).add(vec3(cameraPosition.x, 0, cameraPosition.z));
   // Per vertex, as the WebGL Ocean: λ·∂Dx/∂z (a second-order part of the normal) and the blend's slope.
   const crossDerivative = varying(displacement.w.mul(choppiness));
   const blendSlopeAtFragment = varying(blendSlope);
   const blendAtFragment = varying(blend.xy);
+  const restAtFragment = varying(point.fromEye);
+  const innerRing = varying(rings.innerRing(point));
 
   // Fragment: Σ (∂h/∂x, ∂h/∂z, ∂Dx/∂x, ∂Dz/∂z), mipmapped by the pixel's footprint (ocean.frag).
   let derivatives: Vec4Node = vec4(0, 0, 0, 0);
   layers.forEach((layer, i) => {
-    const uv = layerUv(layer, rest);
     const map = layer.textures.derivatives.value as Texture;
     if (i !== largest) {
-      derivatives = derivatives.add(texture(map, uv));
+      derivatives = derivatives.add(texture(map, uvs[i]));
       return;
     }
-    derivatives = derivatives.add(texture(map, uv).mul(blendAtFragment.x)).add(texture(map, uv.add(copyOffset)).mul(blendAtFragment.y));
+    derivatives = derivatives.add(texture(map, uvs[i]).mul(blendAtFragment.x)).add(texture(map, uvs[i].add(copyOffset)).mul(blendAtFragment.y));
   });
   material.colorNode = Fn(() => {
+    // The slopes this pixel's normal does not show (seaLighting.glsl), from the rest point's change to
+    // the next pixel: taken first, as ocean.frag does, since derivatives need the whole 2×2 quad.
+    const slopeVariance = subPixelSlopeVariance(lighting, footprintLevel(dFdx(restAtFragment), dFdy(restAtFragment))).toVar();
+    // Each point of the rest plane is drawn by one ring: a ring drops its overlap with the one inside (ocean.frag).
+    const fromInner = abs(restAtFragment.sub(innerRing.xy));
+    Discard(max(fromInner.x, fromInner.y).lessThan(innerRing.z));
     const slopes = derivatives.xy.add(blendSlopeAtFragment);
     const stretch = derivatives.zw.mul(choppiness);
     // choppyNormal.glsl: ∂P/∂z0 × ∂P/∂x0 with ∂P/∂x0 = (1 + λ∂Dx/∂x, ∂h/∂x, λ∂Dx/∂z), ∂P/∂z0 = (λ∂Dx/∂z, ∂h/∂z, 1 + λ∂Dz/∂z).
     const alongX = vec3(stretch.x.add(1), slopes.x, crossDerivative);
     const alongZ = vec3(crossDerivative, slopes.y, stretch.y.add(1));
-    const normal = normalize(cross(alongZ, alongX));
     const view = normalize(positionWorld.sub(cameraPosition));
-    const reflectance = fresnelReflectance(view.dot(normal).negate(), float(1), uniforms.ior);
-    const reflected = reflect(view, normal).toVar();
-    // A ray reflected downwards would hit the next wave: mirrored up (ocean.frag).
-    reflected.y.assign(abs(reflected.y));
-    return mix(uniforms.scatterColor, skyRadiance(uniforms, reflected), reflectance);
+    const normal = facingEye(view, normalize(cross(alongZ, alongX))).toVar();
+    const [air, water] = [float(1), uniforms.ior];
+    const sky = uniforms.sky;
+    const skyRadiance = (direction: Vec3Node) => analyticSkyRadiance(sky, direction);
+    // ocean.frag's full shading, without what is not drawn here yet (scene reflections and refractions, foam, spray).
+    const reflection = filteredSkyReflection(view, normal, slopeVariance, air, water, skyRadiance);
+    const reflectance = reflection.reflectance.toVar();
+    const refracted = refract(view, normal, air.div(water));
+    const deepWater = uniforms.scatterColor.mul(sky.daylight);
+    const below = throughWater(skyRadiance(refracted), refracted, uniforms.absorption, deepWater, VIEW_DEPTH);
+    const caustic = causticBrightness(normal, sky.sunDirection, water.div(air), uniforms.causticPower);
+    const sunLight = vec3(...SEA_SUN_COLOR).mul(sky.sunVisibility);
+    const glint = sunLight.mul(sunGlint(view, normal, sky.sunDirection, slopeVariance, air, water));
+    const crest = crestGlow(view, normal, sky.sunDirection, positionWorld.y, lighting.heightRms, reflectance, sunLight, uniforms.scatterColor);
+    return reflection.radiance.mul(reflectance).add(below.mul(float(1).sub(reflectance))).add(uniforms.causticColor.mul(caustic.mul(sky.sunVisibility))).add(glint).add(crest);
   })();
   return material;
 }
 
 /**
  * The sky behind everything: a unit sphere seen from inside, drawn first without depth, at the far
- * plane in every direction from the eye (so any camera's far plane holds it), shaded by skyRadiance.
+ * plane in every direction from the eye (so any camera's far plane holds it), shaded as the WebGL
+ * Ocean's SkyBackground (background.frag, skyNodes.ts).
  */
 export function skyMaterial(uniforms: SeaUniforms): MeshBasicNodeMaterial {
   const material = new MeshBasicNodeMaterial({ side: BackSide, depthTest: false, depthWrite: false });
@@ -188,6 +177,8 @@ export function skyMaterial(uniforms: SeaUniforms): MeshBasicNodeMaterial {
     // Just inside the far plane: z = w would be clipped by rounding.
     return vec4(clip.x, clip.y, clip.w.mul(0.99999), clip.w);
   })();
-  material.colorNode = skyRadiance(uniforms, normalize(varying(direction)));
+  // background.frag with backgroundWater 'none', as the WebGL Ocean draws it for an eye above the
+  // waves: the environment in every direction (the eye at or under the surface is not drawn here yet).
+  material.colorNode = analyticSkyRadiance(uniforms.sky, normalize(varying(direction)));
   return material;
 }

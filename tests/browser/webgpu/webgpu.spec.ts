@@ -60,6 +60,55 @@ function changed(a: Picture, b: Picture, from: number, to: number): number {
   return count / ((to - from) * a.width);
 }
 
+/** Writes an RGBA picture { width, height, data } as a PNG under .tmp/ and returns it decoded. */
+function savePicture({ width, height, data }: { width: number; height: number; data: number[] }, name: string): Picture {
+  const png = new PNG({ width, height });
+  png.data.set(data);
+  writeFileSync(`.tmp/${name}.png`, PNG.sync.write(png));
+  return png;
+}
+
+/**
+ * How far picture `a` is from `b`: the mean absolute difference of the RGB levels, the share of
+ * pixels whose every channel is within 8 levels (and the number beyond), and the largest difference; also writes the
+ * difference (|a − b| × 8, so a 32-level miss is white) as a PNG.
+ */
+function pictureDifference(a: Picture, b: Picture, name: string, fromRow = 0, toRow = a.height): { mean: number; within8: number; beyond8: number; worst: number } {
+  const difference = new PNG({ width: a.width, height: a.height });
+  let sum = 0;
+  let within = 0;
+  let worst = 0;
+  for (let p = fromRow * a.width; p < toRow * a.width; p++) {
+    let largest = 0;
+    for (let c = 0; c < 3; c++) {
+      const d = Math.abs(a.data[4 * p + c] - b.data[4 * p + c]);
+      sum += d;
+      largest = Math.max(largest, d);
+      difference.data[4 * p + c] = Math.min(255, 8 * d);
+    }
+    difference.data[4 * p + 3] = 255;
+    if (largest <= 8) within++;
+    worst = Math.max(worst, largest);
+  }
+  writeFileSync(`.tmp/${name}.png`, PNG.sync.write(difference));
+  const count = (toRow - fromRow) * a.width;
+  return { mean: sum / (3 * count), within8: within / count, beyond8: count - within, worst };
+}
+
+/** The WebGL Ocean's pictures of the compared views, drawn on the WebGL2 backend's page before any WebGPU device lives. */
+const webglReferences: Record<string, Picture> = {};
+const COMPARED = { t: 2, width: 480, height: 270 };
+/** The views compared, each with the bounds its picture reaches now (whole picture). */
+const COMPARED_VIEWS = [
+  { name: 'the default view', file: 'default', options: {}, meanBound: 0.3, within8Bound: 0.999 },
+  // The sun 12° up straight ahead (azimuth −90°: towards −z), its glint on the sea below it.
+  { name: 'the sun ahead and its glint', file: 'glint', options: { sunElevation: 12, sunAzimuth: -90 }, meanBound: 0.3, within8Bound: 0.999 },
+  // Half overcast, the sun low behind the camera: the CIE overcast sky mixed in, the sun's light dimmed.
+  { name: 'a half-overcast sky', file: 'cloud', options: { cloudCover: 0.5, sunElevation: 20, sunAzimuth: 90 }, meanBound: 0.3, within8Bound: 0.999 },
+  // 36 km from the origin: the rings follow the camera and the sea still reaches the horizon.
+  { name: 'the default view 36 km away', file: 'far', options: { at: [30_000, -20_000] as [number, number] }, meanBound: 0.3, within8Bound: 0.999 },
+];
+
 function backendTests(backend: 'webgl' | 'webgpu'): void {
   test.describe(`WebGPURenderer, ${backend === 'webgl' ? 'WebGL2 backend (forceWebGL)' : 'WebGPU backend'}`, () => {
     test('gets the backend asked for', async () => {
@@ -92,8 +141,28 @@ function backendTests(backend: 'webgl' | 'webgpu'): void {
       expect(moved).toBeGreaterThan(0.3); // the waves move
     });
 
+    for (const view of COMPARED_VIEWS) {
+      test(`draws ${view.name} as the WebGL Ocean draws it`, async () => {
+        const { t, width, height } = COMPARED;
+        const compared = { ...COMPARED, options: view.options };
+        // The WebGL Ocean's picture, made once, here: a WebGLRenderer made later, beside a live WebGPU device, would drop it.
+        const reference = (webglReferences[view.name] ??= savePicture(await page.evaluate((v) => window.webgpuOcean.drawWebGLView(v.t, v.width, v.height, v.options), compared), `compare-${view.file}-webgl-ocean`));
+        const drawn = savePicture(await page.evaluate((v) => window.webgpuOcean.drawView(v.t, v.width, v.height, v.options), compared), `compare-${view.file}-webgpu-ocean-${backend}`);
+        const whole = pictureDifference(drawn, reference, `compare-${view.file}-difference-${backend}`);
+        // The sky alone: the rows above the horizon (row ~117 of 270: 4 m up, looking 4.3° down in a 60° field).
+        const sky = pictureDifference(drawn, reference, `compare-${view.file}-difference-sky-${backend}`, 0, 100);
+        const figures = (f: typeof sky) => `mean |Δ| ${f.mean.toFixed(2)} levels, ${(100 * f.within8).toFixed(3)} % of pixels within 8 levels (${f.beyond8} beyond), worst ${f.worst}`;
+        console.log(`${backend}, ${view.name}: WebGPU Ocean against WebGL Ocean at ${width}×${height}, t = ${t} s: whole picture ${figures(whole)}; sky rows 0–99 ${figures(sky)}`);
+        // What the twin reaches now (the issue's target: 1 level, 99.9 %); tightened as it improves.
+        expect(sky.mean).toBeLessThan(1);
+        expect(sky.within8).toBe(1);
+        expect(whole.mean).toBeLessThan(view.meanBound);
+        expect(whole.within8).toBeGreaterThan(view.within8Bound);
+      });
+    }
+
     test('draws the surface where heightAt puts it', async () => {
-      // Patches whose finest texel (40/64 m) is coarser than the grid's 0.5 m cell: every vertex
+      // Under a camera 2.5 m up the rings' finest cells are the finest texel (40/64 m): every vertex
       // samples level 0, as heightAt does, so the drawn surface differs from heightAt only by the
       // linear interpolation between vertices, which interpolationBound (webgpu.ts) bounds per pixel.
       const options = { patchSizes: [40, 231, 1337] };
@@ -141,7 +210,7 @@ test.describe('three-fft-ocean/webgpu', () => {
     expect(new Set(heights(webgpu)).size).toBe(2 * points.length); // a real sea that the new wind changed
   });
 
-  test('bad input: the wrong renderer, what is not drawn yet and a bad parameter throw clear errors', async () => {
+  test('bad input: the wrong renderer, what is not drawn yet and bad parameters throw clear errors', async () => {
     const thrown = await page.evaluate(() => window.webgpuOcean.badInputs());
     expect(thrown[0][0]).toBe('UnsupportedError');
     expect(thrown[0][1]).toContain('WebGPURenderer');
@@ -151,6 +220,14 @@ test.describe('three-fft-ocean/webgpu', () => {
     expect(thrown[2][1]).toContain('GPU FFT');
     expect(thrown[3][0]).toBe('ParameterError');
     expect(thrown[3][1]).toContain('windSpeed');
+    expect(thrown[4][0]).toBe('ParameterError');
+    expect(thrown[4][1]).toContain('sunElevation');
+    expect(thrown[5][0]).toBe('ParameterError');
+    expect(thrown[5][1]).toContain('sunDirection');
+    expect(thrown[6][0]).toBe('ParameterError');
+    expect(thrown[6][1]).toContain('cloudCover');
+    expect(thrown[7][0]).toBe('ParameterError');
+    expect(thrown[7][1]).toContain('causticPower');
   });
 });
 

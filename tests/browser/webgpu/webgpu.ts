@@ -7,11 +7,15 @@ import { MeshBasicNodeMaterial, WebGPURenderer } from 'three/webgpu';
 import { positionWorld, vec4 } from 'three/tsl';
 import { Ocean, type WebGPUOceanOptions } from '../../../src/webgpu/index';
 import { Ocean as WebGLOcean } from '../../../src/ocean';
-import { WebGLRenderer } from 'three';
+import { finestTexel } from '../../../src/render/horizonGrid';
+import { WebGLRenderer, WebGLRenderTarget } from 'three';
 
 /** A small sea for quick tests: N = 64, the JS FFT on this thread (the fields are there at once). */
-const SEA_PARAMETERS = { resolution: 64, windSpeed: 10, seed: 3 };
+const SEA_PARAMETERS = { resolution: 64, windSpeed: 10, seed: 3, foamAmount: 0 };
 const SEA: WebGPUOceanOptions = { ...SEA_PARAMETERS, worker: false };
+
+/** A compared view: where the sun is (the default's where left out), and the camera's (x, z) (the origin's). */
+type ViewOptions = Pick<WebGPUOceanOptions, 'sunElevation' | 'sunAzimuth' | 'cloudCover'> & { at?: [number, number] };
 
 let renderer: WebGPURenderer | null = null;
 
@@ -33,34 +37,80 @@ async function open(backend: 'webgl' | 'webgpu'): Promise<{ isWebGPUBackend: boo
   return { isWebGPUBackend, reason };
 }
 
-/**
- * The default view, 4 m over the sea looking slightly down towards −z, at time t, drawn into an
- * sRGB 8-bit target of the canvas's size and read back, rows from the top. (Into a target, not the
- * canvas: headless Chromium's SwiftShader WebGPU lost its device after presenting one frame to a
- * canvas, even of an empty scene, "A valid external Instance reference no longer exists".)
- */
-async function drawView(t: number): Promise<{ width: number; height: number; data: number[] }> {
-  const scene = new Scene();
-  const ocean = new Ocean(renderer!, SEA);
-  scene.add(ocean);
+/** The default view's camera: 4 m over the sea at (x, z) looking slightly down towards −z. */
+function viewCamera(x = 0, z = 0): PerspectiveCamera {
   const camera = new PerspectiveCamera(60, 16 / 9, 0.5, 30_000);
-  camera.position.set(0, 4, 0);
-  camera.lookAt(0, 1, -40);
-  const [width, height] = [320, 180];
-  const target = new RenderTarget(width, height);
+  camera.position.set(x, 4, z);
+  camera.lookAt(x, 1, z - 40);
+  camera.updateMatrixWorld();
+  return camera;
+}
+
+/** RGBA rows read back from a target, reordered top first (WebGL's come bottom first, WebGPU's top first). */
+function topFirst(pixels: Uint8Array, width: number, height: number, bottomFirst: boolean): number[] {
+  const data: number[] = [];
+  for (let row = 0; row < height; row++) {
+    const from = bottomFirst ? height - 1 - row : row;
+    data.push(...pixels.subarray(4 * width * from, 4 * width * (from + 1)));
+  }
+  return data;
+}
+
+/** An sRGB 8-bit picture of `width` × `height` pixels: what both Oceans are read back from. */
+function pictureTarget<T extends RenderTarget | WebGLRenderTarget>(Target: new (w: number, h: number) => T, width: number, height: number): T {
+  const target = new Target(width, height);
   target.texture.colorSpace = SRGBColorSpace;
+  return target;
+}
+
+/**
+ * The default view of the WebGPU Ocean at time t, drawn into an sRGB 8-bit target of width ×
+ * height and read back, rows from the top. (Into a target, not the canvas: headless Chromium's
+ * SwiftShader WebGPU lost its device after presenting one frame to a canvas, even of an empty
+ * scene, "A valid external Instance reference no longer exists".)
+ */
+async function drawView(t: number, width = 320, height = 180, { at = [0, 0], ...sun }: ViewOptions = {}): Promise<{ width: number; height: number; data: number[] }> {
+  const scene = new Scene();
+  const ocean = new Ocean(renderer!, { ...SEA, ...sun });
+  scene.add(ocean);
+  const target = pictureTarget(RenderTarget, width, height);
   ocean.update(t);
   renderer!.setRenderTarget(target);
-  renderer!.render(scene, camera);
+  renderer!.render(scene, viewCamera(...at));
   renderer!.setRenderTarget(null);
   const pixels = (await renderer!.readRenderTargetPixelsAsync(target, 0, 0, width, height)) as Uint8Array;
   target.dispose();
   ocean.dispose();
-  // WebGL's rows come bottom first, WebGPU's top first.
   const bottomFirst = !(renderer!.backend as { isWebGPUBackend?: boolean }).isWebGPUBackend;
-  const data: number[] = [];
-  for (let row = 0; row < height; row++) data.push(...pixels.subarray(4 * width * (bottomFirst ? height - 1 - row : row), 4 * width * ((bottomFirst ? height - 1 - row : row) + 1)));
-  return { width, height, data };
+  return { width, height, data: topFirst(pixels, width, height, bottomFirst) };
+}
+
+/**
+ * The same view of the same sea under the same sun drawn by the WebGL Ocean on a WebGLRenderer, with what the WebGPU
+ * Ocean does not draw yet left out of both (foam; scene reflections and refractions, which show
+ * the sky here anyway), no tone mapping as in open(). Only while no WebGPU device lives in the
+ * page (see the spec).
+ */
+function drawWebGLView(t: number, width: number, height: number, { at = [0, 0], ...sun }: ViewOptions = {}): { width: number; height: number; data: number[] } {
+  const gl = new WebGLRenderer({ antialias: false });
+  gl.toneMapping = NoToneMapping;
+  gl.setPixelRatio(1);
+  gl.setSize(width, height);
+  const ocean = new WebGLOcean(gl, { ...SEA_PARAMETERS, path: 'js', worker: false, localWaves: false, reflections: 'sky', refractions: 'sky', ...sun });
+  const scene = new Scene();
+  scene.add(ocean);
+  const camera = viewCamera(...at);
+  const target = pictureTarget(WebGLRenderTarget, width, height);
+  ocean.update(t, camera);
+  gl.setRenderTarget(target);
+  gl.render(scene, camera);
+  const pixels = new Uint8Array(4 * width * height);
+  gl.readRenderTargetPixels(target, 0, 0, width, height, pixels);
+  gl.setRenderTarget(null);
+  target.dispose();
+  ocean.dispose();
+  gl.dispose();
+  return { width, height, data: topFirst(pixels, width, height, true) };
 }
 
 /**
@@ -84,8 +134,10 @@ async function heightAgreement(cx: number, cz: number, side: number, t: number, 
   ocean.getObjectByName('OceanWebGPU sky')!.visible = false;
   const size = 64;
   const target = new RenderTarget(size, size, { type: FloatType });
-  const camera = new OrthographicCamera(-side / 2, side / 2, side / 2, -side / 2, 1, 200);
-  camera.position.set(cx, 100, cz);
+  // 2.5 m up: the rings' finest cells are then the finest texel (finestRingLevel in horizonGrid.ts,
+  // 32 cells a ring), and ring 0 covers ±10 m around the camera, the whole square.
+  const camera = new OrthographicCamera(-side / 2, side / 2, side / 2, -side / 2, 0.01, 10);
+  camera.position.set(cx, 2.5, cz);
   camera.up.set(0, 0, -1);
   camera.lookAt(cx, 0, cz);
   renderer!.setRenderTarget(target);
@@ -103,7 +155,7 @@ async function heightAgreement(cx: number, cz: number, side: number, t: number, 
     drawn.push(y);
     const h = ocean.heightAt(x, z);
     queried.push(h);
-    bound.push(interpolationBound(ocean, x, z, h));
+    bound.push(interpolationBound(ocean, x, z, h, finestTexel(ocean.waveLayers)));
     sumSquares += y * y;
   }
   surface.material = shaded;
@@ -117,18 +169,18 @@ async function heightAgreement(cx: number, cz: number, side: number, t: number, 
  * How far the drawn triangles may lie from the surface at (x, z): the mesh is linear between
  * vertices, and linear interpolation over an edge of length L misses a function by at most
  * L²/8·max|f''| along it (the remainder of linear interpolation, e.g. Burden & Faires, Numerical
- * Analysis, Theorem 3.3). L is the cell's diagonal, √2·0.5 m (seaGrid.ts' near cells), stretched by
+ * Analysis, Theorem 3.3). L is the diagonal of a cell `cell` m wide, stretched by
  * up to 1.5 where the choppy displacement pulls vertices apart; f'' is heightAt's second difference
  * over half a metre along x, z and both diagonals, the largest of the four.
  */
-function interpolationBound(ocean: Ocean, x: number, z: number, h: number): number {
+function interpolationBound(ocean: Ocean, x: number, z: number, h: number, cell: number): number {
   const step = 0.5;
   let curvature = 0;
   for (const [dx, dz] of [[1, 0], [0, 1], [Math.SQRT1_2, Math.SQRT1_2], [Math.SQRT1_2, -Math.SQRT1_2]]) {
     const second = (ocean.heightAt(x + step * dx, z + step * dz) - 2 * h + ocean.heightAt(x - step * dx, z - step * dz)) / (step * step);
     curvature = Math.max(curvature, Math.abs(second));
   }
-  const edge = 1.5 * Math.SQRT2 * 0.5;
+  const edge = 1.5 * Math.SQRT2 * cell;
   return (edge * edge * curvature) / 8;
 }
 
@@ -185,6 +237,10 @@ function badInputs(): [string, string][] {
     () => new Ocean(renderer!, { reflections: 'scene' }),
     () => new Ocean(renderer!, { path: 'gpu' }),
     () => new Ocean(renderer!, { windSpeed: -1 }),
+    () => new Ocean(renderer!, { sunElevation: 100 }),
+    () => new Ocean(renderer!, { sunDirection: [0, 1, 0], sunAzimuth: 10 }),
+    () => new Ocean(renderer!, { cloudCover: 2 }),
+    () => new Ocean(renderer!, { causticPower: 0 }),
   ];
   const thrown = attempts.map((attempt): [string, string] => {
     try {
@@ -198,7 +254,7 @@ function badInputs(): [string, string][] {
   return thrown;
 }
 
-const harness = { open, drawView, heightAgreement, sameQueriesAsWebGL, memoryCycle, badInputs };
+const harness = { open, drawView, drawWebGLView, heightAgreement, sameQueriesAsWebGL, memoryCycle, badInputs };
 declare global {
   interface Window {
     webgpuOcean: typeof harness;
