@@ -35,6 +35,7 @@ import { createCascadeSpectra } from '../spectrum/initialSpectrum';
 import { seaGridGeometry } from './seaGrid';
 import { seaMaterial, skyMaterial, type SeaUniforms } from './seaNodes';
 import { checkCoordinates } from '../oceanQueries';
+import { checkRenderer } from '../device/deviceFor';
 
 export interface WebGPUOceanOptions extends Partial<SimulationParameters> {
   /** Refractive index of water n_w, (1, 3] (ShadingOptions.ior). @defaultValue 1.333 */
@@ -226,10 +227,7 @@ export class Ocean extends Object3D {
  * the queries do: without filtering it would differ from heightAt, so that is refused.
  */
 function floatTextureSupport(renderer: WebGPURenderer): FloatTextureSupport {
-  const candidate = renderer as Partial<WebGPURenderer> | null;
-  if (candidate?.isWebGPURenderer !== true) {
-    throw new UnsupportedError('renderer', "three-fft-ocean/webgpu's Ocean draws with three's WebGPURenderer (three/webgpu); for a WebGLRenderer use the Ocean of three-fft-ocean");
-  }
+  checkRenderer(renderer, 'three-fft-ocean/webgpu');
   if (!renderer.initialized) throw new UnsupportedError('renderer', 'the WebGPURenderer is not initialized yet: await renderer.init() before making the Ocean');
   const backend = renderer.backend as { isWebGPUBackend?: boolean };
   const filterable = backend.isWebGPUBackend
