@@ -77,6 +77,20 @@ const NOT_YET: Record<string, { drawn: unknown; missing: string }> = {
   cloudCover: { drawn: undefined, missing: 'the analytic sky (cloudCover)' },
 };
 
+/**
+ * The options in `options` that ask for what this Ocean does not draw yet, each with what is
+ * missing in words: the constructor refuses the first; <fft-ocean renderer="webgpu"> and the app
+ * leave them out and say so.
+ */
+export function notDrawnYet(options: object): { name: string; missing: string }[] {
+  return Object.entries(NOT_YET)
+    .filter(([name, { drawn }]) => {
+      const value = (options as Record<string, unknown>)[name];
+      return value !== undefined && !(name === 'path' && value === 'auto') && value !== drawn;
+    })
+    .map(([name, { missing }]) => ({ name, missing }));
+}
+
 const SIMULATION_KEYS = Object.keys(SIMULATION_OPTIONS) as (keyof SimulationParameters)[];
 const OPTION_KEYS: readonly string[] = [...SIMULATION_KEYS, 'ior', 'scatterColor', 'horizonColor', 'zenithColor', 'worker', ...Object.keys(NOT_YET)];
 
@@ -107,12 +121,8 @@ export class Ocean extends Object3D {
     this.name = 'OceanWebGPU';
     this.support = floatTextureSupport(renderer);
     checkOptionNames(options, OPTION_KEYS, 'options', { allowed: 'an object of options, such as { windSpeed: 12 }' });
-    for (const [name, { drawn, missing }] of Object.entries(NOT_YET)) {
-      const value = (options as Record<string, unknown>)[name];
-      if (value !== undefined && !(name === 'path' && value === 'auto') && value !== drawn) {
-        throw new UnsupportedError(name, `three-fft-ocean/webgpu does not draw ${missing} yet; use the WebGL Ocean (three-fft-ocean) for it`);
-      }
-    }
+    const [first] = notDrawnYet(options);
+    if (first) throw new UnsupportedError(first.name, `three-fft-ocean/webgpu does not draw ${first.missing} yet; use the WebGL Ocean (three-fft-ocean) for it`);
     const simulation: Partial<SimulationParameters> = {};
     for (const key of SIMULATION_KEYS) if (options[key] !== undefined) (simulation as Record<string, unknown>)[key] = options[key];
     this.parameters = validateParameters(simulation);
