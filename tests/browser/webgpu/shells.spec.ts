@@ -191,3 +191,36 @@ test('without WebGPU, <fft-ocean renderer="webgpu"> draws on the WebGL2 backend 
   expect(freed).toMatchObject({ oceanDisposed: true, canvasGone: true, heldAfter: false });
   expect(log.errors).toEqual([]);
 });
+
+test('the app with ?renderer=webgpu and no WebGPU draws the sea on the WebGL2 backend, says so, and turns off what it cannot draw yet', async ({ page }) => {
+  await page.setViewportSize({ width: 640, height: 360 });
+  const log = await open(page, '/?renderer=webgpu&resolution=64&sunElevation=12&buoys=1&paused=1&t=3', true);
+  await page.waitForFunction(() => (window.oceanAppWebGPU?.framesDrawn ?? 0) >= 2, undefined, { timeout: 60_000 });
+  const app = await page.evaluate(() => ({
+    backend: window.oceanAppWebGPU.backend,
+    notDrawn: window.oceanAppWebGPU.notDrawn.map(({ name }) => name),
+    status: document.querySelector('.status-line')!.textContent,
+    notices: [...document.querySelectorAll('.notice')].map((notice) => (notice as HTMLElement).dataset.parameter),
+  }));
+  expect(app.backend).toBe('WebGL2');
+  expect(app.status).toBe('WebGPURenderer, WebGL2 backend (this browser has no WebGPU (navigator.gpu is undefined)) · three-fft-ocean/webgpu · FFT: JS (main thread)');
+  expect(app.notDrawn).toEqual(['sunElevation']);
+  expect(app.notices).toEqual(['buoys', 'sunElevation']);
+  await page.screenshot({ path: '.tmp/shells-app-webgl2-backend.png' });
+  const png = PNG.sync.read(await page.locator('#app canvas').screenshot());
+  const sky = rows(png, 0, Math.round(png.height * 0.3));
+  const sea = rows(png, Math.round(png.height * 0.7), png.height);
+  console.log(`app, WebGL2 backend ${png.width}×${png.height}: sky mean luma ${sky.mean.toFixed(1)}, sea mean ${sea.mean.toFixed(1)} spread ${sea.spread.toFixed(1)}`);
+  expect(sky.mean).toBeGreaterThan(60);
+  expect(sea.mean).toBeLessThan(sky.mean);
+  expect(sea.spread).toBeGreaterThan(5);
+  expect(log.errors).toEqual([]);
+});
+
+test('the app with ?renderer=webgpu opens on the WebGPU backend without page errors', async ({ page }) => {
+  const log = await open(page, '/?renderer=webgpu&resolution=64');
+  await page.waitForFunction(() => (window.oceanAppWebGPU?.framesDrawn ?? 0) >= 1, undefined, { timeout: 60_000 });
+  const app = await page.evaluate(() => ({ backend: window.oceanAppWebGPU.backend, notDrawn: window.oceanAppWebGPU.notDrawn, status: document.querySelector('.status-line')!.textContent }));
+  expect(app).toEqual({ backend: 'WebGPU', notDrawn: [], status: 'WebGPURenderer, WebGPU backend · three-fft-ocean/webgpu · FFT: JS (main thread)' });
+  expect(log.errors).toEqual([]);
+});
