@@ -5,6 +5,6 @@
  * and what not yet. This file only re-exports.
  * @module three-fft-ocean/webgpu
  */
-export { notDrawnYet, Ocean, WEBGPU_OCEAN_DEFAULTS, type WebGPUOceanOptions } from './ocean';
+export { Ocean, WEBGPU_OCEAN_DEFAULTS, type WebGPUOceanOptions } from './ocean';
 export { DisposedError, UnsupportedError } from '../parameters/options';
 export { ParameterError } from '../parameters/parameters';
