@@ -52,6 +52,20 @@ function rows(png: InstanceType<typeof PNG>, from: number, to: number): { mean: 
   return { mean: total / (to - from), spread: spreads / (to - from) };
 }
 
+/**
+ * Expects `png` to be a lit sky over darker water with waves: the top 30 % of rows against the
+ * bottom 30 %; logs the figures under `label`.
+ */
+function expectSkyOverWaves(png: InstanceType<typeof PNG>, label: string): void {
+  const sky = rows(png, 0, Math.round(png.height * 0.3));
+  const sea = rows(png, Math.round(png.height * 0.7), png.height);
+  console.log(`${label} ${png.width}×${png.height}: sky mean luma ${sky.mean.toFixed(1)}, sea mean ${sea.mean.toFixed(1)} spread ${sea.spread.toFixed(1)}`);
+  expect(sky.mean).toBeGreaterThan(60); // a lit sky, not black
+  expect(sea.mean).toBeGreaterThan(5);
+  expect(sea.mean).toBeLessThan(sky.mean); // darker water under the sky
+  expect(sea.spread).toBeGreaterThan(5); // waves along the rows, not a smooth gradient
+}
+
 /** An RGBA picture (rows from the top) as a PNG, saved under .tmp/ to be looked at. */
 function picture(width: number, height: number, data: number[], name: string): InstanceType<typeof PNG> {
   const png = new PNG({ width, height });
@@ -137,14 +151,7 @@ test('<fft-ocean renderer="webgpu"> holds WebGPURenderer on its WebGPU backend a
   const view = await webgpuElement(page, {}, true);
   expect(view.status).toEqual({ renderer: 'webgpu', backend: 'WebGPU', fallback: null, notDrawn: [] });
   expect(view.framesDrawn).toBe(0); // below the fold: it holds its renderer and does not draw
-  const png = picture(view.width, view.height, view.data, 'shells-element-webgpu');
-  const sky = rows(png, 0, Math.round(view.height * 0.3));
-  const sea = rows(png, Math.round(view.height * 0.7), view.height);
-  console.log(`element, WebGPU backend ${view.width}×${view.height}: sky mean luma ${sky.mean.toFixed(1)}, sea mean ${sea.mean.toFixed(1)} spread ${sea.spread.toFixed(1)}`);
-  expect(sky.mean).toBeGreaterThan(60); // a lit sky, not black
-  expect(sea.mean).toBeGreaterThan(5);
-  expect(sea.mean).toBeLessThan(sky.mean); // darker water under the sky
-  expect(sea.spread).toBeGreaterThan(5); // waves along the rows, not a smooth gradient
+  expectSkyOverWaves(picture(view.width, view.height, view.data, 'shells-element-webgpu'), 'element, WebGPU backend');
   const freed = await removeElement(page);
   expect(freed).toEqual({ oceanDisposed: true, canvasGone: true, heldAfter: false, deviceLost: 'destroyed' });
   expect(log.errors).toEqual([]);
@@ -160,13 +167,7 @@ test('without WebGPU, <fft-ocean renderer="webgpu"> draws on the WebGL2 backend 
   expect(view.status.notDrawn.map(({ name }) => name)).toEqual(['sunElevation', 'boat']);
   expect(log.infos.filter((text) => text.includes('WebGL2 backend'))).toEqual(['three-fft-ocean/webgpu: this browser has no WebGPU (navigator.gpu is undefined): WebGPURenderer draws with its WebGL2 backend.']);
   expect(log.warnings.some((text) => text.startsWith('<fft-ocean renderer="webgpu">: left out') && text.includes('sunElevation') && text.includes('boat'))).toBe(true);
-  const png = picture(view.width, view.height, view.data, 'shells-element-webgl2-backend');
-  const sky = rows(png, 0, Math.round(view.height * 0.3));
-  const sea = rows(png, Math.round(view.height * 0.7), view.height);
-  console.log(`element, WebGL2 backend ${view.width}×${view.height}: sky mean luma ${sky.mean.toFixed(1)}, sea mean ${sea.mean.toFixed(1)} spread ${sea.spread.toFixed(1)}`);
-  expect(sky.mean).toBeGreaterThan(60);
-  expect(sea.mean).toBeLessThan(sky.mean);
-  expect(sea.spread).toBeGreaterThan(5);
+  expectSkyOverWaves(picture(view.width, view.height, view.data, 'shells-element-webgl2-backend'), 'element, WebGL2 backend');
   // The canvas itself shows it too (the WebGL2 backend presents to a canvas here).
   await page.locator('fft-ocean').screenshot({ path: '.tmp/shells-element-webgl2-canvas.png' });
   // A new wind speed makes a new Ocean, with another sea at the same time.
@@ -207,13 +208,7 @@ test('the app with ?renderer=webgpu and no WebGPU draws the sea on the WebGL2 ba
   expect(app.notDrawn).toEqual(['sunElevation']);
   expect(app.notices).toEqual(['buoys', 'sunElevation']);
   await page.screenshot({ path: '.tmp/shells-app-webgl2-backend.png' });
-  const png = PNG.sync.read(await page.locator('#app canvas').screenshot());
-  const sky = rows(png, 0, Math.round(png.height * 0.3));
-  const sea = rows(png, Math.round(png.height * 0.7), png.height);
-  console.log(`app, WebGL2 backend ${png.width}×${png.height}: sky mean luma ${sky.mean.toFixed(1)}, sea mean ${sea.mean.toFixed(1)} spread ${sea.spread.toFixed(1)}`);
-  expect(sky.mean).toBeGreaterThan(60);
-  expect(sea.mean).toBeLessThan(sky.mean);
-  expect(sea.spread).toBeGreaterThan(5);
+  expectSkyOverWaves(PNG.sync.read(await page.locator('#app canvas').screenshot()), 'app, WebGL2 backend');
   expect(log.errors).toEqual([]);
 });
 
