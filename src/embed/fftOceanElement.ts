@@ -284,7 +284,6 @@ export class FftOceanElement extends ElementBase {
       return;
     }
     this.begin(created);
-    this.showBoat(created);
   }
 
   /**
@@ -314,15 +313,16 @@ export class FftOceanElement extends ElementBase {
     const { notDrawn } = live.status;
     if (notDrawn.length > 0) console.warn(`<fft-ocean renderer="webgpu">: left out, not drawn by the WebGPU Ocean yet: ${notDrawn.map(({ name, missing }) => `${name} (${missing})`).join('; ')}`);
     this.dispatchEvent(new CustomEvent('fft-ocean-renderer', { detail: this.rendererStatus }));
-    this.frames.invalidate();
   }
 
-  /** Puts the new live parts in the page and starts drawing them. */
+  /** Puts the new live parts in the page (the boat too, before the first frame) and starts drawing them. */
   private begin(live: Live | WebGPULive): void {
     this.root.append(live.canvas);
     this.live = live;
     this.frames.applyQuality(live);
     this.proximity.hold();
+    if (live.kind === 'webgl') this.showBoat(live);
+    else this.frames.invalidate();
     this.frames.loop.restart();
     this.frames.resize();
     live.resizeObserver.observe(this);
