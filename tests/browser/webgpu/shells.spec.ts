@@ -193,6 +193,40 @@ test('without WebGPU, <fft-ocean renderer="webgpu"> draws on the WebGL2 backend 
   expect(log.errors).toEqual([]);
 });
 
+test('a changed renderer attribute makes the renderer again: WebGL to WebGPURenderer (its WebGL2 backend here), the WebGL context given back; a bad value is refused by name', async ({ page }) => {
+  const log = await open(page, '/tests/browser/embed/embed.html', true);
+  await expect(page).toHaveTitle('ready');
+  const result = await page.evaluate(async () => {
+    const el = window.embed.create({ resolution: '64' });
+    await window.embed.drawn(el, 1);
+    const webglContext = el.renderer!.getContext();
+    const started = new Promise<RendererStatus>((resolve) => el.addEventListener('fft-ocean-renderer', (event) => resolve((event as CustomEvent<RendererStatus>).detail)));
+    el.setAttribute('renderer', 'webgpu');
+    const status = await started;
+    const framesBefore = el.frameCount;
+    await window.embed.drawn(el, framesBefore + 2);
+    el.setAttribute('renderer', 'vulkan');
+    return {
+      status,
+      webglContextLost: webglContext.isContextLost(),
+      webgl: el.renderer === null && el.ocean === null && el.output === null,
+      webgpu: el.webgpuRenderer !== null && el.webgpuOcean !== null,
+      canvases: el.shadowRoot!.querySelectorAll('canvas').length,
+      statusAfterBadValue: el.rendererStatus?.renderer,
+    };
+  });
+  expect(result).toEqual({
+    status: { renderer: 'webgpu', backend: 'WebGL2', fallback: 'this browser has no WebGPU (navigator.gpu is undefined)', notDrawn: [] },
+    webglContextLost: true,
+    webgl: true,
+    webgpu: true,
+    canvases: 1,
+    statusAfterBadValue: 'webgpu',
+  });
+  expect(log.warnings).toContain(`<fft-ocean>: ignoring renderer="vulkan": renderer must be 'webgl' or 'webgpu'; got "vulkan"; keeping webgpu`);
+  expect(log.errors).toEqual([]);
+});
+
 test('the app with ?renderer=webgpu and no WebGPU draws the sea on the WebGL2 backend, says so, and turns off what it cannot draw yet', async ({ page }) => {
   await page.setViewportSize({ width: 640, height: 360 });
   const log = await open(page, '/?renderer=webgpu&resolution=64&sunElevation=12&buoys=1&paused=1&t=3', true);
