@@ -20,7 +20,8 @@ import { SkyEnvironment, sunAngles, type SunDirection } from './render/skyEnviro
 import { OceanSimulation, type PathPreference, type SimulationOptions, type SimulationPath } from './layers/oceanSimulation';
 import type { LocalWaves } from './layers/localWaves';
 import type { WaveLayer } from './layers/waveLayer';
-import { checkThreeRelease, checkWebGLRenderer } from './threeRelease';
+import { checkThreeRelease } from './threeRelease';
+import { checkRenderer } from './device/deviceFor';
 import { heightAt, normalAt, velocityAt } from './layers/surfaceQuery';
 import { checkCoordinates, surfaceHeightAt, surfaceHeightsAt, surfaceNormalAt, surfaceVectorsAt, surfaceVelocityAt, warmUpQueries } from './oceanQueries';
 import { SeaStatistics } from './oceanStatistics';
@@ -133,7 +134,7 @@ export class Ocean extends Object3D<OceanEventMap> {
   ) {
     super();
     checkThreeRelease();
-    checkWebGLRenderer(renderer);
+    checkRenderer(renderer, 'three-fft-ocean');
     this.name = 'Ocean';
     checkOptionNames(options, OCEAN_OPTION_KEYS, 'options', { aliases: SHADING_ALIASES, allowed: 'an object of options, such as { windSpeed: 12 }' });
     const simulationParameters = pick(options, SIMULATION_KEYS);

@@ -41,6 +41,7 @@ import { seaMaterial, skyMaterial, type SeaUniforms } from './seaNodes';
 import { skyUniforms } from './skyNodes';
 import { seaLightingValues } from '../render/seaLighting';
 import { checkCoordinates } from '../oceanQueries';
+import { checkRenderer } from '../device/deviceFor';
 
 export interface WebGPUOceanOptions extends Partial<SimulationParameters> {
   /** Refractive index of water n_w, (1, 3] (ShadingOptions.ior). @defaultValue 1.333 */
@@ -85,6 +86,20 @@ const NOT_YET: Record<string, { drawn: unknown; missing: string }> = {
   shadingMode: { drawn: 'full', missing: "the debug shading modes (shadingMode other than 'full')" },
 };
 
+/**
+ * The options in `options` that ask for what this Ocean does not draw yet, each with what is
+ * missing in words: the constructor refuses the first; <fft-ocean renderer="webgpu"> and the app
+ * leave them out and say so.
+ */
+export function notDrawnYet(options: object): { name: string; missing: string }[] {
+  return Object.entries(NOT_YET)
+    .filter(([name, { drawn }]) => {
+      const value = (options as Record<string, unknown>)[name];
+      return value !== undefined && !(name === 'path' && value === 'auto') && value !== drawn;
+    })
+    .map(([name, { missing }]) => ({ name, missing }));
+}
+
 const SIMULATION_KEYS = Object.keys(SIMULATION_OPTIONS) as (keyof SimulationParameters)[];
 const OPTION_KEYS: readonly string[] = [...SIMULATION_KEYS, 'ior', 'scatterColor', 'absorption', 'causticPower', 'causticColor', 'worker', ...Object.keys(SUN_OPTIONS), 'sunDirection', ...Object.keys(NOT_YET)];
 
@@ -115,12 +130,8 @@ export class Ocean extends Object3D {
     this.name = 'OceanWebGPU';
     this.support = floatTextureSupport(renderer);
     checkOptionNames(options, OPTION_KEYS, 'options', { allowed: 'an object of options, such as { windSpeed: 12 }' });
-    for (const [name, { drawn, missing }] of Object.entries(NOT_YET)) {
-      const value = (options as Record<string, unknown>)[name];
-      if (value !== undefined && !(name === 'path' && value === 'auto') && value !== drawn) {
-        throw new UnsupportedError(name, `three-fft-ocean/webgpu does not draw ${missing} yet; use the WebGL Ocean (three-fft-ocean) for it`);
-      }
-    }
+    const [first] = notDrawnYet(options);
+    if (first) throw new UnsupportedError(first.name, `three-fft-ocean/webgpu does not draw ${first.missing} yet; use the WebGL Ocean (three-fft-ocean) for it`);
     const simulation: Partial<SimulationParameters> = {};
     for (const key of SIMULATION_KEYS) if (options[key] !== undefined) (simulation as Record<string, unknown>)[key] = options[key];
     this.parameters = validateParameters(simulation);
@@ -269,10 +280,7 @@ export class Ocean extends Object3D {
  * the queries do: without filtering it would differ from heightAt, so that is refused.
  */
 function floatTextureSupport(renderer: WebGPURenderer): FloatTextureSupport {
-  const candidate = renderer as Partial<WebGPURenderer> | null;
-  if (candidate?.isWebGPURenderer !== true) {
-    throw new UnsupportedError('renderer', "three-fft-ocean/webgpu's Ocean draws with three's WebGPURenderer (three/webgpu); for a WebGLRenderer use the Ocean of three-fft-ocean");
-  }
+  checkRenderer(renderer, 'three-fft-ocean/webgpu');
   if (!renderer.initialized) throw new UnsupportedError('renderer', 'the WebGPURenderer is not initialized yet: await renderer.init() before making the Ocean');
   const backend = renderer.backend as { isWebGPUBackend?: boolean };
   const filterable = backend.isWebGPUBackend
