@@ -159,6 +159,10 @@ export class Ocean extends Object3D<OceanEventMap> {
         windSpeed: sim.parameters.windSpeed,
         windDirection: sim.parameters.windDirection,
         surfaceBound: 6 * this.heightRms + 1,
+        // 1 RMS: a Gaussian surface lies below it at 16 % of points. Deeper, the reflection would
+        // hold more of what is under the water, the undersides of objects at the waterline too
+        // (docs/shores.md: a box's lone speckles on a 20 m/s sea, 40 here, 82 at 2 and 3 RMS).
+        troughDepth: this.heightRms,
         waterHeightAt: (x: number, z: number) => heightAt(sim.layers, sim.parameters.choppiness, this.currentTime, x, z, this.preparedShore()),
         shore: this.preparedShore(),
         hullFoam: sim.localWaves,
