@@ -98,8 +98,9 @@ describe('the foam model', () => {
   });
 
   it('is calibrated once per sea, choppiness and wind by OceanSimulation (JS path), not per frame', () => {
-    // A stand-in renderer: the JS path without workers or local waves asks it only for extensions.
-    const renderer = { extensions: { has: () => false } } as unknown as WebGLRenderer;
+    // A stand-in renderer: the JS path without workers or local waves asks it only for extensions
+    // (and createGpuDevice checks three's flag for a WebGLRenderer).
+    const renderer = { isWebGLRenderer: true, extensions: { has: () => false } } as unknown as WebGLRenderer;
     const simulation = new OceanSimulation(renderer, { windSpeed: 12, resolution: 64 }, { path: 'js', worker: false, localWaves: false });
     const first = simulation.foamCalibration;
     expect(first).toEqual(calibrateFoam(jacobianCovariance(simulation.spectra), 1, 12));
