@@ -19,6 +19,7 @@ test('the compute FFT equals the JS FFT and the exact transforms within 1e-5 of 
   await expect(page).toHaveTitle('ready');
   const noWebGPU = await page.evaluate(() => window.computeFft.open());
   expect(noWebGPU, 'a WebGPU backend').toBeNull();
+  const before = await page.evaluate(() => window.computeFft.storageBuffers());
   for (const n of SIZES) {
     const result = await page.evaluate(([size, naive]) => window.computeFft.compare(size, naive), [n, NAIVE_SIZES.includes(n)] as const);
     const naive = result.naive === null ? '' : `, vs naive DFT ${result.naive.toExponential(2)}`;
@@ -27,5 +28,7 @@ test('the compute FFT equals the JS FFT and the exact transforms within 1e-5 of 
     expect(result.planeWave, `N = ${n} vs the plane wave`).toBeLessThan(BOUND);
     if (result.naive !== null) expect(result.naive, `N = ${n} vs the naive DFT`).toBeLessThan(BOUND);
   }
+  // compare() disposes each FFT: its buffers are gone from the renderer.
+  expect(await page.evaluate(() => window.computeFft.storageBuffers())).toEqual(before);
   expect(errors).toEqual([]);
 });

@@ -116,6 +116,11 @@ function naiveTransform(n: number, input: Fields): Fields {
 
 const harness = {
   open,
+  /** The storage buffers the renderer holds, and their bytes (three's renderer.info). */
+  storageBuffers(): { count: number; bytes: number } {
+    const memory = renderer!.info.memory as unknown as { storageAttributes: number; storageAttributesSize: number };
+    return { count: memory.storageAttributes, bytes: memory.storageAttributesSize };
+  },
   /**
    * One compute FFT at size n of testFields(): the largest relative RMS error of the fields against
    * the JS FFT, the last field's against its exact plane wave, and, when `naive`, the largest against
