@@ -3,9 +3,16 @@
  * driven by tests/browser/fft/computeFft.spec.ts: its output against the JS FFT (src/fft/fft.ts)
  * and against exact answers (the term-by-term DFT, a plane wave), as errors relative to the RMS.
  */
-import { WebGPURenderer } from 'three/webgpu';
+import { PerspectiveCamera, Scene } from 'three';
+import { RenderTarget, WebGPURenderer, type StorageTexture } from 'three/webgpu';
+import { Ocean } from '../../../src/webgpu/index';
 import { ComputeInverseFft2D } from '../../../src/fft/computeFft';
 import { BatchedInverseFft2D } from '../../../src/fft/fft';
+import { ComputeWaveFields } from '../../../src/fft/computeWaveFields';
+import { CpuWaveFields } from '../../../src/fft/cpuWaveFields';
+import { FIELD_TEXTURES } from '../../../src/fft/waveFieldLayout';
+import { validateParameters } from '../../../src/parameters/parameters';
+import { createCascadeSpectra } from '../../../src/spectrum/initialSpectrum';
 import { SeededRandom } from '../../../src/spectrum/random';
 import { naiveInverseDft2D } from '../../unit/naiveDft';
 
@@ -116,10 +123,77 @@ function naiveTransform(n: number, input: Fields): Fields {
 
 const harness = {
   open,
-  /** The storage buffers the renderer holds, and their bytes (three's renderer.info). */
-  storageBuffers(): { count: number; bytes: number } {
-    const memory = renderer!.info.memory as unknown as { storageAttributes: number; storageAttributesSize: number };
-    return { count: memory.storageAttributes, bytes: memory.storageAttributesSize };
+  /**
+   * A cascade's fields at time t from the compute FFT (ComputeWaveFields, its textures read back)
+   * against the JS path's (CpuWaveFields), for each field texture and channel: the largest RMS of
+   * the difference over the RMS of the JS field. The first (largest) cascade of a sea of resolution n.
+   */
+  async cascadeFields(n: number, t: number): Promise<number> {
+    const [spectrum] = createCascadeSpectra(validateParameters({ resolution: n, windSpeed: 10, seed: 3 }));
+    const gpu = new ComputeWaveFields(renderer!, spectrum);
+    try {
+      gpu.update(t);
+      const js = new CpuWaveFields(spectrum);
+      js.update(t);
+      let worst = 0;
+      for (const name of FIELD_TEXTURES) {
+        const backend = renderer!.backend as unknown as { copyTextureToBuffer(texture: StorageTexture, x: number, y: number, w: number, h: number, face: number): Promise<Float32Array> };
+        const texels = await backend.copyTextureToBuffer(gpu[name], 0, 0, n, n, 0);
+        for (let channel = 0; channel < 4; channel++) {
+          let difference = 0;
+          let magnitude = 0;
+          for (let at = channel; at < 4 * n * n; at += 4) {
+            difference += (texels[at] - js[name][at]) ** 2;
+            magnitude += js[name][at] ** 2;
+          }
+          worst = Math.max(worst, Math.sqrt(difference / magnitude));
+        }
+      }
+      return worst;
+    } finally {
+      gpu.dispose();
+    }
+  },
+  /**
+   * The WebGPU Ocean with path 'gpu' against path 'js' (the same small sea, N = 64, at time t): the
+   * mean difference of their pictures (160×90, 8-bit, in levels, over RGB), the largest in any
+   * channel, and the largest difference of heightAt at a few points (m).
+   */
+  async oceanPaths(t: number): Promise<{ meanLevels: number; maxLevels: number; heights: number }> {
+    const camera = new PerspectiveCamera(60, 16 / 9, 0.5, 30_000);
+    camera.position.set(0, 4, 0);
+    camera.lookAt(0, 1, -40);
+    camera.updateMatrixWorld();
+    const target = new RenderTarget(160, 90);
+    const pictures: Uint8Array[] = [];
+    const heights: number[][] = [];
+    for (const path of ['js', 'gpu'] as const) {
+      const scene = new Scene();
+      const ocean = new Ocean(renderer!, { resolution: 64, windSpeed: 10, seed: 3, foamAmount: 0, worker: false, path });
+      scene.add(ocean);
+      ocean.update(t);
+      renderer!.setRenderTarget(target);
+      renderer!.render(scene, camera);
+      renderer!.setRenderTarget(null);
+      pictures.push(new Uint8Array((await renderer!.readRenderTargetPixelsAsync(target, 0, 0, 160, 90)).buffer));
+      heights.push([[0, 0], [3.3, -7.1], [-120, 45.5]].map(([x, z]) => ocean.heightAt(x, z)));
+      ocean.dispose();
+    }
+    target.dispose();
+    let sum = 0;
+    let max = 0;
+    for (let at = 0; at < pictures[0].length; at++) {
+      if (at % 4 === 3) continue;
+      const difference = Math.abs(pictures[0][at] - pictures[1][at]);
+      sum += difference;
+      max = Math.max(max, difference);
+    }
+    return { meanLevels: sum / ((3 / 4) * pictures[0].length), maxLevels: max, heights: Math.max(...heights[0].map((h, i) => Math.abs(h - heights[1][i]))) };
+  },
+  /** The storage buffers and textures the renderer holds, and their bytes (three's renderer.info). */
+  gpuMemory(): { storageBuffers: number; storageBytes: number; textures: number; textureBytes: number } {
+    const memory = renderer!.info.memory as unknown as { storageAttributes: number; storageAttributesSize: number; textures: number; texturesSize: number };
+    return { storageBuffers: memory.storageAttributes, storageBytes: memory.storageAttributesSize, textures: memory.textures, textureBytes: memory.texturesSize };
   },
   /**
    * One compute FFT at size n of testFields(): the largest relative RMS error of the fields against
