@@ -68,7 +68,7 @@ export {
   type SunAngles,
   type SunDirection,
 } from './render/skyEnvironment';
-export { FftOceanElement, defineFftOceanElement, FFT_OCEAN_ATTRIBUTES, type FftOceanAttribute } from './embed/fftOceanElement';
+export { FftOceanElement, defineFftOceanElement, FFT_OCEAN_ATTRIBUTES, type FftOceanAttribute, type RendererStatus } from './embed/fftOceanElement';
 // Types that the API above takes or returns, exported so they can be named (and are in the API reference).
 export type { Rgb } from './parameters/sceneOptions';
 export type { OptionTable, OptionRule, OptionType } from './parameters/options';

@@ -20,7 +20,8 @@ import { SkyEnvironment, sunAngles, type SunDirection } from './render/skyEnviro
 import { OceanSimulation, type PathPreference, type SimulationOptions, type SimulationPath } from './layers/oceanSimulation';
 import type { LocalWaves } from './layers/localWaves';
 import type { WaveLayer } from './layers/waveLayer';
-import { checkThreeRelease, checkWebGLRenderer } from './threeRelease';
+import { checkThreeRelease } from './threeRelease';
+import { checkRenderer } from './device/deviceFor';
 import { heightAt, normalAt, velocityAt } from './layers/surfaceQuery';
 import { checkCoordinates, surfaceHeightAt, surfaceHeightsAt, surfaceNormalAt, surfaceVectorsAt, surfaceVelocityAt, warmUpQueries } from './oceanQueries';
 import { SeaStatistics } from './oceanStatistics';
@@ -133,7 +134,7 @@ export class Ocean extends Object3D<OceanEventMap> {
   ) {
     super();
     checkThreeRelease();
-    checkWebGLRenderer(renderer);
+    checkRenderer(renderer, 'three-fft-ocean');
     this.name = 'Ocean';
     checkOptionNames(options, OCEAN_OPTION_KEYS, 'options', { aliases: SHADING_ALIASES, allowed: 'an object of options, such as { windSpeed: 12 }' });
     const simulationParameters = pick(options, SIMULATION_KEYS);
@@ -158,6 +159,10 @@ export class Ocean extends Object3D<OceanEventMap> {
         windSpeed: sim.parameters.windSpeed,
         windDirection: sim.parameters.windDirection,
         surfaceBound: 6 * this.heightRms + 1,
+        // 1 RMS: a Gaussian surface lies below it at 16 % of points. Deeper, the reflection would
+        // hold more of what is under the water, the undersides of objects at the waterline too
+        // (docs/shores.md: a box's lone speckles on a 20 m/s sea, 40 here, 82 at 2 and 3 RMS).
+        troughDepth: this.heightRms,
         waterHeightAt: (x: number, z: number) => heightAt(sim.layers, sim.parameters.choppiness, this.currentTime, x, z, this.preparedShore()),
         shore: this.preparedShore(),
         hullFoam: sim.localWaves,

@@ -1,5 +1,5 @@
 /**
- * The three.js releases this package supports, and the check that the renderer is one it drives.
+ * The three.js releases this package supports (which renderer it drives: src/device/deviceFor.ts).
  * What it reaches into beyond three.js's public API is src/device/webgl2/threeInternals.ts.
  *
  * Releases before r180 are refused (checkThreeRelease, from the Ocean), as they draw no sea or a
@@ -46,18 +46,3 @@ export function checkThreeRelease(revision: string = REVISION): void {
   }
 }
 
-/**
- * Throws an UnsupportedError when `renderer` is not three.js's WebGLRenderer: the sea's materials
- * are GLSL ShaderMaterials and its FFT draws through WebGL 2, which three's WebGPURenderer (from
- * 'three/webgpu', even with forceWebGL) does not run. Without this check such a renderer fails
- * deep inside three.js with a TypeError that names nothing a user passed.
- */
-export function checkWebGLRenderer(renderer: unknown): void {
-  const flags = (renderer ?? {}) as { isWebGLRenderer?: boolean; isWebGPURenderer?: boolean; isRenderer?: boolean };
-  if (flags.isWebGLRenderer === true) return;
-  const given = flags.isWebGPURenderer === true || flags.isRenderer === true ? "three.js's WebGPURenderer" : 'not a three.js renderer';
-  throw new UnsupportedError(
-    'renderer',
-    `renderer: three-fft-ocean's Ocean draws with three.js's WebGLRenderer (import { WebGLRenderer } from 'three'); this is ${given}, which it does not drive yet`,
-  );
-}

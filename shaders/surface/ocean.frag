@@ -9,6 +9,7 @@
 #include "surface/caustics.glsl"
 #include "surface/absorption.glsl"
 #include "sky/environmentLookup.glsl"
+#include "surface/slopeTaps.glsl"
 #include "surface/sceneReflection.glsl"
 #include "surface/waveLayers.glsl"
 #include "surface/seaLighting.glsl"

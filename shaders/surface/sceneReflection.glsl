@@ -53,10 +53,9 @@ vec4 sceneReflectionRayPoint(vec3 fromEye, vec3 ray, vec2 uv) {
 // the rays its facets reflect: a facet tilted by ε in the plane of incidence turns the reflected ray
 // by 2ε, one tilted by ε across it by 2ε·cos θi (the law of reflection). Returns the share of those
 // rays that meet what the mirror render shows, read around the converged point Q at the distance
-// `along` it lies along R (0: it shows nothing there, and the rays are read at infinity) in four rays of the Gaussian spread, the
-// rule filteredSkyReflection takes for the sky: 3-point Gauss–Hermite in the plane of incidence
-// (±√3·s, weights ⅙; Abramowitz & Stegun 25.4.46), its middle node split across it (±√(3/2)·s,
-// ⅓ each), s² = σ²/2 per axis. On calm water (σ² = 0) the four rays are R.
+// `along` it lies along R (0: it shows nothing there, and the rays are read at infinity) in the rays
+// of the Gaussian spread's taps (slopeTaps.glsl, as filteredSkyReflection takes them for the sky),
+// s² = σ²/2 per axis. On calm water (σ² = 0) every ray is R.
 float sceneReflectionSpreadCoverage(vec3 fromEye, vec3 ray, float along, float variance) {
   vec3 facet = normalize(ray - normalize(fromEye));  // the normal that reflects the view into R
   float cosIncident = clamp(dot(ray, facet), 0.0, 1.0);
@@ -65,12 +64,11 @@ float sceneReflectionSpreadCoverage(vec3 fromEye, vec3 ray, float along, float v
   vec3 inPlane = cross(across, ray);
   float s = sqrt(0.5 * variance);
   float coverage = 0.0;
-  for (int tap = 0; tap < 4; tap++) {
-    float side = tap % 2 == 0 ? 1.0 : -1.0;
-    bool alongPlane = tap < 2;
-    vec3 turned = normalize(ray + side * 2.0 * s * (alongPlane ? 1.7320508 * inPlane : 1.2247449 * cosIncident * across));
+  for (int i = 0; i < SLOPE_TAPS; i++) {
+    vec3 tap = slopeTap(i);
+    vec3 turned = normalize(ray + 2.0 * s * (tap.x * inPlane + tap.y * cosIncident * across));
     vec4 point = along > 0.0 ? vec4(fromEye + along * turned, 1.0) : vec4(turned, 0.0);
-    coverage += (alongPlane ? 1.0 / 6.0 : 1.0 / 3.0) * texture(sceneReflectionColor, clamp(sceneReflectionUv(point).xy, 0.0, 1.0)).a;
+    coverage += tap.z * texture(sceneReflectionColor, clamp(sceneReflectionUv(point).xy, 0.0, 1.0)).a;
   }
   return coverage;
 }

@@ -1,6 +1,7 @@
 // The sea's light from the slopes a pixel's normal does not show (src/render/seaLighting.ts): the
 // glint as a microfacet lobe of Gaussian slopes, the sky reflected by those slopes, and the sunlight
-// through thin crests. Needs common/fresnel.glsl, sky/environmentLookup.glsl and LAYER_COUNT.
+// through thin crests. Needs common/fresnel.glsl, sky/environmentLookup.glsl, surface/slopeTaps.glsl
+// and LAYER_COUNT.
 
 #define SEA_PI 3.141592653589793
 // SLOPE_FILTER_LEVELS (seaLighting.ts) is a define.
@@ -74,12 +75,9 @@ vec3 facingEye(vec3 view, vec3 normal) {
 // the slopes the grid resolves do (a pixel's normal is read at its rest point, whichever way it
 // faces), so that the light does not change where the grid stops resolving them; facets facing
 // away are bent to grazing, as the pixel's own normal is (facingEye). The slopes have
-// variance s² = σ²/2 along and across the view. Along it, where the light changes most (the
-// reflected ray's height in the sky, the Fresnel factor), the mean is the 3-point Gauss–Hermite rule
-// (nodes 0, ±√3·s, weights ⅔, ⅙, ⅙: exact to the 5th moment, Abramowitz & Stegun 25.4.46); across
-// it, the node 0 is split into ±√(3/2)·s (weights ⅓ each), which keeps the second moment. Four
-// taps; with σ² = 0 the mirror's reflection. Returns the mean reflectance in `reflectance` and the
-// reflected radiance it weights, so that reflectance·sky is the mean.
+// variance s² = σ²/2 along and across the view, averaged over by the taps of slopeTaps.glsl; with
+// σ² = 0 the mirror's reflection. Returns the mean reflectance in `reflectance` and the reflected
+// radiance it weights, so that reflectance·sky is the mean.
 vec3 filteredSkyReflection(vec3 view, vec3 normal, float variance, float n1, float n2, out float reflectance) {
   vec3 across = cross(view, normal);
   across = dot(across, across) > 1e-8 ? normalize(across) : normalize(cross(vec3(1.0, 0.0, 0.0), normal));
@@ -87,16 +85,14 @@ vec3 filteredSkyReflection(vec3 view, vec3 normal, float variance, float n1, flo
   float s = sqrt(0.5 * variance);
   vec3 reflected = vec3(0.0);
   float weightedReflectance = 0.0;
-  for (int tap = 0; tap < 4; tap++) {
-    float side = tap % 2 == 0 ? 1.0 : -1.0;
-    bool alongView = tap < 2;
-    vec3 facet = facingEye(view, normalize(normal - side * s * (alongView ? 1.7320508 * along : 1.2247449 * across)));
-    float weight = alongView ? 1.0 / 6.0 : 1.0 / 3.0;
+  for (int i = 0; i < SLOPE_TAPS; i++) {
+    vec3 tap = slopeTap(i);
+    vec3 facet = facingEye(view, normalize(normal - s * (tap.x * along + tap.y * across)));
     float facetReflectance = fresnelReflectance(-dot(view, facet), n1, n2);
     vec3 direction = reflect(view, facet);
     direction.y = abs(direction.y);  // a ray reflected downwards would hit the next wave: mirror it
-    reflected += weight * facetReflectance * environmentRadiance(direction);
-    weightedReflectance += weight * facetReflectance;
+    reflected += tap.z * facetReflectance * environmentRadiance(direction);
+    weightedReflectance += tap.z * facetReflectance;
   }
   reflectance = weightedReflectance;
   return reflected / max(weightedReflectance, 1e-6);

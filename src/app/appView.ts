@@ -38,14 +38,14 @@ export function startingQuality(state: Readonly<AppState>): QualityStep {
 }
 
 /**
- * The ocean `state` describes (simulation, path, sun, shading, wireframe), generated sky, with the
- * grid and cascades of its starting quality level.
+ * The Ocean options `state` describes (simulation, path, sun, shading), with the grid and cascades
+ * of its starting quality level: the WebGL Ocean's (createAppOcean) and, less what it does not draw
+ * yet, the WebGPU Ocean's (appWebGPU.ts).
  */
-export function createAppOcean(renderer: WebGLRenderer, state: Readonly<AppState>, options: Pick<OceanOptions, 'worker'> = {}): Ocean {
-  const ocean = new Ocean(renderer, {
+export function appOceanOptions(state: Readonly<AppState>): OceanOptions {
+  return {
     ...simulationParameters(state),
     ...simulationAtQuality(state, startingQuality(state)),
-    ...options,
     path: state.path,
     sunElevation: state.sunElevation,
     sunAzimuth: state.sunAzimuth,
@@ -58,7 +58,12 @@ export function createAppOcean(renderer: WebGLRenderer, state: Readonly<AppState
     shadingMode: state.mode,
     refractions: state.refractions,
     reflections: state.reflections,
-  });
+  };
+}
+
+/** The ocean `state` describes (appOceanOptions, and wireframe), generated sky. */
+export function createAppOcean(renderer: WebGLRenderer, state: Readonly<AppState>, options: Pick<OceanOptions, 'worker'> = {}): Ocean {
+  const ocean = new Ocean(renderer, { ...appOceanOptions(state), ...options });
   ocean.surface.material.wireframe = state.wireframe;
   return ocean;
 }

@@ -1,7 +1,11 @@
 /**
- * The app's entry: without WebGL2 (which three.js and the simulation need) the page says so in
- * words instead of showing a blank canvas; with it, the app (app.ts) starts.
+ * The app's entry: with ?renderer=webgpu the WebGPURenderer app (appWebGPU.ts) starts, which
+ * falls back to WebGPURenderer's WebGL2 backend by itself and says why it cannot start; else,
+ * without WebGL2 (which three.js and the simulation need) the page says so in words instead of
+ * showing a blank canvas, and with it the app (app.ts) starts.
  */
+import { parseState } from './urlState';
+
 function hasWebGL2(): boolean {
   try {
     return document.createElement('canvas').getContext('webgl2') !== null;
@@ -10,7 +14,9 @@ function hasWebGL2(): boolean {
   }
 }
 
-if (hasWebGL2()) {
+if (parseState(location.search).state.renderer === 'webgpu') {
+  void import('./appWebGPU');
+} else if (hasWebGL2()) {
   void import('./app');
 } else {
   const message = document.createElement('div');

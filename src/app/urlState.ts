@@ -18,6 +18,7 @@
  *   refractions  scene/sky: what is seen through the water (the scene's objects, or only the sky)
  *   reflections  scene/sky  what the sea reflects (the scene's objects, or its sky alone)
  *   wireframe  1/0        inspector  1/0        path  auto/gpu/js        buoys  1/0   boat  1/0
+ *   renderer   webgl/webgpu (three's WebGLRenderer, or WebGPURenderer and three-fft-ocean/webgpu: appWebGPU.ts)
  *   scene      sea (the open sea) or island (src/objects/island.ts; sceneChoice.ts)
  *   timeScale  -1000…1000 paused     1/0        t     simulation time in seconds
  *   quality    auto/high/medium/low/lowest (adaptiveQuality.ts)      targetFps  frames per second 'auto' holds
@@ -52,7 +53,7 @@ import type { QualitySetting } from '../runtime/adaptiveQuality';
 import { DEFAULT_QUALITY, QUALITY_OPTIONS } from '../parameters/qualityOptions';
 
 import type { PathPreference } from '../layers/oceanSimulation';
-import { DEFAULT_RUN, RUN_OPTIONS } from '../parameters/runOptions';
+import { DEFAULT_RUN, RUN_OPTIONS, type RendererChoice } from '../parameters/runOptions';
 export type { Rgb };
 
 /** What the sea is shown with (sceneChoice.ts): the open sea alone, or an island in it. */
@@ -79,6 +80,8 @@ export interface AppState extends SimulationParameters {
   boat: boolean;
   /** The open sea, or the island with its reef, pier and moored boat (sceneChoice.ts). */
   scene: SceneChoice;
+  /** three's WebGLRenderer ('webgl') or WebGPURenderer with three-fft-ocean/webgpu ('webgpu': appWebGPU.ts). */
+  renderer: RendererChoice;
   path: PathPreference;
   /** 'auto' lowers and raises the render scale and grid to hold targetFps; a level stays fixed (adaptiveQuality.ts). */
   quality: QualitySetting;
@@ -168,6 +171,7 @@ export const URL_KEYS: readonly (keyof AppState)[] = [
   'buoys',
   'boat',
   'scene',
+  'renderer',
   'path',
   'quality',
   'targetFps',
@@ -288,6 +292,7 @@ export function parseValue<K extends keyof AppState>(key: K, text: string): { va
   switch (key) {
     case 'mode':
       return fromTable(SHADING_OPTIONS, 'shadingMode');
+    case 'renderer':
     case 'path':
     case 'timeScale':
       return fromTable(RUN_OPTIONS, key);

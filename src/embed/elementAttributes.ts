@@ -14,7 +14,7 @@ import { AdaptiveQuality, simulationAtQuality, type QualitySetting, type Quality
 import type { FrameLoop } from '../runtime/frameLoop';
 import { DEFAULT_QUALITY, QUALITY_OPTIONS } from '../parameters/qualityOptions';
 import { formatOptionText, kebabCase, optionRoutes, parseOptionText, quoteText, type OptionRule } from '../parameters/options';
-import { DEFAULT_RUN, RUN_OPTIONS } from '../parameters/runOptions';
+import { DEFAULT_RUN, RUN_OPTIONS, type RendererChoice } from '../parameters/runOptions';
 import { DEFAULT_SHADING, DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ShadingOptions, type SunOptions } from '../parameters/sceneOptions';
 import type { PathPreference } from '../layers/oceanSimulation';
 import { DEFAULT_PARAMETERS, parseDecimal, SIMULATION_OPTIONS, validateParameters, type SimulationParameters } from '../parameters/parameters';
@@ -41,7 +41,7 @@ const OPTION_ATTRIBUTES = optionRoutes(TABLES, kebabCase);
  */
 const OWN_TABLES = { run: RUN_OPTIONS, quality: QUALITY_OPTIONS } as const;
 const OWN_ATTRIBUTES = optionRoutes<keyof typeof OWN_TABLES>(OWN_TABLES, kebabCase);
-type OwnKey = 'path' | 'timeScale' | 'quality' | 'targetFps';
+type OwnKey = 'renderer' | 'path' | 'timeScale' | 'quality' | 'targetFps';
 
 /** Every attribute the element reads. */
 export const FFT_OCEAN_ATTRIBUTES = [...OPTION_ATTRIBUTES.keys(), ...OWN_ATTRIBUTES.keys(), 'paused', 'camera-height', 'boat'] as const;
@@ -49,6 +49,13 @@ export type FftOceanAttribute = (typeof FFT_OCEAN_ATTRIBUTES)[number];
 
 /** The element's own attributes (beside the options), as its settings hold them. */
 export interface ElementSettings {
+  /**
+   * Which of three's renderers draws: 'webgl' (WebGLRenderer, the Ocean of three-fft-ocean) or
+   * 'webgpu' (WebGPURenderer, loaded only then, and the Ocean of three-fft-ocean/webgpu; on
+   * WebGPURenderer's WebGL2 backend where the browser has no WebGPU adapter). A change makes the
+   * renderer and the ocean again. @defaultValue 'webgl'
+   */
+  renderer: RendererChoice;
   /** Which simulation path runs: 'auto', 'gpu' or 'js' (the Ocean's path option). @defaultValue 'auto' */
   path: PathPreference;
   /** Simulated seconds per real second, [-1000, 1000]. @defaultValue 1 */
@@ -73,6 +80,7 @@ export interface Settings extends ElementSettings {
 }
 
 export const ELEMENT_DEFAULTS: Readonly<ElementSettings> = {
+  renderer: DEFAULT_RUN.renderer,
   path: DEFAULT_RUN.path,
   timeScale: DEFAULT_RUN.timeScale,
   paused: false,
@@ -98,6 +106,14 @@ export interface AttributeTarget {
   showBoat(): void;
   /** The picture is out of date. */
   invalidate(): void;
+}
+
+/**
+ * Whether attribute `name` sets an option of the Ocean (a table's option, or path): the WebGPU
+ * Ocean, which cannot change them all in place yet, is made again when one changes.
+ */
+export function setsOceanOption(name: string): boolean {
+  return OPTION_ATTRIBUTES.has(name) || name === 'path';
 }
 
 /** Reads attribute `name`, written `raw` (null: removed), into the settings and onto the ocean. */

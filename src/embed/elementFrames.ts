@@ -13,14 +13,15 @@ import { validateParameters, type SimulationParameters } from '../parameters/par
 import { ELEMENT_DEFAULTS, sunAzimuthOf, type Settings } from './elementAttributes';
 import { placeCamera } from './defaultView';
 import type { Live } from './elementScene';
+import { drawWebGPU, type WebGPULive } from './elementWebGPU';
 
 /** What the frames need of their element. */
 export interface FramesHost {
   /** The element: its box's size, and what the frames' events are dispatched on. */
   readonly element: HTMLElement;
   readonly settings: Readonly<Settings>;
-  /** The live parts, or null while the element holds none. */
-  live(): Live | null;
+  /** The live parts (with either renderer), or null while the element holds none. */
+  live(): Live | WebGPULive | null;
   /** Whether a part of the element is inside the viewport. */
   onScreen(): boolean;
   /** Drawing failed: say so and stop. */
@@ -68,9 +69,14 @@ export class ElementFrames {
     this.needsDraw = true;
   }
 
-  /** Puts the quality level in force for the simulation `asked`: pixel ratio, MSAA, grid and cascades (applyQuality.ts). */
-  applyQuality(live: Live, asked: Readonly<SimulationParameters> = validateParameters(this.host.settings.simulation)): void {
-    applyQualityStep(live, asked, this.loop.quality.step);
+  /**
+   * Puts the quality level in force for the simulation `asked`: pixel ratio, MSAA, grid and
+   * cascades (applyQuality.ts); with the WebGPU Ocean, which has no quality levels yet, the
+   * pixel ratio (render scale) alone.
+   */
+  applyQuality(live: Live | WebGPULive, asked: Readonly<SimulationParameters> = validateParameters(this.host.settings.simulation)): void {
+    if (live.kind === 'webgl') applyQualityStep(live, asked, this.loop.quality.step);
+    else live.renderer.setPixelRatio(live.pixelRatio * this.loop.quality.step.renderScale);
   }
 
   /** Fits the camera and the drawing buffer to the element's box. */
@@ -91,18 +97,23 @@ export class ElementFrames {
   }
 
   /** Draws the current time now. */
-  draw(live: Live): void {
+  draw(live: Live | WebGPULive): void {
     this.needsDraw = false;
     const { settings, element } = this.host;
     const sunAzimuth = sunAzimuthOf(settings);
-    // The time wrapped as a double resolves it, the sea updated for the drifting view, the far plane, the render.
-    this.loop.draw(live, {
-      placeCamera: (t) => placeCamera(live.camera, t, settings.cameraHeight, sunAzimuth),
-      beforeRender: () => {
-        live.boat?.boat.update();
-        live.boat?.light.update();
-      },
-    });
+    const place = (t: number) => placeCamera(live.camera, t, settings.cameraHeight, sunAzimuth);
+    if (live.kind === 'webgpu') {
+      drawWebGPU(live, this.loop.time.t, place);
+    } else {
+      // The time wrapped as a double resolves it, the sea updated for the drifting view, the far plane, the render.
+      this.loop.draw(live, {
+        placeCamera: place,
+        beforeRender: () => {
+          live.boat?.boat.update();
+          live.boat?.light.update();
+        },
+      });
+    }
     this.framesDrawn++;
     if (this.framesDrawn === 1) element.dispatchEvent(new CustomEvent('fft-ocean-ready'));
   }

@@ -13,6 +13,7 @@ import { CLICKED_STONE, seaPointUnder } from '../render/seaPointer';
 
 /** What exists while the element is on the page, near the screen, and WebGL 2 works. */
 export interface Live {
+  kind: 'webgl';
   canvas: HTMLCanvasElement;
   renderer: WebGLRenderer;
   scene: Scene;
@@ -52,10 +53,7 @@ export interface LiveFailure {
  * could not (without WebGL 2, or when the options or the Ocean fail).
  */
 export function createLive(options: () => OceanOptions, events: LiveEvents): Live | LiveFailure {
-  const canvas = document.createElement('canvas');
-  canvas.setAttribute('part', 'canvas');
-  canvas.setAttribute('role', 'img');
-  canvas.setAttribute('aria-label', 'An animated view of the open sea');
+  const canvas = elementCanvas();
   let renderer: WebGLRenderer;
   try {
     // No antialiasing of the canvas's own, which could not be turned off: MSAA is the quality level's (SceneOutput).
@@ -99,6 +97,7 @@ export function createLive(options: () => OceanOptions, events: LiveEvents): Liv
   document.addEventListener('visibilitychange', onVisibilityChange);
 
   const live: Live = {
+    kind: 'webgl',
     canvas,
     renderer,
     scene,
@@ -117,6 +116,15 @@ export function createLive(options: () => OceanOptions, events: LiveEvents): Liv
     },
   };
   return live;
+}
+
+/** The element's canvas, for either renderer (the page's styles reach it as ::part(canvas)). */
+export function elementCanvas(): HTMLCanvasElement {
+  const canvas = document.createElement('canvas');
+  canvas.setAttribute('part', 'canvas');
+  canvas.setAttribute('role', 'img');
+  canvas.setAttribute('aria-label', 'An animated view of the open sea');
+  return canvas;
 }
 
 /** Frees everything createLive made (and the boat), and gives the WebGL context back now. */

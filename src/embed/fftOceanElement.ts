@@ -16,6 +16,12 @@
  *       ("#1a6b80", any CSS colour, or linear "r,g,b"), caustic-power, shading-mode (full,
  *       fresnel, reflection, refraction, caustics, height), refractions and reflections (scene, sky)
  *                                                                        → ocean.setShading
+ *   renderer (webgl, webgpu)                  three's WebGLRenderer (default) or WebGPURenderer with
+ *                                             the Ocean of three-fft-ocean/webgpu (loaded only then;
+ *                                             its WebGL2 backend where there is no WebGPU adapter, said
+ *                                             in rendererStatus, the fft-ocean-renderer event and one
+ *                                             console note); what that Ocean does not draw yet is
+ *                                             left out with a console warning (docs/embedding.md)
  *   path (auto, gpu, js)                      which simulation path runs
  *   time-scale (default 1)                    simulated seconds per real second, at most 1000 either way
  *   paused (boolean)                          freezes time; the view still redraws on changes
@@ -67,15 +73,18 @@
  * style and message (elementStyle.ts). This class ties them together.
  */
 import type { PerspectiveCamera, Scene, WebGLRenderer } from 'three';
+import type { WebGPURenderer } from 'three/webgpu';
 import type { Ocean } from '../ocean';
+import type { Ocean as WebGPUOcean } from '../webgpu/ocean';
 import type { SceneOutput } from '../render/sceneOutput';
 import type { AdaptiveQuality } from '../runtime/adaptiveQuality';
 import { describeValue } from '../parameters/options';
-import { applyAttribute, defaultSettings, oceanOptionsOf, sunAzimuthOf, type AttributeTarget, type FftOceanAttribute, FFT_OCEAN_ATTRIBUTES } from './elementAttributes';
+import { applyAttribute, defaultSettings, oceanOptionsOf, setsOceanOption, sunAzimuthOf, type AttributeTarget, type FftOceanAttribute, FFT_OCEAN_ATTRIBUTES } from './elementAttributes';
 import { ContextProximity } from './contextProximity';
 import { boatCentre } from './defaultView';
 import { ElementFrames } from './elementFrames';
 import { createLive, disposeLive, showBoat, type Live } from './elementScene';
+import { createWebGPULive, disposeWebGPULive, type WebGPULive } from './elementWebGPU';
 import { showMessage, styleShadowRoot } from './elementStyle';
 
 export { FFT_OCEAN_ATTRIBUTES, type FftOceanAttribute } from './elementAttributes';
@@ -92,10 +101,14 @@ export class FftOceanElement extends ElementBase {
 
   private readonly settings = defaultSettings();
   private readonly root: ShadowRoot;
-  private live: Live | null = null;
+  private live: Live | WebGPULive | null = null;
+  /** Counts starts and stops: a WebGPU start that resolves after a later one is freed unused. */
+  private generation = 0;
+  /** Whether a WebGPU start is under way (the renderer initializes asynchronously). */
+  private starting = false;
   private message: HTMLElement | null = null;
   private readonly proximity = new ContextProximity(this, {
-    holds: () => this.live !== null,
+    holds: () => this.live !== null || this.starting,
     mayStart: () => this.message === null,
     start: () => this.start(),
     stop: () => this.stop(),
@@ -112,12 +125,13 @@ export class FftOceanElement extends ElementBase {
   private readonly attributeTarget: AttributeTarget = {
     settings: this.settings,
     loop: this.frames.loop,
-    ocean: () => this.live?.ocean ?? null,
+    // The WebGPU Ocean is made again instead (attributeChangedCallback).
+    ocean: () => this.ocean,
     applyQuality: (asked) => {
       if (this.live) this.frames.applyQuality(this.live, asked);
     },
     showBoat: () => {
-      if (this.live) this.showBoat(this.live);
+      if (this.live?.kind === 'webgl') this.showBoat(this.live);
     },
     invalidate: () => this.frames.invalidate(),
   };
@@ -131,13 +145,37 @@ export class FftOceanElement extends ElementBase {
   /**
    * The Ocean while the element is on the page and near the screen (null before, while it is far
    * from the screen, after removal or without WebGL 2); so are renderer, camera, scene and canvas.
+   * With renderer="webgpu", ocean and renderer are null: see webgpuOcean and webgpuRenderer.
    */
   get ocean(): Ocean | null {
-    return this.live?.ocean ?? null;
+    return this.live?.kind === 'webgl' ? this.live.ocean : null;
   }
 
   get renderer(): WebGLRenderer | null {
-    return this.live?.renderer ?? null;
+    return this.live?.kind === 'webgl' ? this.live.renderer : null;
+  }
+
+  /** With renderer="webgpu": the Ocean of three-fft-ocean/webgpu while the element holds one (see ocean), else null. */
+  get webgpuOcean(): WebGPUOcean | null {
+    return this.live?.kind === 'webgpu' ? this.live.ocean : null;
+  }
+
+  /** With renderer="webgpu": its WebGPURenderer while the element holds one (see ocean), else null. */
+  get webgpuRenderer(): WebGPURenderer | null {
+    return this.live?.kind === 'webgpu' ? this.live.renderer : null;
+  }
+
+  /**
+   * What draws, while the element holds its renderer (else null): which renderer, its backend
+   * ('WebGL2' or 'WebGPU'), why a WebGPU renderer is on its WebGL2 backend (null when it is not),
+   * and the options and settings the WebGPU Ocean does not draw yet, left out (see
+   * docs/embedding.md). Also the detail of the fft-ocean-renderer event, sent when it starts.
+   */
+  get rendererStatus(): RendererStatus | null {
+    const live = this.live;
+    if (!live) return null;
+    if (live.kind === 'webgl') return { renderer: 'webgl', backend: 'WebGL2', fallback: null, notDrawn: [] };
+    return { renderer: 'webgpu', ...live.status };
   }
 
   get camera(): PerspectiveCamera | null {
@@ -148,9 +186,9 @@ export class FftOceanElement extends ElementBase {
     return this.live?.scene ?? null;
   }
 
-  /** What draws the scene onto the canvas, multisampled or not as the quality level says; null with no context (see ocean). */
+  /** What draws the scene onto the canvas, multisampled or not as the quality level says; null with no context (see ocean) or with renderer="webgpu". */
   get output(): SceneOutput | null {
-    return this.live?.output ?? null;
+    return this.live?.kind === 'webgl' ? this.live.output : null;
   }
 
   /** The element's canvas (inside its shadow root), or null when it has none (see ocean). */
@@ -215,7 +253,14 @@ export class FftOceanElement extends ElementBase {
   }
 
   attributeChangedCallback(name: string, _previous: string | null, value: string | null): void {
+    const renderer = this.settings.renderer;
     applyAttribute(this.attributeTarget, name as FftOceanAttribute, value);
+    // Another renderer, or an option of the WebGPU Ocean (which has no setters for them all yet): made again, at the same time.
+    const remake = this.settings.renderer !== renderer || (this.settings.renderer === 'webgpu' && setsOceanOption(name));
+    if (remake && (this.live !== null || this.starting)) {
+      this.stop();
+      this.start();
+    }
   }
 
   // ---- life cycle
@@ -224,6 +269,10 @@ export class FftOceanElement extends ElementBase {
     this.message?.remove();
     this.message = null;
     this.proximity.makeRoomForContext();
+    if (this.settings.renderer === 'webgpu') {
+      void this.startWebGPU(++this.generation);
+      return;
+    }
     const created = createLive(() => oceanOptionsOf(this.settings, this.frames.loop.quality.step), {
       activityChanged: () => this.frames.activityChanged(),
       resized: () => this.frames.resize(),
@@ -234,23 +283,60 @@ export class FftOceanElement extends ElementBase {
       this.fail(created.failure, created.error);
       return;
     }
-    const live = created;
+    this.begin(created);
+  }
+
+  /**
+   * Starts the WebGPURenderer and its Ocean (loading three/webgpu now), unless a stop or another
+   * start came first (`generation` is no longer the element's), in which case they are freed.
+   */
+  private async startWebGPU(generation: number): Promise<void> {
+    this.starting = true;
+    let live: WebGPULive;
+    try {
+      live = await createWebGPULive(oceanOptionsOf(this.settings, this.frames.loop.quality.step), this.settings.boat, {
+        activityChanged: () => this.frames.activityChanged(),
+        resized: () => this.frames.resize(),
+      });
+    } catch (error) {
+      if (generation !== this.generation) return;
+      this.starting = false;
+      this.fail('The ocean could not start with WebGPURenderer in this browser.', error);
+      return;
+    }
+    if (generation !== this.generation) {
+      disposeWebGPULive(live);
+      return;
+    }
+    this.starting = false;
+    this.begin(live);
+    const { notDrawn } = live.status;
+    if (notDrawn.length > 0) console.warn(`<fft-ocean renderer="webgpu">: left out, not drawn by the WebGPU Ocean yet: ${notDrawn.map(({ name, missing }) => `${name} (${missing})`).join('; ')}`);
+    this.dispatchEvent(new CustomEvent('fft-ocean-renderer', { detail: this.rendererStatus }));
+  }
+
+  /** Puts the new live parts in the page (the boat too, before the first frame) and starts drawing them. */
+  private begin(live: Live | WebGPULive): void {
     this.root.append(live.canvas);
     this.live = live;
     this.frames.applyQuality(live);
     this.proximity.hold();
-    this.showBoat(live);
+    if (live.kind === 'webgl') this.showBoat(live);
+    else this.frames.invalidate();
     this.frames.loop.restart();
     this.frames.resize();
     live.resizeObserver.observe(this);
   }
 
   private stop(): void {
+    this.generation++;
+    this.starting = false;
     const live = this.live;
     if (live) {
       this.live = null;
       this.proximity.release();
-      disposeLive(live);
+      if (live.kind === 'webgl') disposeLive(live);
+      else disposeWebGPULive(live);
     }
     this.message?.remove();
     this.message = null;
@@ -268,6 +354,16 @@ export class FftOceanElement extends ElementBase {
     this.message = showMessage(this.root, text);
     this.dispatchEvent(new CustomEvent('fft-ocean-error', { detail: { message: text, error } }));
   }
+}
+
+/** What draws an element (FftOceanElement.rendererStatus, the fft-ocean-renderer event's detail). */
+export interface RendererStatus {
+  renderer: 'webgl' | 'webgpu';
+  backend: 'WebGL2' | 'WebGPU';
+  /** Why renderer 'webgpu' draws with WebGPURenderer's WebGL2 backend; null when it does not. */
+  fallback: string | null;
+  /** Options and settings left out: what the WebGPU Ocean does not draw yet. */
+  notDrawn: { name: string; missing: string }[];
 }
 
 /**

@@ -23,7 +23,8 @@
 import { DataTexture, FloatType, NearestFilter, RGBAFormat, type PixelFormat, type Texture, type WebGLRenderTarget, type WebGLRenderer } from 'three';
 import type { GpuPrecision, PassMaterial } from '../device/gpuDevice';
 import { gpuSupport } from '../device/gpuSupport';
-import { WebGL2Device, type WebGL2FieldTarget } from '../device/webgl2/webgl2Device';
+import type { WebGL2Device, WebGL2FieldTarget } from '../device/webgl2/webgl2Device';
+import { createGpuDevice } from '../device/deviceFor';
 import { shaderSource } from '../shaderSource';
 import { fillPhaseTable, PHASE_TABLE_SIZE } from '../spectrum/dispersion';
 import { largestFrequency, type InitialSpectrum } from '../spectrum/initialSpectrum';
@@ -35,7 +36,7 @@ export type { GpuPrecision };
 
 /** Which GPU precision this renderer can render to, best first; null when neither works (gpuSupport). */
 export function supportedGpuPrecision(renderer: WebGLRenderer): GpuPrecision | null {
-  const device = new WebGL2Device(renderer);
+  const device = createGpuDevice(renderer);
   const { precision } = gpuSupport(device);
   device.dispose();
   return precision;
@@ -73,7 +74,7 @@ export class GpuWaveFields implements FftFieldSource {
     this.repeatPeriod = spectrum.repeatPeriod;
     const n = spectrum.resolution;
     const sizeLog2 = Math.log2(n);
-    const device = (this.device = new WebGL2Device(renderer));
+    const device = (this.device = createGpuDevice(renderer));
     // A coarse cascade has modes only on the lines (z frequencies) of its band: the engine loads
     // and transforms along x only those lines. Made first: it throws if the device cannot render
     // to its layered framebuffer, before anything else is allocated.

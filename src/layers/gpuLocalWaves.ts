@@ -11,7 +11,8 @@
  */
 import { DataTexture, FloatType, NearestFilter, RedFormat, type Texture, type WebGLRenderer } from 'three';
 import type { FieldTarget, PassMaterial } from '../device/gpuDevice';
-import { WebGL2Device } from '../device/webgl2/webgl2Device';
+import type { WebGL2Device } from '../device/webgl2/webgl2Device';
+import { createGpuDevice } from '../device/deviceFor';
 import { GpuFft } from '../fft/gpuFft';
 import { shaderSource } from '../shaderSource';
 import { GRAVITY } from '../spectrum/dispersion';
@@ -41,7 +42,7 @@ export class GpuLocalWaves {
     readonly grid: LocalWaveGrid,
   ) {
     const n = grid.resolution;
-    const device = (this.device = new WebGL2Device(renderer));
+    const device = (this.device = createGpuDevice(renderer));
     // Made first: it throws if the device cannot render to its layered framebuffer.
     try {
       this.fft = new GpuFft(device, { size: n, precision: 'float32' });

@@ -84,31 +84,53 @@ export interface LocalWaveWater {
   readonly wet: Float32Array | null;
 }
 
+/** A sea floor as localWaterUnder reads it (SeabedMap): its depth, `outside` beyond `bounds` ([xMin, zMin, xMax, zMax], m). */
+export interface LocalSeabed {
+  depthAt(x: number, z: number, outside: number): number;
+  readonly bounds: readonly [number, number, number, number];
+}
+
 /**
- * The water under an N×N grid whose texel (i, j) is at world (x0 + i·cell, z0 + j·cell), from the
- * seabed's depth `depthAt` there: the wet texels' mean depth, each counted at most the grid's side
- * deep (see the file's comment), and the wet mask (null when no texel is land). Water all deeper
- * than the side counts as max(side, openDepth) deep; a grid all over land (nothing moves on it)
- * keeps `openDepth`.
+ * The water under an N×N grid whose texel (i, j) is at world (x0 + i·cell, z0 + j·cell), over
+ * `seabed` (`openDepth` deep beyond its bounds): the wet texels' mean depth, each counted at most
+ * the grid's side deep (see the file's comment), and the wet mask (null when no texel is land),
+ * written into `mask` (N², reused from call to call). Water all deeper than the side counts as
+ * max(side, openDepth) deep; a grid all over land (nothing moves on it) keeps `openDepth`. Only
+ * the texels within the bounds (and one more round them, for rounding) are read; the rest are
+ * open water, counted together.
  */
-export function localWaterUnder(grid: LocalWaveGrid, x0: number, z0: number, depthAt: (x: number, z: number) => number, openDepth: number): LocalWaveWater {
+export function localWaterUnder(grid: LocalWaveGrid, x0: number, z0: number, seabed: LocalSeabed, openDepth: number, mask: Float32Array): LocalWaveWater {
   const n = grid.resolution;
-  const side = n * grid.cellSize;
-  const wet = new Float32Array(n * n);
+  const cell = grid.cellSize;
+  const side = n * cell;
+  const [xMin, zMin, xMax, zMax] = seabed.bounds;
+  // The texels the bounds may reach; Math.max/min also take infinite bounds to the grid's edges.
+  const i0 = Math.max(0, Math.ceil((xMin - x0) / cell) - 1);
+  const i1 = Math.min(n - 1, Math.floor((xMax - x0) / cell) + 1);
+  const j0 = Math.max(0, Math.ceil((zMin - z0) / cell) - 1);
+  const j1 = Math.min(n - 1, Math.floor((zMax - z0) / cell) + 1);
+  mask.fill(1);
   let sum = 0;
   let count = 0;
-  for (let j = 0; j < n; j++) {
-    for (let i = 0; i < n; i++) {
-      const d = depthAt(x0 + i * grid.cellSize, z0 + j * grid.cellSize);
-      if (!(d > 0)) continue;
-      wet[j * n + i] = 1;
+  let read = 0;
+  for (let j = j0; j <= j1; j++) {
+    for (let i = i0; i <= i1; i++) {
+      read++;
+      const d = seabed.depthAt(x0 + i * cell, z0 + j * cell, openDepth);
+      if (!(d > 0)) {
+        mask[j * n + i] = 0;
+        continue;
+      }
       sum += Math.min(d, side);
       count++;
     }
   }
-  if (count === 0) return { depth: openDepth, wet };
+  const open = n * n - read;
+  sum += open * Math.min(openDepth, side);
+  count += open;
+  if (count === 0) return { depth: openDepth, wet: mask };
   const depth = sum / count >= side ? Math.max(openDepth, side) : sum / count;
-  return { depth, wet: count === n * n ? null : wet };
+  return { depth, wet: count === n * n ? null : mask };
 }
 
 /**

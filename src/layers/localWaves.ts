@@ -137,6 +137,8 @@ export class LocalWaves implements WaveLayer {
   private seabed: SeabedMap | null = null;
   /** The grid origin (texels) the solver's water was found for; null: to be found again. */
   private waterFor: [number, number] | null = null;
+  /** The wet mask localWaterUnder fills each time the water is found over a seabed (N², made the first time). */
+  private wetMask: Float32Array | null = null;
   /** This layer as a list of layers, for the queries. */
   private readonly asLayers: readonly WaveLayer[] = [this];
 
@@ -432,8 +434,12 @@ export class LocalWaves implements WaveLayer {
     if (this.waterFor !== null && this.waterFor[0] === i && this.waterFor[1] === j) return;
     this.waterFor = [i, j];
     const { seabed, grid } = this;
-    const cell = grid.cellSize;
-    this.solved.setWater(seabed === null ? { depth: grid.depth, wet: null } : localWaterUnder(grid, i * cell, j * cell, (x, z) => seabed.depthAt(x, z, grid.depth), grid.depth));
+    if (seabed === null) {
+      this.solved.setWater({ depth: grid.depth, wet: null });
+      return;
+    }
+    this.wetMask ??= new Float32Array(grid.resolution * grid.resolution);
+    this.solved.setWater(localWaterUnder(grid, i * grid.cellSize, j * grid.cellSize, seabed, grid.depth, this.wetMask));
   }
 
   /** Sub-steps for this update: enough that no hull moves more than a quarter of its length in one. */

@@ -19,7 +19,7 @@
 import type { WebGLRenderer } from 'three';
 import type { GpuDevice, GpuPrecision } from '../device/gpuDevice';
 import { gpuSupport } from '../device/gpuSupport';
-import { WebGL2Device } from '../device/webgl2/webgl2Device';
+import { createGpuDevice } from '../device/deviceFor';
 import {
   ParameterError,
   SHADER_ONLY_PARAMETERS,
@@ -123,7 +123,7 @@ export class OceanSimulation {
     this.localWaveOptions = checkLocalWaves(options.localWaves ?? defaults.localWaves);
     const localPath = this.localWaveOptions?.path ?? 'auto';
     if (!isPathPreference(localPath)) throw new ParameterError('localWaves.path', localPath, PATH_PREFERENCES_TEXT);
-    this.device = new WebGL2Device(renderer);
+    this.device = createGpuDevice(renderer);
     try {
       this.rebuild(true);
     } catch (error) {

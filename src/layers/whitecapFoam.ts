@@ -20,7 +20,7 @@
  */
 import { DataTexture, FloatType, LinearFilter, LinearMipmapLinearFilter, NearestFilter, RedFormat, RepeatWrapping, type Texture, type WebGLRenderer } from 'three';
 import type { FieldTarget, GpuDevice, GpuPrecision, PassMaterial } from '../device/gpuDevice';
-import { WebGL2Device } from '../device/webgl2/webgl2Device';
+import { createGpuDevice } from '../device/deviceFor';
 import { shaderSource, withLayerCount } from '../shaderSource';
 import { CpuFoamField, foamCreationRate, foamSchedule, foamStep, type CascadeOnCpu, type FoamCalibration } from './foamModel';
 import type { LayerFrame, WaveLayer } from './waveLayer';
@@ -71,7 +71,7 @@ export class WhitecapFoam {
     }
     const largest = layers[layers.length - 1].frame;
     this.frame = { size: largest.size, origin: [0, 0], periodic: true, resolution: largest.resolution };
-    this.producer = gpuPrecision === null ? new JsFoam(renderer, this.frame) : new GpuFoam(new WebGL2Device(renderer), layers, this.frame, gpuPrecision);
+    this.producer = gpuPrecision === null ? new JsFoam(renderer, this.frame) : new GpuFoam(createGpuDevice(renderer), layers, this.frame, gpuPrecision);
     this.texture = this.producer.texture;
     // Removed in dispose(); guarded for canvas-like objects without listeners, as the sky is.
     this.canvas = gpuPrecision === null ? null : (renderer.domElement as EventTarget | undefined) ?? null;

@@ -11,6 +11,7 @@
  * moored boat on the water of the ocean's time; dispose() frees every geometry and material.
  */
 import {
+  Box3,
   BoxGeometry,
   BufferGeometry,
   Color,
@@ -21,6 +22,7 @@ import {
   Mesh,
   MeshStandardMaterial,
   Quaternion,
+  Sphere,
   Uint32BufferAttribute,
   Vector3,
 } from 'three';
@@ -278,24 +280,36 @@ export function islandTerrainGeometry(): BufferGeometry {
 }
 
 /**
- * The terrain's triangles split at the waterline into two geometries over the same vertices: those
- * that reach y = 0 or above, and those wholly under it. The sea's reflection skips a mesh wholly
- * under the water (src/render/sceneCapture.ts), so the sea floor, most of the triangles, is not
- * drawn into it for nothing.
+ * How deep the shallows reach, m: the sea's reflection keeps the scene down to the sea's RMS height
+ * under the water (src/render/sceneReflection.ts), under 3 m for winds up to 24 m/s (a fully
+ * developed sea's Hs = 0.21·U²/g, Pierson & Moskowitz 1964: 12.3 m, RMS Hs/4).
  */
-export function splitAtWaterline(geometry: BufferGeometry): { above: BufferGeometry; below: BufferGeometry } {
+export const SHALLOWS_DEPTH = 3;
+
+/**
+ * The terrain's triangles split into two geometries over the same vertices: those that reach
+ * y = −SHALLOWS_DEPTH or above, and the sea floor wholly under it. The sea's reflection skips a mesh
+ * wholly under its near plane (src/render/sceneCapture.ts), so the sea floor, most of the
+ * triangles, is not drawn into it for nothing. Each part's bounding box is its own triangles':
+ * three.js would take every vertex of the shared position attribute (the hills' too).
+ */
+export function splitAtShallows(geometry: BufferGeometry): { above: BufferGeometry; below: BufferGeometry } {
   const index = geometry.getIndex()!;
-  const y = geometry.getAttribute('position');
+  const position = geometry.getAttribute('position');
   const above: number[] = [];
   const below: number[] = [];
   for (let i = 0; i < index.count; i += 3) {
     const [a, b, c] = [index.getX(i), index.getX(i + 1), index.getX(i + 2)];
-    (Math.max(y.getY(a), y.getY(b), y.getY(c)) < 0 ? below : above).push(a, b, c);
+    (Math.max(position.getY(a), position.getY(b), position.getY(c)) < -SHALLOWS_DEPTH ? below : above).push(a, b, c);
   }
+  const corner = new Vector3();
   const part = (indices: number[]) => {
     const piece = new BufferGeometry();
     for (const name of Object.keys(geometry.attributes)) piece.setAttribute(name, geometry.getAttribute(name));
     piece.setIndex(new Uint32BufferAttribute(indices, 1));
+    piece.boundingBox = new Box3();
+    for (const v of indices) piece.boundingBox.expandByPoint(corner.fromBufferAttribute(position, v));
+    piece.boundingSphere = piece.boundingBox.getBoundingSphere(new Sphere());
     return piece;
   };
   return { above: part(above), below: part(below) };
@@ -304,9 +318,9 @@ export function splitAtWaterline(geometry: BufferGeometry): { above: BufferGeome
 export class Island extends Group {
   /** The sea floor the terrain is built from (give it to the ocean's seabed). */
   readonly seabed: Seabed = islandSeabed();
-  /** The terrain's triangles that reach the water's level or above (its vertices are all of the terrain's). */
+  /** The terrain's triangles that reach SHALLOWS_DEPTH under the water or above (its vertices are all of the terrain's). */
   readonly terrain: Mesh<BufferGeometry, MeshStandardMaterial>;
-  /** The terrain's triangles wholly under the water, over the same vertices and material. */
+  /** The terrain's triangles wholly under SHALLOWS_DEPTH, over the same vertices and material. */
   readonly seaFloor: Mesh<BufferGeometry, MeshStandardMaterial>;
   /** The boat moored beside the pier's end. */
   readonly boat = new BoatModel();
@@ -320,7 +334,7 @@ export class Island extends Group {
   constructor() {
     super();
     this.name = 'island';
-    const { above, below } = splitAtWaterline(islandTerrainGeometry());
+    const { above, below } = splitAtShallows(islandTerrainGeometry());
     const ground = new MeshStandardMaterial({ vertexColors: true, roughness: 0.95 });
     this.terrain = new Mesh(above, ground);
     this.terrain.name = 'island terrain';

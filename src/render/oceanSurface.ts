@@ -59,6 +59,8 @@ export class OceanSurface<M extends SeaSurfaceMeshMaterial = OceanMaterial> exte
       windDirection?: number;
       /** No crest rises above it and no trough sinks below its negative (m); without it the eye is taken to be above the sea. */
       surfaceBound?: number;
+      /** How far below mean sea level the troughs reach, m (SceneReflection.troughDepth); 0 when left out. */
+      troughDepth?: number;
       /** The water's height over a point (Ocean.heightAt), asked when the eye is between crest and trough heights. */
       waterHeightAt?: (x: number, z: number) => number;
       /** The seabed the waves feel (shore.ts), prepared for these layers; null or left out: none. */
@@ -171,10 +173,14 @@ export class OceanSurface<M extends SeaSurfaceMeshMaterial = OceanMaterial> exte
     return farEdgeDistance(cameraHeight, this.waves().layers, cellsPerRingForViewport(this.viewport.y, this.fewestCells));
   }
 
-  /** Centres the rings under `camera` (done before every render; public for the geometry test). */
+  /**
+   * Centres the rings under `camera` and tells the reflection how deep the troughs reach (done
+   * before every render; public for the geometry test).
+   */
   placeRings(camera: Camera): void {
     const position = camera.getWorldPosition(this.cameraPosition);
-    const { layers, choppiness, foam, surfaceBound, waterHeightAt, windSpeed, windDirection, shore, hullFoam } = this.waves();
+    const { layers, choppiness, foam, surfaceBound, troughDepth, waterHeightAt, windSpeed, windDirection, shore, hullFoam } = this.waves();
+    this.reflection.troughDepth = troughDepth ?? 0;
     this.material.bindLayers(layers, choppiness, foam, windSpeed, windDirection);
     this.material.bindHullFoam(hullFoam ? layers.indexOf(hullFoam) : -1, hullFoam?.foam.texture ?? null);
     this.material.setEye(position.x, position.z);

@@ -71,21 +71,22 @@ function onlySea(object: Object3D, sea: ReadonlySet<Object3D>): boolean {
 }
 
 /**
- * Collects into `out` the visible meshes of `object` that lie wholly under the plane y = 0: their
- * geometry's bounding box, placed in the world, has its top below it. Only plain meshes without
- * children whose vertices are where their geometry says (no skinning, instances, morph targets, displacement map
- * or vertex shader of the user's) are judged; anything else is kept.
+ * Collects into `out` the visible meshes of `object` that lie wholly under the plane y = `level`:
+ * their geometry's bounding box, placed in the world, has its top below it. Only
+ * plain meshes without children whose vertices are where their geometry says (no skinning,
+ * instances, morph targets, displacement map or vertex shader of the user's) are judged; anything
+ * else is kept.
  */
-export function belowWaterMeshes(object: Object3D, out: Object3D[]): void {
+export function belowWaterMeshes(object: Object3D, out: Object3D[], level: number): void {
   if (!object.visible) return;
   const mesh = object as Mesh;
   // A mesh with children is kept: hiding it would hide them, which may reach above the water.
   if (mesh.isMesh === true && object.children.length === 0 && plainVertices(mesh)) {
     const geometry = mesh.geometry;
     if (geometry.boundingBox === null) geometry.computeBoundingBox();
-    if (worldBox.copy(geometry.boundingBox!).applyMatrix4(mesh.matrixWorld).max.y < 0) out.push(mesh);
+    if (worldBox.copy(geometry.boundingBox!).applyMatrix4(mesh.matrixWorld).max.y < level) out.push(mesh);
   }
-  for (const child of object.children) belowWaterMeshes(child, out);
+  for (const child of object.children) belowWaterMeshes(child, out, level);
 }
 
 /** Whether a mesh's vertices are drawn where its geometry's positions put them. */
@@ -107,16 +108,16 @@ function plainMaterial(material: Material): boolean {
 /**
  * Renders `scene` from `camera` into `target` (cleared to transparent black, depth 1), drawing only
  * the objects whose layers meet `layers`, with every sea's objects hidden and no background. With
- * `aboveWaterOnly` (the reflection, whose near plane is the water, y = 0) the meshes that lie
- * wholly under the water are hidden too: clipped whole, they would cost their vertices and show
- * nothing (the island's sea floor, most of its triangles).
+ * a `nearPlaneHeight` (the reflection, whose near plane is the horizontal plane at that height) the
+ * meshes that lie wholly under it are hidden too: clipped whole, they would cost their vertices and
+ * show nothing (the island's sea floor, most of its triangles).
  * Restores the renderer's target, clear colour and alpha, autoClear, XR and shadow-map updates, the
  * scene's background, the camera's layers and the seas' visibility.
  */
-export function renderSceneWithoutSea(renderer: WebGLRenderer, scene: Scene, camera: Camera, target: WebGLRenderTarget, layers: Layers, aboveWaterOnly = false): void {
+export function renderSceneWithoutSea(renderer: WebGLRenderer, scene: Scene, camera: Camera, target: WebGLRenderTarget, layers: Layers, nearPlaneHeight?: number): void {
   const sea = hiddenSeaObjects().list;
   underWater.length = 0;
-  if (aboveWaterOnly) belowWaterMeshes(scene, underWater);
+  if (nearPlaneHeight !== undefined) belowWaterMeshes(scene, underWater, nearPlaneHeight);
   const previousTarget = renderer.getRenderTarget();
   const previousFace = renderer.getActiveCubeFace();
   const previousMipmap = renderer.getActiveMipmapLevel();

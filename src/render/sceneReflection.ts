@@ -1,9 +1,17 @@
 /**
  * The scene reflected in the sea: a render of the scene (without the sea, sceneCapture.ts) from the
- * camera mirrored in the plane y = 0, with an oblique near plane on y = 0 so that nothing below the
- * water (no object's underside) is in it, and its depth, which shaders/surface/sceneReflection.glsl
- * reads along each wave's reflected ray. Made again before every render of the sea (the surface's
- * onBeforeRender), at `scale` times the drawing buffer's size. Owns its camera and render target.
+ * camera mirrored in the plane y = 0, with an oblique near plane level with the sea's troughs
+ * (y = −troughDepth) so that nothing deeper under the water (no object's underside) is in it, and
+ * its depth, which shaders/surface/sceneReflection.glsl reads along each wave's reflected ray. Made
+ * again before every render of the sea (the surface's onBeforeRender), at `scale` times the drawing
+ * buffer's size. Owns its camera and render target.
+ *
+ * Why the troughs and not the mean level: the reflected rays leave the displaced surface, down to
+ * its troughs, and a ray from a trough meets an object below y = 0 (a cliff's foot). Cut at y = 0,
+ * the render holds none of that, and just beyond an object's cut base (inside it) it shows nothing:
+ * a lookup landing there, from a trough or a step that ends a little behind the object's face near
+ * its waterline, finds no coverage and shows the sky, lone bright pixels amid the object's
+ * reflection (the island's cliff on a 12 m/s sea: docs/shores.md).
  *
  * The mirror: a point (x, y, z) is seen in calm water where its image (x, −y, z) would be seen
  * (the law of reflection). The mirror camera is the camera reflected in y = 0, turned into a
@@ -33,7 +41,7 @@ import { holdsOnlySeas, isCapturing, renderSceneWithoutSea } from './sceneCaptur
 const MIRROR = new Matrix4().makeScale(1, -1, 1);
 /** The camera's own x axis negated, which makes the mirrored frame a rotation again. */
 const FLIP_X = new Matrix4().makeScale(-1, 1, 1);
-const WATER_PLANE = new Plane(new Vector3(0, 1, 0), 0);
+const UP = new Vector3(0, 1, 0);
 
 /**
  * A three.js Layers object as the reflection takes it (OceanSurface.reflectionLayers): which of
@@ -82,6 +90,11 @@ export class SceneReflection {
   readonly layers = new Layers();
   /** The reflection's size as a fraction of the drawing buffer's; 0 shows the sky instead (no render target is kept). */
   scale = 0.5;
+  /**
+   * How far below mean sea level the render keeps the scene, m: where the sea's troughs reach
+   * (OceanSurface sets it before each render, Ocean to its RMS height). 0: calm water, y = 0.
+   */
+  troughDepth = 0;
 
   constructor() {
     this.layers.enableAll();
@@ -107,13 +120,17 @@ export class SceneReflection {
       return;
     }
     const target = this.targetFor(renderer);
-    this.placeCamera(camera);
+    camera.getWorldPosition(this.eye);
+    // At most half the eye's height down: the oblique near plane must stay in front of the mirror
+    // camera, which is as far under y = 0 as the eye is above it (Lengyel's method needs it behind
+    // the plane).
+    const nearPlaneHeight = -Math.min(this.troughDepth, Math.max(this.eye.y, 0) / 2);
+    this.placeCamera(camera, nearPlaneHeight);
     const mirror = this.camera;
     mirror.layers.mask = this.layers.mask & camera.layers.mask;
-    renderSceneWithoutSea(renderer, scene, mirror, target, mirror.layers, true);
+    renderSceneWithoutSea(renderer, scene, mirror, target, mirror.layers, nearPlaneHeight);
     // The shader works from the eye (vFromEye): the matrices take the eye's position in double
     // precision here, not in float32 there.
-    camera.getWorldPosition(this.eye);
     const toClip = this.uniforms.sceneReflectionToClip.value;
     toClip.multiplyMatrices(mirror.projectionMatrix, mirror.matrixWorldInverse).multiply(this.toEye.makeTranslation(this.eye));
     this.uniforms.sceneReflectionFromClip.value.copy(toClip).invert();
@@ -138,16 +155,17 @@ export class SceneReflection {
 
   /**
    * The mirror camera of `camera`: its frame M·C·F (M the mirror, F the x flip), its projection
-   * F·P·F, then the near plane made oblique on y = 0 (Lengyel 2005, "Oblique view frustum depth
-   * projection and clipping", J. Game Dev. 1(2): the third row of P replaced so that the near
-   * plane is the water's), which clips everything below the water.
+   * F·P·F, then the near plane made oblique on the plane y = `nearPlaneHeight` (Lengyel 2005,
+   * "Oblique view frustum depth projection and clipping", J. Game Dev. 1(2): the third row of P
+   * replaced so that the near plane is that one), which clips everything below it.
    */
-  private placeCamera(camera: Camera): void {
+  private placeCamera(camera: Camera, nearPlaneHeight: number): void {
     const mirror = this.camera;
     mirror.matrixWorld.multiplyMatrices(MIRROR, camera.matrixWorld).multiply(FLIP_X);
     mirror.matrixWorldInverse.copy(mirror.matrixWorld).invert();
     const p = mirror.projectionMatrix.copy(camera.projectionMatrix).premultiply(FLIP_X).multiply(FLIP_X).elements;
-    const plane = this.plane.copy(WATER_PLANE).applyMatrix4(mirror.matrixWorldInverse);
+    // The plane n·x + c = 0 with n = +y: y = −c.
+    const plane = this.plane.set(UP, -nearPlaneHeight).applyMatrix4(mirror.matrixWorldInverse);
     const c = this.clipPlane.set(plane.normal.x, plane.normal.y, plane.normal.z, plane.constant);
     // The frustum's corner opposite the plane, in view space (Lengyel's Q = P⁻¹·(sgn cx, sgn cy, 1, 1)).
     const q = this.corner.set((Math.sign(c.x) + p[8]) / p[0], (Math.sign(c.y) + p[9]) / p[5], -1, (1 + p[10]) / p[14]);

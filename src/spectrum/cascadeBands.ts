@@ -2,7 +2,8 @@
  * How the spectrum is split between FFT cascades, and how long each cascade's repeat period is.
  *
  * Cascades are square patches of different sides L (ascending; index 0 is the finest). Each
- * wavelength is simulated once: cascade c keeps the modes with |k| in [low_c, high_c). The
+ * wavelength is simulated once: cascade c holds the waves with |k| in [low_c, high_c), in the modes
+ * whose cells reach into that band, each with its cell's share (cellInBand). The
  * boundary between a cascade and the next finer one is the geometric mean of the finer grid's
  * fundamental 2π/L_finer and the coarser grid's Nyquist radius πN/L_coarser: both grids then have
  * the same margin, √(N·L_finer/(2·L_coarser)), the finer one that many rings of modes inside the
@@ -47,17 +48,47 @@ export function maxPatchRatio(resolution: number): number {
   return resolution / 2;
 }
 
+/** How much of a mode's cell lies in a band (cellInBand). */
+export type CellOverlap = 'whole' | 'part' | 'none';
+
 /**
- * Whether a cascade keeps the mode (n, m)·2π/L of its grid. Decided in grid units, where n² + m²
- * is exact, with a wave vector on (or within 1e-9 of) an edge given to the finer cascade: when
- * both grids hold the same wavenumber (patch sizes in a whole ratio), rounding cannot make both
- * cascades keep it, or neither.
+ * Where mode (n, m)'s cell lies against the band: the square of side 2π/L centred on the mode, its
+ * share of the k plane (initialSpectrum.ts weighs each mode by ∫Ψ over its cell's part in the band).
+ * Decided in grid units from the cell's nearest and farthest points to k = 0. The cells of a grid
+ * tile the plane, so the cells a band touches cover it exactly, however few lattice points lie
+ * near its edge.
  */
-export function keepsMode(band: CascadeBand, n: number, m: number): boolean {
+export function cellInBand(band: CascadeBand, n: number, m: number): CellOverlap {
   const fundamental = (2 * Math.PI) / band.patchSize;
-  const edge = (k: number) => (k / fundamental) ** 2 * (1 - 1e-9);
-  const indexSquared = n * n + m * m;
-  return indexSquared >= edge(band.low) && indexSquared < edge(band.high);
+  const [low, high] = [band.low / fundamental, band.high / fundamental];
+  const near = Math.hypot(Math.max(0, Math.abs(n) - 0.5), Math.max(0, Math.abs(m) - 0.5));
+  const far = Math.hypot(Math.abs(n) + 0.5, Math.abs(m) + 0.5);
+  if (far <= low || near >= high) return 'none';
+  return near >= low && far < high ? 'whole' : 'part';
+}
+
+/**
+ * Sub-cells a side over which ∫Ψ is summed in a cell the band's edge crosses: the share of the cell
+ * in the band is then resolved to 1/64 of its area (the midpoint rule on an 8 × 8 split).
+ */
+export const EDGE_CELL_SPLIT = 8;
+
+/**
+ * The midpoints, in grid units, of the EDGE_CELL_SPLIT² sub-cells of mode (n, m)'s cell that lie in
+ * the band, for a cell whose overlap is 'part'.
+ */
+export function edgeCellPoints(band: CascadeBand, n: number, m: number): [number, number][] {
+  const fundamental = (2 * Math.PI) / band.patchSize;
+  const [low, high] = [band.low / fundamental, band.high / fundamental];
+  const points: [number, number][] = [];
+  for (let b = 0; b < EDGE_CELL_SPLIT; b++) {
+    for (let a = 0; a < EDGE_CELL_SPLIT; a++) {
+      const [x, y] = [n - 0.5 + (a + 0.5) / EDGE_CELL_SPLIT, m - 0.5 + (b + 0.5) / EDGE_CELL_SPLIT];
+      const radius = Math.hypot(x, y);
+      if (radius >= low && radius < high) points.push([x, y]);
+    }
+  }
+  return points;
 }
 
 /** The Nyquist radius πN/L of a cascade's grid: above it, directions are not all resolved. */
@@ -65,14 +96,20 @@ export function nyquistRadius(band: CascadeBand, resolution: number): number {
   return (Math.PI * resolution) / band.patchSize;
 }
 
-/** |k| of the slowest nonzero mode a cascade keeps (a lower bound: its band's low edge or fundamental). */
+/**
+ * |k| of the slowest nonzero mode a cascade keeps (a lower bound: a mode is kept when its cell
+ * reaches into the band, so it lies at most half a cell's diagonal below the low edge; and no
+ * nonzero mode is slower than the fundamental).
+ */
 export function slowestModeInBand(band: CascadeBand): number {
-  return Math.max(band.low, (2 * Math.PI) / band.patchSize);
+  const fundamental = (2 * Math.PI) / band.patchSize;
+  return Math.max(band.low - fundamental * Math.SQRT1_2, fundamental);
 }
 
-/** |k| of the fastest mode a cascade keeps (an upper bound: its band's high edge or grid corner). */
+/** |k| of the fastest mode a cascade keeps (an upper bound: half a cell's diagonal above its high edge, or its grid's corner). */
 export function fastestModeInBand(band: CascadeBand, resolution: number): number {
-  return Math.min(band.high, Math.SQRT2 * nyquistRadius(band, resolution));
+  const fundamental = (2 * Math.PI) / band.patchSize;
+  return Math.min(band.high + fundamental * Math.SQRT1_2, Math.SQRT2 * nyquistRadius(band, resolution));
 }
 
 /**

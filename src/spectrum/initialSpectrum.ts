@@ -2,16 +2,18 @@
  * The initial wave spectra h̃0(k) of the FFT cascades.
  *
  * Initial amplitudes (Tessendorf 2001, eq. 25, in physical units):
- *   h̃0(k) = (ξr + i·ξi) · √(Ψ(−k)·Δk² / 4),   Δk = 2π/L,
+ *   h̃0(k) = (ξr + i·ξi) · √(Ψ̄(−k)·Δk² / 4),   Δk = 2π/L,
  * ξr, ξi independent standard normal deviates from the seed, Ψ the wave-number spectrum (m⁴, the
  * variance of waves travelling towards k̂ per unit area of the k plane: seaState.ts). Why −k:
  * Tessendorf's evolution h̃0(k)·e^{iωt}·e^{ik·x} is a wave travelling towards −k (its phase is
- * constant where k·x = −ωt), so the waves that travel towards k̂ are h̃0(−k)'s. Why /4: then
- * E|h̃0(k)|² = Ψ(−k)·Δk²/2, and the field h = Σ h̃(k, t)·e^{ik·x} with h̃(k,t) = h̃0(k)e^{iωt} +
- * h̃0*(−k)e^{−iωt} has variance Σ E|h̃0(k)|² + E|h̃0(−k)|² = Σ Ψ(k)·Δk², the spectrum's m0. For the
+ * constant where k·x = −ωt), so the waves that travel towards k̂ are h̃0(−k)'s. Ψ̄ is Ψ averaged
+ * over the part of the mode's cell in the cascade's band (cellMean below): Ψ itself well inside the
+ * band. Why /4: then E|h̃0(k)|² = Ψ̄(−k)·Δk²/2, and the field h = Σ h̃(k, t)·e^{ik·x} with
+ * h̃(k,t) = h̃0(k)e^{iωt} + h̃0*(−k)e^{−iωt} has variance Σ E|h̃0(k)|² + E|h̃0(−k)|² = Σ Ψ̄(k)·Δk²,
+ * the spectrum's m0 (each band's ∫Ψ d²k, exactly up to quadrature). For the
  * report's Phillips spectrum, seaState.ts makes Ψ = 2·P·(L₀/2π)² with L₀ the largest patch, so that
  * one cascade of side L₀ gets exactly the report's h̃0 = (ξr + i·ξi)·√(P/2).
- * Each cascade keeps only the modes of its band (cascadeBands.ts): the others are 0.
+ * Each cascade keeps only the modes whose cells reach into its band (cascadeBands.ts): the others are 0.
  *
  * Grid and frequency ordering. The patch of side Lx has N×N samples at x = (n, m)·Lx/N,
  * n, m in [0, N). Its wave vectors are k = 2π·(n', m')/Lx with n', m' in [−N/2, N/2). Texel
@@ -22,7 +24,7 @@
  * (N − j) mod N); at the Nyquist index N/2 that is the texel itself.
  */
 import type { SimulationParameters } from '../parameters/parameters';
-import { cascadeBands, cascadeRepeatPeriod, keepsMode, type CascadeBand } from './cascadeBands';
+import { cascadeBands, cascadeRepeatPeriod, cellInBand, EDGE_CELL_SPLIT, edgeCellPoints, type CascadeBand } from './cascadeBands';
 import { frequencyIndex } from './dispersion';
 import { SeededRandom } from './random';
 import { fixedWaveNumberSpectrum } from './seaState';
@@ -44,7 +46,7 @@ export interface InitialSpectrum {
    * (ω = m·2π/T_c, see dispersion.ts), an exact integer; 0 outside the band.
    */
   waveVectors: Float32Array;
-  /** Ψ(k) per texel in m⁴ (0 outside the band), for inspection (the report's Figure 1). */
+  /** Ψ̄(k) per texel in m⁴ (Ψ(k) inside the band, 0 outside; cellMean), for inspection (the report's Figure 1). */
   density: Float32Array;
 }
 
@@ -116,6 +118,33 @@ export function createCascadeSpectrum(params: SimulationParameters, cascade: num
 }
 
 /**
+ * Ψ̄ of mode (n, m): ∫Ψ d²k over the part of its cell (cascadeBands.ts, cellInBand) in the band,
+ * divided by the cell's area Δk², so that Ψ̄·Δk² is the variance the mode carries; null for a mode
+ * whose cell lies outside the band. A discrete mode stands for the waves of its whole cell: it
+ * carries the variance of its bin, the spectral density integrated over it (the discrete variance
+ * spectrum of Mobley, Ocean Optics Web Book, "Spectra to Surfaces: 2D", 2021). From that integral
+ * rather than from Ψ at the mode, each band's lattice sum is the band's ∫Ψ d²k however few lattice
+ * points lie near its edge: a band edge 2.35 fundamentals out (N = 64, patches 5.8× apart) leaves
+ * 21 lattice points inside where the disc holds only 17.4 cells, and with Ψ ∝ k⁻⁴ the finer band
+ * lost a fifth of its variance. Cells wholly inside take the midpoint rule, Ψ at the centre; a
+ * cell the edge crosses, the midpoint rule on its EDGE_CELL_SPLIT² sub-cells in the band.
+ */
+function cellMean(band: CascadeBand, spectrum: WaveNumberSpectrum, n: number, m: number, resolution: number): number | null {
+  const overlap = cellInBand(band, n, m);
+  // A cell the edge crosses on the Nyquist row or column is left out: the sign of its wave vector
+  // is ambiguous there (InitialSpectrum.waveVectors). Only a coarser band's upper edge at the
+  // largest patch ratio, N/2, reaches that far.
+  if (overlap === 'none' || (overlap === 'part' && Math.max(Math.abs(n), Math.abs(m)) >= resolution / 2)) return null;
+  const dk = (2 * Math.PI) / band.patchSize;
+  if (overlap === 'whole') return spectrum(dk * n, dk * m);
+  const points = edgeCellPoints(band, n, m);
+  if (points.length === 0) return null;
+  let sum = 0;
+  for (const [x, y] of points) sum += spectrum(dk * x, dk * y);
+  return sum / EDGE_CELL_SPLIT ** 2;
+}
+
+/**
  * One cascade's h̃0, drawing 2·N² deviates from `random` in texel order. With `size` below N, only
  * the texels of reducedSpectrum(·, size) are computed and kept, on that grid.
  */
@@ -139,13 +168,15 @@ function createInitialSpectrum(
   const density = new Float32Array(size * size);
   const waveVectors = new Float32Array(4 * size * size);
 
-  // Ψ over the band first: h̃0(k) needs Ψ(−k), which is then the opposite texel's, evaluated once.
+  // Ψ̄ over the band first: h̃0(k) needs Ψ̄(−k), which is then the opposite texel's, evaluated once.
   const psi = new Float64Array(size * size);
+  const inBand = new Uint8Array(size * size);
   for (let j = 0; j < n; j++) {
     for (let i = 0; i < n; i++) {
-      if (kept(i, j) && keepsMode(band, signedFrequency(i, n), signedFrequency(j, n))) {
-        psi[place[j] * size + place[i]] = spectrum(dk * signedFrequency(i, n), dk * signedFrequency(j, n));
-      }
+      if (!kept(i, j)) continue;
+      const cell = cellMean(band, spectrum, signedFrequency(i, n), signedFrequency(j, n), n);
+      psi[place[j] * size + place[i]] = cell ?? 0;
+      inBand[place[j] * size + place[i]] = cell === null ? 0 : 1;
     }
   }
   for (let j = 0; j < n; j++) {
@@ -160,12 +191,12 @@ function createInitialSpectrum(
       const kx = dk * signedFrequency(i, n);
       const texel = place[j] * size + place[i];
       const k = Math.sqrt(kx * kx + kz * kz);
-      const inBand = keepsMode(band, signedFrequency(i, n), signedFrequency(j, n));
       // The opposite texel is at exactly (−kx, −kz) off the rows and columns 0 and N/2 (there a 0
-      // would become −0, or −N/2 stay −N/2); where its Ψ is 0 it may be outside the band: ask.
+      // would become −0, or −N/2 stay −N/2); where its Ψ̄ is 0 it may be outside the band: ask.
       const opposite = ((size - place[j]) % size) * size + ((size - place[i]) % size);
       const mirrored = i % (n / 2) !== 0 && j % (n / 2) !== 0 && psi[opposite] !== 0;
-      const scale = inBand ? Math.sqrt(((mirrored ? psi[opposite] : spectrum(-kx, -kz)) * dk * dk) / 4) : 0;
+      const psiOpposite = mirrored ? psi[opposite] : (cellMean(band, spectrum, -signedFrequency(i, n), -signedFrequency(j, n), n) ?? 0);
+      const scale = inBand[texel] ? Math.sqrt((psiOpposite * dk * dk) / 4) : 0;
       h0[2 * texel] = random.nextNormal() * scale;
       h0[2 * texel + 1] = random.nextNormal() * scale;
       density[texel] = psi[texel];
@@ -173,7 +204,7 @@ function createInitialSpectrum(
       waveVectors[4 * texel] = i === n / 2 ? 0 : kx;
       waveVectors[4 * texel + 1] = j === n / 2 ? 0 : kz;
       waveVectors[4 * texel + 2] = k > 0 ? 1 / k : 0;
-      waveVectors[4 * texel + 3] = inBand ? frequencyIndex(k, { depth: params.depth, repeatPeriod }) : 0;
+      waveVectors[4 * texel + 3] = inBand[texel] ? frequencyIndex(k, { depth: params.depth, repeatPeriod }) : 0;
     }
   }
 

@@ -82,9 +82,23 @@ export function facingEye(view: Vec3Node, normal: Vec3Node): Vec3Node {
 }
 
 /**
+ * slopeTaps.glsl's slopeTap(0 … SLOPE_TAPS − 1): each tap's offset in units of s along the plane of
+ * incidence and across it, and its weight (the 5-point Gauss–Hermite rule along, Abramowitz &
+ * Stegun 25.4.46, its node 0 split across; the GLSL says why).
+ */
+const SLOPE_TAPS: readonly (readonly [number, number, number])[] = [
+  [1.3556262, 0, 0.2220759],
+  [-1.3556262, 0, 0.2220759],
+  [2.85697, 0, 0.0112574],
+  [-2.85697, 0, 0.0112574],
+  [0, 1.3693064, 0.2666667],
+  [0, -1.3693064, 0.2666667],
+];
+
+/**
  * seaLighting.glsl's filteredSkyReflection: the mean of R(n)·L_sky(reflect(v, n)) over the pixel's
- * unresolved Gaussian slopes, by a 3-point Gauss–Hermite rule along the view and a two-node split
- * across it (four taps). Returns the mean reflectance and the radiance it weights.
+ * unresolved Gaussian slopes, over slopeTaps.glsl's taps (SLOPE_TAPS). Returns the mean reflectance
+ * and the radiance it weights.
  */
 export function filteredSkyReflection(
   view: Vec3Node,
@@ -100,10 +114,9 @@ export function filteredSkyReflection(
   const s = sqrt(variance.mul(0.5));
   let reflected: Vec3Node = vec3(0, 0, 0);
   let weighted: FloatNode = float(0);
-  for (const [side, alongView] of [[1, true], [-1, true], [1, false], [-1, false]] as const) {
-    const tilt = alongView ? along.mul(1.7320508) : across.mul(1.2247449);
-    const facet = facingEye(view, normalize(normal.sub(tilt.mul(s.mul(side)))));
-    const weight = alongView ? 1 / 6 : 1 / 3;
+  for (const [alongOffset, acrossOffset, weight] of SLOPE_TAPS) {
+    const tilt = along.mul(alongOffset).add(across.mul(acrossOffset));
+    const facet = facingEye(view, normalize(normal.sub(tilt.mul(s))));
     const facetReflectance = fresnelReflectance(dot(view, facet).negate(), n1, n2);
     const direction = reflect(view, facet);
     // A ray reflected downwards would hit the next wave: mirrored up.

@@ -43,6 +43,7 @@ import { seaMaterial, skyMaterial, type SeaUniforms } from './seaNodes';
 import { skyUniforms } from './skyNodes';
 import { seaLightingValues } from '../render/seaLighting';
 import { checkCoordinates } from '../oceanQueries';
+import { checkRenderer } from '../device/deviceFor';
 
 export interface WebGPUOceanOptions extends Partial<SimulationParameters> {
   /** Refractive index of water n_w, (1, 3] (ShadingOptions.ior). @defaultValue 1.333 */
@@ -86,6 +87,25 @@ const NOT_YET: Record<string, { drawn: unknown; missing: string }> = {
   shadingMode: { drawn: 'full', missing: "the debug shading modes (shadingMode other than 'full')" },
 };
 
+/**
+ * The options in `options` that ask for what this Ocean does not draw yet on `renderer`, each with
+ * what is missing in words: the constructor refuses the first; <fft-ocean renderer="webgpu"> and
+ * the app leave them out and say so. The GPU FFT (path 'gpu') runs in compute shaders, on the
+ * WebGPU backend only.
+ */
+export function notDrawnYet(options: object, renderer: WebGPURenderer): { name: string; missing: string }[] {
+  const notDrawn = Object.entries(NOT_YET)
+    .filter(([name, { drawn }]) => {
+      const value = (options as Record<string, unknown>)[name];
+      return value !== undefined && value !== drawn;
+    })
+    .map(([name, { missing }]) => ({ name, missing }));
+  if ((options as WebGPUOceanOptions).path === 'gpu' && !isWebGPUBackend(renderer)) {
+    notDrawn.push({ name: 'path', missing: "the GPU FFT (path 'gpu') on WebGPURenderer's WebGL2 backend: there the fields come from the JS FFT ('auto' or 'js')" });
+  }
+  return notDrawn;
+}
+
 const SIMULATION_KEYS = Object.keys(SIMULATION_OPTIONS) as (keyof SimulationParameters)[];
 const OPTION_KEYS: readonly string[] = [...SIMULATION_KEYS, 'ior', 'scatterColor', 'absorption', 'causticPower', 'causticColor', 'worker', ...Object.keys(SUN_OPTIONS), 'sunDirection', 'path', ...Object.keys(NOT_YET)];
 
@@ -118,12 +138,8 @@ export class Ocean extends Object3D {
     this.name = 'OceanWebGPU';
     this.support = floatTextureSupport(renderer);
     checkOptionNames(options, OPTION_KEYS, 'options', { allowed: 'an object of options, such as { windSpeed: 12 }' });
-    for (const [name, { drawn, missing }] of Object.entries(NOT_YET)) {
-      const value = (options as Record<string, unknown>)[name];
-      if (value !== undefined && value !== drawn) {
-        throw new UnsupportedError(name, `three-fft-ocean/webgpu does not draw ${missing} yet; use the WebGL Ocean (three-fft-ocean) for it`);
-      }
-    }
+    const [first] = notDrawnYet(options, renderer);
+    if (first) throw new UnsupportedError(first.name, `three-fft-ocean/webgpu does not draw ${first.missing} yet; use the WebGL Ocean (three-fft-ocean) for it`);
     const simulation: Partial<SimulationParameters> = {};
     for (const key of SIMULATION_KEYS) if (options[key] !== undefined) (simulation as Record<string, unknown>)[key] = options[key];
     this.parameters = validateParameters(simulation);
@@ -274,10 +290,7 @@ export class Ocean extends Object3D {
  * the queries do: without filtering it would differ from heightAt, so that is refused.
  */
 function floatTextureSupport(renderer: WebGPURenderer): FloatTextureSupport {
-  const candidate = renderer as Partial<WebGPURenderer> | null;
-  if (candidate?.isWebGPURenderer !== true) {
-    throw new UnsupportedError('renderer', "three-fft-ocean/webgpu's Ocean draws with three's WebGPURenderer (three/webgpu); for a WebGLRenderer use the Ocean of three-fft-ocean");
-  }
+  checkRenderer(renderer, 'three-fft-ocean/webgpu');
   if (!renderer.initialized) throw new UnsupportedError('renderer', 'the WebGPURenderer is not initialized yet: await renderer.init() before making the Ocean');
   const backend = renderer.backend as { isWebGPUBackend?: boolean };
   const filterable = backend.isWebGPUBackend
@@ -290,14 +303,14 @@ function floatTextureSupport(renderer: WebGPURenderer): FloatTextureSupport {
   return { filterable, renderable: false };
 }
 
-/** `renderer` where `path` asks for the compute FFT ('gpu'), else null; 'gpu' needs the WebGPU backend. */
+/** `renderer` where `path` asks for the compute FFT ('gpu'; notDrawnYet refuses it on the WebGL2 backend), else null. */
 function computeFftRenderer(renderer: WebGPURenderer, path: WebGPUOceanOptions['path']): WebGPURenderer | null {
   if (path !== undefined && path !== 'auto' && path !== 'js' && path !== 'gpu') throw new ParameterError('path', path, "'auto', 'js' or 'gpu'");
-  if (path !== 'gpu') return null;
-  if ((renderer.backend as { isWebGPUBackend?: boolean }).isWebGPUBackend !== true) {
-    throw new UnsupportedError('path', "path 'gpu', the GPU FFT, runs in compute shaders, on WebGPURenderer's WebGPU backend; on its WebGL2 backend use path 'auto' or 'js'");
-  }
-  return renderer;
+  return path === 'gpu' ? renderer : null;
+}
+
+function isWebGPUBackend(renderer: WebGPURenderer): boolean {
+  return (renderer.backend as { isWebGPUBackend?: boolean }).isWebGPUBackend === true;
 }
 
 function linearColor(name: string, value: ColorInput | undefined, fallback: readonly [number, number, number]): [number, number, number] {

@@ -6,7 +6,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import type { BufferGeometry, Material, Mesh } from 'three';
-import { BEACH_FACING, CLIFF_FACING, HILLS, Island, ISLAND_BOUNDS, islandSeabed, islandTerrainGeometry } from '../../src/objects/island';
+import { BEACH_FACING, CLIFF_FACING, HILLS, Island, ISLAND_BOUNDS, islandSeabed, islandTerrainGeometry, SHALLOWS_DEPTH } from '../../src/objects/island';
 
 const { depthAt, bounds } = islandSeabed();
 const [xMin, zMin, xMax, zMax] = bounds;
@@ -119,7 +119,7 @@ describe('Island', () => {
     expect(geometry.getAttribute('color').count).toBe(position.count);
   });
 
-  it('splits its triangles at the waterline: the sea floor wholly under y = 0, the rest reaching it, every triangle once', () => {
+  it('splits its triangles at the shallows: the sea floor wholly under y = −3 m, its bounding box too, the rest reaching it, every triangle once', () => {
     const whole = islandTerrainGeometry().getIndex()!.count;
     const position = geometry.getAttribute('position');
     const highest = (part: BufferGeometry, i: number) => {
@@ -133,11 +133,13 @@ describe('Island', () => {
     for (let i = 0; i < floor.getIndex()!.count; i += 3) floorTop = Math.max(floorTop, highest(floor, i));
     let groundLowest = Infinity;
     for (let i = 0; i < geometry.getIndex()!.count; i += 3) groundLowest = Math.min(groundLowest, highest(geometry, i));
-    expect(floorTop).toBeLessThan(0);
-    expect(groundLowest).toBeGreaterThanOrEqual(0);
+    expect(floorTop).toBeLessThan(-SHALLOWS_DEPTH);
+    expect(groundLowest).toBeGreaterThanOrEqual(-SHALLOWS_DEPTH);
     expect(floor.getIndex()!.count + geometry.getIndex()!.count).toBe(whole);
+    // What the reflection's capture judges (belowWaterMeshes): the floor's box, not every vertex's.
+    expect(floor.boundingBox!.max.y).toBe(floorTop);
     // Most of the terrain is sea floor: the share the reflection no longer draws.
-    console.log(`island: ${floor.getIndex()!.count / 3} of ${whole / 3} triangles under the water`);
+    console.log(`island: ${floor.getIndex()!.count / 3} of ${whole / 3} triangles under the shallows`);
     expect(floor.getIndex()!.count).toBeGreaterThan(whole / 2);
   });
 

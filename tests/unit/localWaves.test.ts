@@ -347,8 +347,11 @@ describe('local waves over a seabed', () => {
   const groupSpeed = (k: number, d: number) => (d === Infinity ? 0.5 : 0.5 * (1 + (2 * k * d) / Math.sinh(2 * k * d))) * (angularFrequency(k, d) / k);
   const grid: LocalWaveGrid = { resolution: 512, cellSize: 0.5, depth: Infinity };
   const centre = (grid.resolution / 2) * grid.cellSize;
+  /** Bounds that take in the whole plane, and the mask localWaterUnder fills. */
+  const everywhere = [-Infinity, -Infinity, Infinity, Infinity] as const;
+  const mask = new Float32Array(grid.resolution * grid.resolution);
   /** A flat bottom `depth` m deep under the whole grid: the water localWaterUnder finds there. */
-  const flat = (depth: number) => localWaterUnder(grid, 0, 0, () => depth, Infinity);
+  const flat = (depth: number) => localWaterUnder(grid, 0, 0, { depthAt: () => depth, bounds: everywhere }, Infinity, mask);
 
   /** A stone (radius `radius` m) at the grid's centre over `water`, stepped exactly to each time in `times`: the radial profiles. */
   function rings(water: LocalWaveWater, radius: number, times: number[]): number[][] {
@@ -369,7 +372,7 @@ describe('local waves over a seabed', () => {
     // Deeper than the grid is wide (256 m) everywhere: every mode is in deep water.
     expect(flat(300).depth).toBe(Infinity);
     // A beach along x: land for x < 40 m, then 1:20.
-    const beach = localWaterUnder(grid, 0, 0, (x) => (x - 40) / 20, 30);
+    const beach = localWaterUnder(grid, 0, 0, { depthAt: (x) => (x - 40) / 20, bounds: everywhere }, 30, mask);
     const landTexels = Math.ceil(40 / grid.cellSize) + 1; // x = 0 … 40 m: depth ≤ 0
     expect(beach.wet![landTexels - 1]).toBe(0);
     expect(beach.wet![landTexels]).toBe(1);
@@ -377,9 +380,36 @@ describe('local waves over a seabed', () => {
     const columns = Array.from({ length: grid.resolution - landTexels }, (_, c) => (landTexels + c) * grid.cellSize);
     expect(beach.depth).toBeCloseTo(columns.reduce((sum, x) => sum + (x - 40) / 20, 0) / columns.length, 9);
     // All land: the open depth kept, nothing wet.
-    const island = localWaterUnder(grid, 0, 0, () => -1, 30);
+    const island = localWaterUnder(grid, 0, 0, { depthAt: () => -1, bounds: everywhere }, 30, mask);
     expect(island.depth).toBe(30);
     expect(island.wet!.every((w) => w === 0)).toBe(true);
+  });
+
+  it('reads the seabed only within its bounds, the rest open water: the same water as a read of every texel, in the mask it is given', () => {
+    // A mound with land at its top, in a 120 × 110 m rectangle that covers part of the grid (256 m
+    // a side, its texel (0, 0) at x = −20 m, z = 30 m); 12 m deep beyond the rectangle.
+    const bounds = [10, 40, 130, 150] as const;
+    const inside = (x: number, z: number) => x >= bounds[0] && x <= bounds[2] && z >= bounds[1] && z <= bounds[3];
+    const mound = (x: number, z: number) => 8 - 10 * Math.exp(-(((x - 70) / 30) ** 2) - ((z - 95) / 30) ** 2);
+    let reads = 0;
+    const seabed = {
+      bounds,
+      depthAt: (x: number, z: number, outside: number) => {
+        reads++;
+        return inside(x, z) ? mound(x, z) : outside;
+      },
+    };
+    const everyTexel = localWaterUnder(grid, -20, 30, { bounds: everywhere, depthAt: (x, z) => (inside(x, z) ? mound(x, z) : 12) }, 12, new Float32Array(mask.length));
+    const read = localWaterUnder(grid, -20, 30, seabed, 12, mask);
+    expect(read.wet).toBe(mask);
+    expect(Array.from(read.wet!)).toEqual(Array.from(everyTexel.wet!));
+    expect(read.depth).toBeCloseTo(everyTexel.depth, 9);
+    expect(read.wet!.some((w) => w === 0)).toBe(true);
+    // The rectangle's 241 × 221 texels (0.5 m apart) and one more round them, not the grid's 512².
+    expect(reads).toBe(243 * 223);
+    // The mask is filled again, not added to: out at sea, all wet and none of it land.
+    expect(localWaterUnder(grid, 1000, 1000, seabed, 12, mask)).toEqual({ depth: 12, wet: null });
+    expect(mask.every((w) => w === 1)).toBe(true);
   });
 
   it('in 2 m of water a stone\'s disturbance spreads at the shallow-water speed √(g·d) (within 10 %)', () => {
@@ -421,7 +451,7 @@ describe('local waves over a seabed', () => {
   it('over land nothing moves: a stone dropped by a beach leaves the sand flat, the water beside it waving', () => {
     const small: LocalWaveGrid = { resolution: 128, cellSize: 0.5, depth: Infinity };
     // Land for x < 20 m, then a 1:20 beach.
-    const water = localWaterUnder(small, 0, 0, (x) => (x - 20) / 20, Infinity);
+    const water = localWaterUnder(small, 0, 0, { depthAt: (x) => (x - 20) / 20, bounds: everywhere }, Infinity, new Float32Array(128 * 128));
     const solver = new CpuLocalWaves(small);
     solver.setWater(water);
     solver.step({ shiftX: 0, shiftZ: 0, impulses: [{ x: 26, z: 32, cos: 1, sin: 0, halfLength: 1, halfBeam: 1, height: -0.3 }], dt: 0 });

@@ -244,6 +244,12 @@ describe('the names shells write options by, and the one list of paths', () => {
     expect(() => parseOptionText(RUN_OPTIONS, 'path', 'webgpu')).toThrow(`path must be 'auto', 'gpu' or 'js'; got "webgpu"`);
   });
 
+  it("the renderer is 'webgl' or 'webgpu', and a bad one is named with both", () => {
+    expect(parseOptionText(RUN_OPTIONS, 'renderer', 'webgpu')).toBe('webgpu');
+    expect(parseOptionText(RUN_OPTIONS, 'renderer', ' webgl ')).toBe('webgl');
+    expect(() => parseOptionText(RUN_OPTIONS, 'renderer', 'vulkan')).toThrow(`renderer must be 'webgl' or 'webgpu'; got "vulkan"`);
+  });
+
   it('time runs at most 1000 times as fast, either way', () => {
     expect(parseOptionText(RUN_OPTIONS, 'timeScale', '-1000')).toBe(-1000);
     expect(() => parseOptionText(RUN_OPTIONS, 'timeScale', '1001')).toThrow(ParameterError);

@@ -45,9 +45,9 @@ describe('the seas every capture hides', () => {
   });
 });
 
-// The reflection's near plane is the water, y = 0 (sceneReflection.ts): a mesh whose vertices all
-// lie under it is clipped whole there, so its capture leaves it out. Only meshes whose vertices
-// are where their geometry's bounding box says are judged.
+// The reflection's near plane is horizontal, at the water or down at its troughs (sceneReflection.ts):
+// a mesh whose vertices all lie under it is clipped whole there, so its capture leaves it out.
+// Only meshes whose vertices are where their geometry's bounding box says are judged.
 describe('the meshes the reflection leaves out: wholly under the water', () => {
   test('a box whose top is under y = 0 is left out; one reaching above, and any whose vertices may move, are kept', () => {
     const scene = new Scene();
@@ -74,7 +74,11 @@ describe('the meshes the reflection leaves out: wholly under the water', () => {
     scene.add(group);
     scene.updateMatrixWorld();
     const out: Object3D[] = [];
-    belowWaterMeshes(scene, out);
+    belowWaterMeshes(scene, out, 0);
     expect(out.map((o) => o.id)).toEqual([sunk, child, inGroup].map((o) => o.id));
+    // Under a plane 1.5 m down (a rough sea's troughs), the box sunk 1 cm reaches above it and is kept.
+    const underTroughs: Object3D[] = [];
+    belowWaterMeshes(scene, underTroughs, -1.5);
+    expect(underTroughs.map((o) => o.id)).toEqual([child, inGroup].map((o) => o.id));
   });
 });

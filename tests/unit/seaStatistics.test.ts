@@ -47,7 +47,7 @@ function meanSquareHeight(fields: CpuWaveFields): number {
   return sum / (d.length / 4);
 }
 
-/** Σ Ψ(k)·Δk² over the modes a cascade keeps (its density is Ψ there and 0 elsewhere). */
+/** Σ Ψ̄(k)·Δk² over the modes a cascade keeps (its density is Ψ̄, the mean of Ψ over the part of the mode’s cell in the band, and 0 elsewhere). */
 function bandVariance(s: InitialSpectrum): number {
   const dk = (2 * Math.PI) / s.patchSize;
   let sum = 0;
@@ -118,9 +118,8 @@ const SEAS: SeaCase[] = [
 const SEEDS = Array.from({ length: 20 }, (_, i) => 101 + 37 * i);
 const TIMES = [0, 55.1];
 /**
- * N = 128: at N = 64 the default patch ratio 5.8 puts each band edge only √(N·L_c/(2·L_{c+1})) ≈ 2.35
- * fundamentals into the finer grid, where its few lattice points undersample the steep Ψ ∝ k⁻⁴ and
- * the finer cascades hold only ~80 % of their bands' variance (see the known-defect test below).
+ * N = 128, the 'medium' quality level's grid (N = 64, 'low''s, has its own test of m0 below, since
+ * 20 seeds of the full fields there would prove little more).
  */
 const RESOLUTION = 128;
 
@@ -189,12 +188,12 @@ describe('(a) the simulated sea has the significant wave height 4·√m0 (Holthu
     });
   }
 
-  it.fails('KNOWN DEFECT, expected to fail until fixed: at N = 64 the cascades keep m0 within 2 % (they lose 3.5–9 %)', { timeout: 60_000 }, () => {
-    // Measured: m0_band/m0 = 0.965 (defaults), 0.925 (PM 15 m/s, 4 cascades), 0.916 (TMA 5 m),
-    // 0.909 (swell 12 s, 4 cascades); 0.982–0.993 at N = 128 and 0.9995–1.0005 at N = 256. Per
-    // cascade, the lattice sum Σ Ψ·Δk² of each finer band is only ~0.80 of ∫Ψ d²k over the band: its
-    // lower edge lies 2.35 fundamentals out, where the lattice points (|n| = 2.83, 3, 3.16, …) sample
-    // Ψ ∝ k⁻⁴ far too sparsely (cascadeBands.ts allows edges down to 1 fundamental, at ratio N/2).
+  it('at N = 64 too the cascades keep m0 within 2 %', { timeout: 60_000 }, () => {
+    // Each band's lower edge lies only 2.35 fundamentals into the finer grid here (patches 5.8×
+    // apart), where the lattice holds 21 points inside the disc of 17.4 cells and Ψ ∝ k⁻⁴ is steep:
+    // weighed by Ψ at their centres, the modes kept 0.909–0.965 of m0 (swell 12 s … the defaults).
+    // Each mode carries ∫Ψ over its cell's part in the band instead (initialSpectrum.ts), so the
+    // bands' lattice sums are their integrals, as at N = 256.
     const worst = SEAS.map(({ changes }) => {
       const params = validateParameters({ ...changes, resolution: 64 });
       const { m0 } = spectralMoments(params, params.patchSizes[params.patchSizes.length - 1]);

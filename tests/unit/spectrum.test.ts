@@ -443,7 +443,7 @@ describe('createCascadeSpectra with several cascades', () => {
   };
   const p = params({ resolution: 32, patchSizes: [3, 15, 60], seed: 31, depth: 7 });
 
-  it('draws h̃0(k) = (ξr + i·ξi)·√(Ψ(−k)·Δk²/4) inside each band, largest patch first, two deviates per texel', () => {
+  it('draws h̃0(k) = (ξr + i·ξi)·√(Ψ̄(−k)·Δk²/4) in each band, Ψ̄ = Ψ inside, largest patch first, two deviates per texel', () => {
     const spectra = createCascadeSpectra(p, lopsided);
     const n = p.resolution;
     expect(spectra.map((s) => s.patchSize)).toEqual([3, 15, 60]);
@@ -455,28 +455,39 @@ describe('createCascadeSpectra with several cascades', () => {
       expect(s.band).toEqual(bands[c]);
       const dk = (2 * Math.PI) / p.patchSizes[c];
       let worst = 0;
-      let kept = 0;
+      let [inside, crossed] = [0, 0];
       let zeroOutside = true;
       for (let j = 0; j < n; j++) {
         for (let i = 0; i < n; i++) {
           const t = j * n + i;
           const [kx, kz] = [dk * signed(i, n), dk * signed(j, n)];
-          const k = Math.sqrt(kx * kx + kz * kz);
           const [xr, xi] = [random.nextNormal(), random.nextNormal()];
-          if (!(k >= bands[c].low && k < bands[c].high)) {
+          // The mode's cell, the square of side Δk around it: its nearest and farthest |k|.
+          const [a, b] = [Math.abs(signed(i, n)), Math.abs(signed(j, n))];
+          const nearest = dk * Math.hypot(Math.max(0, a - 0.5), Math.max(0, b - 0.5));
+          const farthest = dk * Math.hypot(a + 0.5, b + 0.5);
+          if (farthest <= bands[c].low || nearest >= bands[c].high) {
             zeroOutside &&= s.amplitudes[4 * t] === 0 && s.amplitudes[4 * t + 1] === 0 && s.density[t] === 0;
             continue;
           }
-          kept++;
-          const scale = Math.sqrt((lopsided(-kx, -kz) * dk * dk) / 4);
+          const whole = nearest >= bands[c].low && farthest < bands[c].high;
+          if (whole) inside++;
+          else if (s.density[t] > 0) crossed++;
+          // Ψ̄(−k) is the opposite texel's (exactly −k off the Nyquist row and column, which no
+          // crossed cell of these bands reaches); inside the band it is Ψ(−k) itself.
+          const opposite = ((n - j) % n) * n + ((n - i) % n);
+          const psi = whole ? lopsided(-kx, -kz) : s.density[opposite];
+          const scale = Math.sqrt((psi * dk * dk) / 4);
           // Float32 storage: 6e-8 relative; the slack is relative to the larger of the two parts.
           const slack = 1.2e-7 * scale * Math.max(Math.abs(xr), Math.abs(xi), 1) + 1e-300;
           worst = Math.max(worst, (Math.abs(s.amplitudes[4 * t] - xr * scale) + Math.abs(s.amplitudes[4 * t + 1] - xi * scale)) / slack);
           // Ψ(k) itself, as float32, for inspection.
-          worst = Math.max(worst, Math.abs(s.density[t] - lopsided(kx, kz)) / (6e-8 * lopsided(kx, kz) + 1e-300));
+          if (whole) worst = Math.max(worst, Math.abs(s.density[t] - lopsided(kx, kz)) / (6e-8 * lopsided(kx, kz) + 1e-300));
         }
       }
-      expect(kept, `cascade ${c}`).toBeGreaterThan(20);
+      expect(inside, `cascade ${c}`).toBeGreaterThan(20);
+      // Every band here but the finest's corner has an edge inside the grid, crossing cells.
+      expect(crossed, `cascade ${c}`).toBeGreaterThan(0);
       expect(zeroOutside, `cascade ${c}`).toBe(true);
       expect(worst, `cascade ${c}`).toBeLessThanOrEqual(1);
     }
@@ -501,9 +512,13 @@ describe('createCascadeSpectra with several cascades', () => {
     const [, , coarsest] = createCascadeSpectra(p, lopsided);
     const [alone] = createCascadeSpectra({ ...p, patchSizes: [60] }, lopsided);
     const n = p.resolution;
+    const dk = (2 * Math.PI) / 60;
     let compared = 0;
     for (let t = 0; t < n * n; t++) {
-      if (coarsest.density[t] === 0) continue;
+      // Modes whose cells lie wholly below the band's high edge: there the band holds all of the
+      // cell, as the single cascade does (a cell the edge crosses holds only its share).
+      const [a, b] = [Math.abs(signed(t % n, n)), Math.abs(signed(Math.floor(t / n), n))];
+      if (coarsest.density[t] === 0 || dk * Math.hypot(a + 0.5, b + 0.5) >= coarsest.band.high) continue;
       // Same deviate, same Ψ, same Δk: bit-identical.
       expect(coarsest.amplitudes[4 * t]).toBe(alone.amplitudes[4 * t]);
       expect(coarsest.amplitudes[4 * t + 1]).toBe(alone.amplitudes[4 * t + 1]);

@@ -4,14 +4,14 @@
  * suite runs is the newest tested release; a release older than the range gets an UnsupportedError
  * naming it and the range (from the check itself, and from constructing an Ocean, before the
  * renderer is touched); a newer one runs after one console note. Whether the GPU FFT may run on it
- * is decided by its internals alone (missingThreeInternals), and a renderer that is not a
- * WebGLRenderer is refused by name rather than failing inside three.js.
+ * is decided by its internals alone (missingThreeInternals). (Which renderer each Ocean takes:
+ * deviceFor.test.ts.)
  */
 import { readFileSync } from 'node:fs';
 import type { WebGLRenderer } from 'three';
 import { afterEach, describe, expect, it, vi } from 'vitest';
 import { missingThreeInternals } from '../../src/device/webgl2/threeInternals';
-import { checkThreeRelease, checkWebGLRenderer, SUPPORTED_THREE_RELEASES, THREE_PEER_RANGE } from '../../src/threeRelease';
+import { checkThreeRelease, SUPPORTED_THREE_RELEASES, THREE_PEER_RANGE } from '../../src/threeRelease';
 import { UnsupportedError } from '../../src/parameters/options';
 import { Ocean } from '../../src/ocean';
 
@@ -78,27 +78,6 @@ describe("three.js's internals the GPU FFT reaches into", () => {
   }
 });
 
-describe('checkWebGLRenderer', () => {
-  it("accepts three.js's WebGLRenderer by its flag", () => {
-    expect(() => checkWebGLRenderer({ isWebGLRenderer: true })).not.toThrow();
-  });
-
-  it("refuses three.js's WebGPURenderer (its WebGPU and its WebGL2 backend alike) by name", () => {
-    for (const renderer of [{ isRenderer: true, isWebGPURenderer: true }, { isRenderer: true }]) {
-      const check = () => checkWebGLRenderer(renderer);
-      expect(check).toThrow(UnsupportedError);
-      expect(check).toThrow("this is three.js's WebGPURenderer, which it does not drive yet");
-    }
-  });
-
-  it('refuses anything else, naming the parameter', () => {
-    for (const renderer of [undefined, null, {}, 12, 'webgl']) {
-      expect(() => checkWebGLRenderer(renderer)).toThrow("renderer: three-fft-ocean's Ocean draws with three.js's WebGLRenderer");
-      expect(() => checkWebGLRenderer(renderer)).toThrow('not a three.js renderer');
-    }
-  });
-});
-
 describe('an Ocean on a three.js older than the range', () => {
   afterEach(() => {
     vi.doUnmock('three');
@@ -117,9 +96,9 @@ describe('an Ocean on a three.js older than the range', () => {
 });
 
 describe('an Ocean given a renderer it cannot drive', () => {
-  it('throws an UnsupportedError naming the renderer, not a TypeError from inside three.js', () => {
+  it('throws an UnsupportedError naming the entry point for it, not a TypeError from inside three.js', () => {
     const construct = () => new Ocean({ isRenderer: true, isWebGPURenderer: true } as unknown as WebGLRenderer);
     expect(construct).toThrow(UnsupportedError);
-    expect(construct).toThrow("three.js's WebGPURenderer");
+    expect(construct).toThrow("this is three.js's WebGPURenderer: use the Ocean of three-fft-ocean/webgpu for it");
   });
 });

@@ -55,6 +55,7 @@ function changed(): AppState {
     buoys: true,
     boat: true,
     scene: 'island',
+    renderer: 'webgpu',
     path: 'js',
     quality: 'low',
     targetFps: 20,

@@ -2,7 +2,8 @@
  * The app's island (?scene=island, the panel's "scene"; src/app/sceneChoice.ts, src/objects/island.ts)
  * in real Chromium: the island stands in the sea where the view from offshore of its beach shows
  * its sand, grass and rock; the URL keeps the choice across a reload; the panel takes it away and
- * brings it back with the camera at its beach; an unknown scene is the app's usual warning.
+ * brings it back with the camera at its beach; the cliff's reflection in the surf has no lone sky
+ * pixels; an unknown scene is the app's usual warning.
  */
 import { expect, test, type Page } from '@playwright/test';
 import { BEACH_FACING, ISLAND_VIEW, islandSeabed } from '../../../src/objects/island';
@@ -10,13 +11,13 @@ import { BEACH_FACING, ISLAND_VIEW, islandSeabed } from '../../../src/objects/is
 /** A calm sea (1 m waves would hide a beach 200 m off from 5 m up), a fixed time and quality. */
 const CALM = 'resolution=64&windSpeed=4&t=5&paused=1&quality=high';
 
-async function openApp(page: Page, query: string): Promise<string[]> {
+async function openApp(page: Page, query: string, size = { width: 480, height: 270 }): Promise<string[]> {
   const errors: string[] = [];
   page.on('pageerror', (error) => errors.push(error.message));
   page.on('console', (message) => {
     if (message.type() === 'error') errors.push(message.text());
   });
-  await page.setViewportSize({ width: 480, height: 270 });
+  await page.setViewportSize(size);
   await page.goto(`/?${query}`);
   await page.waitForFunction(() => window.oceanApp !== undefined);
   await rendered(page);
@@ -133,6 +134,41 @@ test('?scene=island: the island stands offshore of the camera, sand on its beach
   expect(await memory()).toBe(withoutIsland);
   expect(withIsland - withoutIsland).toBeGreaterThanOrEqual(5);
   expect(errors).toEqual([]);
+});
+
+/**
+ * Pixels brighter (r + g + b) by more than 75 than each of the 16 pixels two away (the ring around
+ * the 3×3 block): lone specks, which no picture of the sea has but where a single pixel's shading
+ * differs from its neighbours'. `data` is RGBA, rows bottom first or top first alike.
+ */
+function loneBrightPixels({ width, height, data }: { width: number; height: number; data: ArrayLike<number> }): number {
+  const sum = (x: number, y: number) => data[4 * (y * width + x)] + data[4 * (y * width + x) + 1] + data[4 * (y * width + x) + 2];
+  let count = 0;
+  for (let y = 2; y < height - 2; y++) {
+    for (let x = 2; x < width - 2; x++) {
+      const centre = sum(x, y) - 75;
+      let lone = true;
+      for (let d = -2; d <= 2 && lone; d++) lone = centre > sum(x + d, y - 2) && centre > sum(x + d, y + 2) && centre > sum(x - 2, y + d) && centre > sum(x + 2, y + d);
+      if (lone) count++;
+    }
+  }
+  return count;
+}
+
+test('the cliff reflected in a 12 m/s surf: no lone sky pixels where rays from the troughs meet its foot', async ({ page }) => {
+  // The view of docs/shores.md, from (−20, 10, 215) towards (−10, 0, 150): the cliff on the right.
+  const view = 'scene=island&windSpeed=12&t=12&paused=1&quality=high&cam=-20,10,215,-81.25,-8.65';
+  const count = async (reflections: string) => {
+    await openApp(page, `${view}&reflections=${reflections}`, { width: 960, height: 540 });
+    return loneBrightPixels(await page.evaluate(() => window.oceanApp.capturePixels()));
+  };
+  const sky = await count('sky');
+  const scene = await count('scene');
+  console.log(`lone bright pixels: ${scene} with reflections 'scene', ${sky} with 'sky'`);
+  // Measured: 'scene' 50 with the mirror render cut at y = 0 (its cut base left no coverage for
+  // rays from the troughs: sceneReflection.ts), 27 cut one RMS height down (10 three down); 'sky' 4.
+  expect(scene).toBeLessThan(35);
+  expect(sky).toBeLessThan(10);
 });
 
 test('?scene=volcano shows a warning naming scene and what it may be, and the open sea is used', async ({ page }) => {

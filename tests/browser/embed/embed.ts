@@ -3,7 +3,7 @@
  * object on a renderer of the test's own, with pixel and memory probes for the Playwright tests
  * (embed.spec.ts, lifecycle.spec.ts).
  */
-import { BoxGeometry, Mesh, MeshBasicMaterial, PerspectiveCamera, Scene, WebGLRenderer } from 'three';
+import { BoxGeometry, Mesh, MeshBasicMaterial, PerspectiveCamera, RenderTarget, Scene, SRGBColorSpace, WebGLRenderer } from 'three';
 import '../../../src/embed/register';
 import { defineFftOceanElement, FftOceanElement } from '../../../src/embed/fftOceanElement';
 import { Ocean } from '../../../src/index';
@@ -78,7 +78,7 @@ async function reset(): Promise<void> {
   await frames(2); // the removed elements have freed what they held (a microtask after removal)
 }
 
-const harness = { Ocean, FftOceanElement, WebGLRenderer, Scene, PerspectiveCamera, Mesh, BoxGeometry, MeshBasicMaterial, defineFftOceanElement, pixels, frames, create, drawn, reset };
+const harness = { Ocean, FftOceanElement, WebGLRenderer, Scene, PerspectiveCamera, Mesh, BoxGeometry, MeshBasicMaterial, RenderTarget, SRGBColorSpace, defineFftOceanElement, pixels, frames, create, drawn, reset };
 
 declare global {
   interface Window {

@@ -176,18 +176,16 @@ test('backlit crests glow in the scatter colour, and not without it (Atlas, GDC 
   expect(Math.abs(added[0])).toBeLessThan(0.05 * added[2]);
 });
 
-test('every quality level shows the sea as bright as \'high\' does, far within 3 levels, near within 4', async () => {
+test('every quality level shows the sea as bright as \'high\' does, near and far within 3 levels', async () => {
   // The levels' grids (adaptiveQuality.ts: N 1024 … 32, 3 or 2 cascades) and render scales
   // (1 … 0.3) differ; the slopes a grid leaves out are in the light (resolved + unresolved =
-  // Cox–Munk), so the mean colour of a band of the sea must not move with them. The sun 30° high,
-  // 120° to the left: no glitter in view, the sky's reflection and the water's colour. Near, 'low'
-  // and 'lowest' measure 3.7 levels darker in red at t = 3 s and 4.0 at t = 11 s (main: 5.2 at
-  // t = 3 s). Most of it is the render scale, not the grid: 'high''s grid (foam off) at a render
-  // scale of 0.5 is 2.9 levels darker in red than at 1, while 'low''s grid (N = 64, no 13.7 m
-  // cascade) at a scale of 1 is 1.2 darker; foam adds about as much at every level. A larger
-  // footprint moves resolved slopes into the Gaussian taps of seaLighting.glsl (mip filtering),
-  // and at 10 m/s those carry less light than the resolved choppy normals did (at 3 m/s the sign
-  // turns: +1.2 levels at a scale of 0.5). The near band is held to 4 levels, the far one to 3.
+  // Cox–Munk), so the mean colour of a band of the sea must not move with them (the issue's bound,
+  // 3 levels). The sun 30° high, 120° to the left: no glitter in view, the sky's reflection and the
+  // water's colour. Near, the slopes of a coarse grid or a small render scale are mostly in the
+  // Gaussian taps of slopeTaps.glsl rather than in the pixels' normals, and the taps' mean
+  // reflectance is what they must get right: with a 3-point rule 'low' measured 3.7 levels darker
+  // in red than 'high' (3.4 with the cells' variance of the spectrum kept at N = 64), with the
+  // 5-point rule ≤ 1.4 in every channel.
   const request: Partial<ViewRequest> = { eyeHeight: 20, pitch: 4, yaw: 120, png: true };
   const bands = [] as { level: string; near: Vec3; far: Vec3 }[];
   for (const quality of ['high', 'medium', 'low', 'lowest'] as const) {
@@ -199,7 +197,7 @@ test('every quality level shows the sea as bright as \'high\' does, far within 3
   console.log(bands.map((b) => `${b.level}: near ${b.near.map((c) => c.toFixed(1)).join(', ')}; far ${b.far.map((c) => c.toFixed(1)).join(', ')}`).join('\n'));
   for (const band of bands.slice(1)) {
     for (let c = 0; c < 3; c++) {
-      expect(Math.abs(band.near[c] - bands[0].near[c]), `${band.level} near, channel ${c}`).toBeLessThanOrEqual(4);
+      expect(Math.abs(band.near[c] - bands[0].near[c]), `${band.level} near, channel ${c}`).toBeLessThanOrEqual(3);
       expect(Math.abs(band.far[c] - bands[0].far[c]), `${band.level} far, channel ${c}`).toBeLessThanOrEqual(3);
     }
   }

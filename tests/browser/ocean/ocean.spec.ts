@@ -651,7 +651,7 @@ test.describe('a renderer the Ocean cannot drive', () => {
       }
     });
     expect(thrown?.name).toBe('UnsupportedError');
-    expect(thrown?.message).toContain("this is three.js's WebGPURenderer, which it does not drive yet");
+    expect(thrown?.message).toContain("this is three.js's WebGPURenderer: use the Ocean of three-fft-ocean/webgpu for it");
   });
 });
 

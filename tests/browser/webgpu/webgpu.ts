@@ -155,7 +155,7 @@ async function heightAgreement(cx: number, cz: number, side: number, t: number, 
     drawn.push(y);
     const h = ocean.heightAt(x, z);
     queried.push(h);
-    bound.push(interpolationBound(ocean, x, z, h, finestTexel(ocean.waveLayers)));
+    bound.push(interpolationBound(ocean, x, z, finestTexel(ocean.waveLayers)));
     sumSquares += y * y;
   }
   surface.material = shaded;
@@ -169,18 +169,23 @@ async function heightAgreement(cx: number, cz: number, side: number, t: number, 
  * How far the drawn triangles may lie from the surface at (x, z): the mesh is linear between
  * vertices, and linear interpolation over an edge of length L misses a function by at most
  * L²/8·max|f''| along it (the remainder of linear interpolation, e.g. Burden & Faires, Numerical
- * Analysis, Theorem 3.3). L is the diagonal of a cell `cell` m wide, stretched by
- * up to 1.5 where the choppy displacement pulls vertices apart; f'' is heightAt's second difference
- * over half a metre along x, z and both diagonals, the largest of the four.
+ * Analysis, Theorem 3.3). L is the diagonal of a cell `cell` m wide, stretched by up to 1.5 where
+ * the choppy displacement pulls vertices apart; max|f''| is taken over the triangle's reach, at
+ * (x, z) and half an edge away along x and z: heightAt's second difference over half a metre along
+ * x, z and both diagonals, the largest of them all.
  */
-function interpolationBound(ocean: Ocean, x: number, z: number, h: number, cell: number): number {
+function interpolationBound(ocean: Ocean, x: number, z: number, cell: number): number {
   const step = 0.5;
-  let curvature = 0;
-  for (const [dx, dz] of [[1, 0], [0, 1], [Math.SQRT1_2, Math.SQRT1_2], [Math.SQRT1_2, -Math.SQRT1_2]]) {
-    const second = (ocean.heightAt(x + step * dx, z + step * dz) - 2 * h + ocean.heightAt(x - step * dx, z - step * dz)) / (step * step);
-    curvature = Math.max(curvature, Math.abs(second));
-  }
   const edge = 1.5 * Math.SQRT2 * cell;
+  let curvature = 0;
+  for (const [cx, cz] of [[0, 0], [1, 0], [-1, 0], [0, 1], [0, -1]]) {
+    const [px, pz] = [x + (cx * edge) / 2, z + (cz * edge) / 2];
+    const h = ocean.heightAt(px, pz);
+    for (const [dx, dz] of [[1, 0], [0, 1], [Math.SQRT1_2, Math.SQRT1_2], [Math.SQRT1_2, -Math.SQRT1_2]]) {
+      const second = (ocean.heightAt(px + step * dx, pz + step * dz) - 2 * h + ocean.heightAt(px - step * dx, pz - step * dz)) / (step * step);
+      curvature = Math.max(curvature, Math.abs(second));
+    }
+  }
   return (edge * edge * curvature) / 8;
 }
 
