@@ -115,9 +115,19 @@ export class CpuWaveFields {
 
   /** Computes every field at time t (seconds). Allocates nothing. */
   update(t: number): void {
+    this.spectraAt(t);
+    this.fft.runToTexels(this.textures);
+  }
+
+  /**
+   * The four packed spectra of waveFieldLayout.ts at time t (s), untransformed, in the JS FFT's
+   * input (at inputIndex): for an FFT that runs elsewhere (the compute FFT, computeWaveFields.ts).
+   * The fields are left as they were. Valid until the next call or update.
+   */
+  spectraAt(t: number): Pick<BatchedInverseFft2D, 'inputReal' | 'inputImag' | 'inputIndex'> {
     fillPhaseTable(this.phaseTable, t, this.repeatPeriod);
     this.evolve(this.fft, false);
-    this.fft.runToTexels(this.textures);
+    return this.fft;
   }
 
   /**

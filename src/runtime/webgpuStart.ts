@@ -37,7 +37,7 @@ export async function startWebGPUOcean(canvas: HTMLCanvasElement, options: Recor
   const renderer = new WebGPURenderer({ canvas, antialias: false, forceWebGL: fallback !== null, powerPreference: 'high-performance' });
   try {
     await renderer.init();
-    const notDrawn = notDrawnYet(options);
+    const notDrawn = notDrawnYet(options, renderer);
     const accepted = Object.fromEntries(Object.entries(options).filter(([name]) => !notDrawn.some((left) => left.name === name)));
     const ocean = new Ocean(renderer, accepted as WebGPUOceanOptions);
     const backend = (renderer.backend as { isWebGPUBackend?: boolean }).isWebGPUBackend === true ? 'WebGPU' : 'WebGL2';

@@ -10,7 +10,8 @@
  *
  * This first slice draws the FFT cascades of the same sea as the WebGL Ocean (the same parameters,
  * spectra and seeded amplitudes, computed by the JS FFT: src/fft/cpuFieldTextures.ts, in a worker
- * by default, uploaded as float textures each frame; there is no GPU FFT on WebGPURenderer yet),
+ * by default, uploaded as float textures each frame; with path 'gpu' on the WebGPU backend, by the
+ * compute FFT instead: src/fft/computeWaveFields.ts),
  * displaced and lit in TSL (seaNodes.ts, lightNodes.ts) as the WebGL Ocean's ocean.frag lights it:
  * the reflection of its analytic sky (skyNodes.ts, also drawn behind everything), the light from
  * under the surface, the caustics, the sun's glint and the crests' glow; on its horizon rings round
@@ -27,6 +28,7 @@ import { Mesh, Object3D, SphereGeometry, Vector2, Vector3, type BufferGeometry }
 import type { MeshBasicNodeMaterial, WebGPURenderer } from 'three/webgpu';
 import { uniform } from 'three/tsl';
 import { CpuFieldTextures, type FloatTextureSupport } from '../fft/cpuFieldTextures';
+import { ComputeWaveFields } from '../fft/computeWaveFields';
 import { FftCascade, type FftBackend } from '../layers/fftCascade';
 import { heightAt, normalAt } from '../layers/surfaceQuery';
 import { orderLayers, type WaveLayer } from '../layers/waveLayer';
@@ -64,7 +66,7 @@ export interface WebGPUOceanOptions extends Partial<SimulationParameters> {
   cloudCover?: number;
   /** Compute the JS FFT in a Web Worker (SimulationOptions.worker). @defaultValue true where Worker exists */
   worker?: boolean;
-  /** 'auto' or 'js': both the JS FFT here; 'gpu' throws (no GPU FFT on WebGPURenderer yet). @defaultValue 'auto' */
+  /** 'auto' or 'js': the JS FFT; 'gpu': the compute FFT, on the WebGPU backend only (it throws on the WebGL2 backend). @defaultValue 'auto' */
   path?: 'auto' | 'js' | 'gpu';
   /** Only 'sky' (the default here): scene reflections are not drawn yet. @defaultValue 'sky' */
   reflections?: 'sky' | 'scene';
@@ -78,7 +80,6 @@ export interface WebGPUOceanOptions extends Partial<SimulationParameters> {
 
 /** Options the WebGL Ocean has and this one does not yet: the value it draws, and what is missing. */
 const NOT_YET: Record<string, { drawn: unknown; missing: string }> = {
-  path: { drawn: 'js', missing: "the GPU FFT (path 'gpu'): the fields come from the JS FFT ('auto' or 'js')" },
   reflections: { drawn: 'sky', missing: "scene reflections (reflections: 'scene'): the sea reflects its sky" },
   refractions: { drawn: 'sky', missing: "objects seen under the water (refractions: 'scene')" },
   localWaves: { drawn: false, missing: 'local waves (stones, hulls)' },
@@ -87,21 +88,26 @@ const NOT_YET: Record<string, { drawn: unknown; missing: string }> = {
 };
 
 /**
- * The options in `options` that ask for what this Ocean does not draw yet, each with what is
- * missing in words: the constructor refuses the first; <fft-ocean renderer="webgpu"> and the app
- * leave them out and say so.
+ * The options in `options` that ask for what this Ocean does not draw yet on `renderer`, each with
+ * what is missing in words: the constructor refuses the first; <fft-ocean renderer="webgpu"> and
+ * the app leave them out and say so. The GPU FFT (path 'gpu') runs in compute shaders, on the
+ * WebGPU backend only.
  */
-export function notDrawnYet(options: object): { name: string; missing: string }[] {
-  return Object.entries(NOT_YET)
+export function notDrawnYet(options: object, renderer: WebGPURenderer): { name: string; missing: string }[] {
+  const notDrawn = Object.entries(NOT_YET)
     .filter(([name, { drawn }]) => {
       const value = (options as Record<string, unknown>)[name];
-      return value !== undefined && !(name === 'path' && value === 'auto') && value !== drawn;
+      return value !== undefined && value !== drawn;
     })
     .map(([name, { missing }]) => ({ name, missing }));
+  if ((options as WebGPUOceanOptions).path === 'gpu' && !isWebGPUBackend(renderer)) {
+    notDrawn.push({ name: 'path', missing: "the GPU FFT (path 'gpu') on WebGPURenderer's WebGL2 backend: there the fields come from the JS FFT ('auto' or 'js')" });
+  }
+  return notDrawn;
 }
 
 const SIMULATION_KEYS = Object.keys(SIMULATION_OPTIONS) as (keyof SimulationParameters)[];
-const OPTION_KEYS: readonly string[] = [...SIMULATION_KEYS, 'ior', 'scatterColor', 'absorption', 'causticPower', 'causticColor', 'worker', ...Object.keys(SUN_OPTIONS), 'sunDirection', ...Object.keys(NOT_YET)];
+const OPTION_KEYS: readonly string[] = [...SIMULATION_KEYS, 'ior', 'scatterColor', 'absorption', 'causticPower', 'causticColor', 'worker', ...Object.keys(SUN_OPTIONS), 'sunDirection', 'path', ...Object.keys(NOT_YET)];
 
 /** The one warning of what the WebGL Ocean draws by default and this one does not, once per page. */
 let warnedOfMissing = false;
@@ -113,6 +119,8 @@ export class Ocean extends Object3D {
   private parameters: SimulationParameters;
   private readonly uniforms: SeaUniforms;
   private readonly useWorker: boolean;
+  /** The renderer whose compute shaders transform the cascades (path 'gpu'), or null for the JS FFT. */
+  private readonly computeFft: WebGPURenderer | null;
   private readonly support: FloatTextureSupport;
   private readonly surface: Mesh<BufferGeometry, MeshBasicNodeMaterial>;
   /** The rings' uniforms of the surface's material (made with it by surfaceMaterial), placed under the camera before each draw. */
@@ -130,7 +138,7 @@ export class Ocean extends Object3D {
     this.name = 'OceanWebGPU';
     this.support = floatTextureSupport(renderer);
     checkOptionNames(options, OPTION_KEYS, 'options', { allowed: 'an object of options, such as { windSpeed: 12 }' });
-    const [first] = notDrawnYet(options);
+    const [first] = notDrawnYet(options, renderer);
     if (first) throw new UnsupportedError(first.name, `three-fft-ocean/webgpu does not draw ${first.missing} yet; use the WebGL Ocean (three-fft-ocean) for it`);
     const simulation: Partial<SimulationParameters> = {};
     for (const key of SIMULATION_KEYS) if (options[key] !== undefined) (simulation as Record<string, unknown>)[key] = options[key];
@@ -156,6 +164,7 @@ export class Ocean extends Object3D {
       sky: skyUniforms(sun.elevation, sun.azimuth, cloudCover),
     };
     this.useWorker = options.worker ?? typeof Worker !== 'undefined';
+    this.computeFft = computeFftRenderer(renderer, options.path);
     this.buildCascades();
     this.cellsPerRing = cellsPerRingForViewport(renderer.getDrawingBufferSize(this.drawingBuffer).y);
     this.surface = new Mesh(createHorizonGridGeometry(this.cellsPerRing), this.surfaceMaterial());
@@ -264,7 +273,8 @@ export class Ocean extends Object3D {
   /** The cascades of the parameters: their textures ask nothing more of the renderer than `support`, read once. */
   private buildCascades(): void {
     const params = this.parameters;
-    const backend: FftBackend<null> = (_none, spectrum) => new CpuFieldTextures(this.support, spectrum, this.useWorker);
+    const renderer = this.computeFft;
+    const backend: FftBackend<null> = renderer ? (_none, spectrum) => new ComputeWaveFields(renderer, spectrum) : (_none, spectrum) => new CpuFieldTextures(this.support, spectrum, this.useWorker);
     this.cascades = createCascadeSpectra(params).map((spectrum, cascade) => new FftCascade(null, spectrum, { params, cascade }, backend, this.useWorker));
     this.currentLayers = orderLayers(this.cascades);
     this.lastTime = NaN;
@@ -291,6 +301,16 @@ function floatTextureSupport(renderer: WebGPURenderer): FloatTextureSupport {
   }
   // The mipmap levels are made in JS (CpuFieldTextures): three's mipmap generation is not asked to render into float textures.
   return { filterable, renderable: false };
+}
+
+/** `renderer` where `path` asks for the compute FFT ('gpu'; notDrawnYet refuses it on the WebGL2 backend), else null. */
+function computeFftRenderer(renderer: WebGPURenderer, path: WebGPUOceanOptions['path']): WebGPURenderer | null {
+  if (path !== undefined && path !== 'auto' && path !== 'js' && path !== 'gpu') throw new ParameterError('path', path, "'auto', 'js' or 'gpu'");
+  return path === 'gpu' ? renderer : null;
+}
+
+function isWebGPUBackend(renderer: WebGPURenderer): boolean {
+  return (renderer.backend as { isWebGPUBackend?: boolean }).isWebGPUBackend === true;
 }
 
 function linearColor(name: string, value: ColorInput | undefined, fallback: readonly [number, number, number]): [number, number, number] {
