@@ -11,7 +11,7 @@ function hasWebGL2(): boolean {
 }
 
 if (hasWebGL2()) {
-  void import('./app');
+  void import('./app').then(({ startApp }) => startApp());
 } else {
   const message = document.createElement('div');
   message.className = 'no-webgl';
