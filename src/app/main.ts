@@ -17,7 +17,7 @@ function hasWebGL2(): boolean {
 if (parseState(location.search).state.renderer === 'webgpu') {
   void import('./appWebGPU');
 } else if (hasWebGL2()) {
-  void import('./app');
+  void import('./app').then(({ startApp }) => startApp());
 } else {
   const message = document.createElement('div');
   message.className = 'no-webgl';

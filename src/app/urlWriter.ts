@@ -13,8 +13,7 @@ export class UrlWriter {
 
   /** Writes the state into the address bar now. */
   write(): void {
-    clearTimeout(this.timer);
-    this.timer = undefined;
+    this.cancel();
     this.lastWrite = performance.now();
     const query = serializeState(this.state);
     if (location.search.slice(1) !== query) history.replaceState(history.state, '', `${location.pathname}?${query}${location.hash}`);
@@ -24,6 +23,12 @@ export class UrlWriter {
   schedule(delayMs: number): void {
     clearTimeout(this.timer);
     this.timer = setTimeout(() => this.write(), delayMs);
+  }
+
+  /** Drops a scheduled write (the app is closing). */
+  cancel(): void {
+    clearTimeout(this.timer);
+    this.timer = undefined;
   }
 
   /** At a frame rendered at `now` (ms): while time runs, t in the URL is refreshed every second. */

@@ -3,7 +3,7 @@
  * in real Chromium. Small viewports and a small FFT keep each test to a few seconds under
  * SwiftShader; pixels are read by the app right after its render (oceanApp.capturePixels).
  */
-import { expect, test, type Page } from '@playwright/test';
+import { expect, test, type Browser, type Page } from '@playwright/test';
 import { DEFAULT_PARAMETERS } from '../../../src/parameters/parameters';
 import { beaufortPreset, presetCloudCover, SEA_PRESETS } from '../../../src/spectrum/presets';
 import { seaState } from '../../../src/spectrum/seaState';
@@ -16,22 +16,86 @@ import { ALSO_ON_OLDEST_THREE } from '../shared/threeRange';
 
 type Vec3 = [number, number, number];
 
-/** Opens the app with `query`; returns the console errors and page errors it collects. */
-async function openApp(page: Page, query = '', size = { width: 480, height: 270 }, openPanel = true): Promise<string[]> {
-  const errors: string[] = [];
-  page.on('pageerror', (error) => errors.push(error.message));
-  page.on('console', (message) => {
-    if (message.type() === 'error') errors.push(message.text());
+/** What a page said: its uncaught errors, and those with the console's errors. */
+interface PageLog {
+  uncaught: string[];
+  errors: string[];
+}
+
+function listen(page: Page, log: PageLog): void {
+  page.on('pageerror', (error) => {
+    log.uncaught.push(error.message);
+    log.errors.push(error.message);
   });
-  await page.setViewportSize(size);
-  // A fixed quality level unless the test is about it: 'auto' would lower the render scale and the
-  // grid within seconds under SwiftShader, and the tests compare pictures and fields over longer.
-  await page.goto(`/?${/(^|&)quality=/.test(query) ? query : [query, 'quality=high'].filter(Boolean).join('&')}`);
-  await page.waitForFunction(() => window.oceanApp !== undefined);
-  // Narrow viewports (fast under SwiftShader) start with the panel closed.
+  page.on('console', (message) => {
+    if (message.type() === 'error') log.errors.push(message.text());
+  });
+}
+
+// A fixed quality level unless the test is about it: 'auto' would lower the render scale and the
+// grid within seconds under SwiftShader, and the tests compare pictures and fields over longer.
+const appQuery = (query: string) => (/(^|&)quality=/.test(query) ? query : [query, 'quality=high'].filter(Boolean).join('&'));
+const SIZE = { width: 480, height: 270 };
+
+/** Sets the panel open or closed (narrow viewports, fast under SwiftShader, start with it closed) and waits two frames. */
+async function settle(page: Page, openPanel: boolean): Promise<void> {
   await page.evaluate((open) => window.oceanApp.panel.gui.open(open), openPanel);
   await frames(page, 2);
-  return errors;
+}
+
+/** Loads the app with `query` into `page`. */
+async function loadApp(page: Page, query: string): Promise<void> {
+  await page.goto(`/?${appQuery(query)}`);
+  await page.waitForFunction(() => window.oceanApp !== undefined);
+}
+
+/** Opens the app with `query` on a page of its own; returns the console errors and page errors it collects. */
+async function openApp(page: Page, query = '', size = SIZE, openPanel = true): Promise<string[]> {
+  const log: PageLog = { uncaught: [], errors: [] };
+  listen(page, log);
+  await page.setViewportSize(size);
+  await loadApp(page, query);
+  await settle(page, openPanel);
+  return log.errors;
+}
+
+// One page for the tests that need none of their own (an init script, hidden capabilities, the
+// page's first load): the first to take it loads the app with its query, the others open the app
+// in it again from theirs (oceanApp.reopen disposes the running app and starts it anew from the
+// URL, as a load would, without loading the modules again).
+const sharedLog: PageLog = { uncaught: [], errors: [] };
+const sharedAppPage = sharedPages(
+  async (page) => listen(page, sharedLog),
+  async () => {
+    sharedLog.uncaught.length = 0;
+    sharedLog.errors.length = 0;
+  },
+);
+/** The shared page while a test (or a beforeAll) holds it. */
+let heldPage: Page | null = null;
+
+/**
+ * Stops the shared page's app until the next test opens it again, so that it does not draw beside
+ * the tests on other pages; then no uncaught error may have reached the page.
+ */
+async function releaseSharedPage(): Promise<void> {
+  const page = heldPage;
+  heldPage = null;
+  if (!page) return;
+  if (!page.isClosed()) await page.evaluate(() => window.oceanApp.dispose());
+  expect(sharedLog.uncaught, 'uncaught errors on the shared page').toEqual([]);
+}
+test.afterEach(releaseSharedPage);
+
+/** The shared page with the app opened again from `query`, and what the page says from now on. */
+async function reopenApp(browser: Browser, query = '', size = SIZE, openPanel = true): Promise<{ page: Page; errors: string[] }> {
+  const page = await sharedAppPage(browser);
+  heldPage = page;
+  await page.setViewportSize(size);
+  if (page.url() === 'about:blank') await loadApp(page, query);
+  else await page.evaluate((query) => window.oceanApp.reopen(query), appQuery(query));
+  await settle(page, openPanel);
+  return { page, errors: sharedLog.errors };
 }
 
 /** Waits until the app has drawn `count` more frames. */
@@ -269,9 +333,9 @@ test.describe('the app', () => {
     });
   });
 
-  test('URL → scene and panel; panel → URL; reload → the same scene and picture', async ({ page }) => {
+  test('URL → scene and panel; panel → URL; reload → the same scene and picture', async ({ browser }) => {
     const query = 'windSpeed=7.5&resolution=64&depth=35&seed=9&mode=fresnel&sunElevation=15&absorption=0.5,0.1,0.05&paused=1&t=3.5&cam=5,8,-3,20,-12';
-    const errors = await openApp(page, query);
+    const { page, errors } = await reopenApp(browser, query);
     const scene = await page.evaluate(() => {
       const { ocean, state, controls } = window.oceanApp;
       return { parameters: ocean.parameters, shading: ocean.shading, sun: ocean.sky.sunElevation, t: state.t, pose: controls.pose };
@@ -316,8 +380,8 @@ test.describe('the app', () => {
     expect(errors).toEqual([]);
   });
 
-  test('an invalid URL value shows a warning naming it, and the default is used', async ({ page }) => {
-    await openApp(page, 'windSpeed=abc&resolution=100&mode=shiny&seed=5');
+  test('an invalid URL value shows a warning naming it, and the default is used', async ({ browser }) => {
+    const { page } = await reopenApp(browser, 'windSpeed=abc&resolution=100&mode=shiny&seed=5');
     const warnings = page.locator('#status .notice.warning');
     await expect(warnings).toHaveCount(3);
     await expect(warnings.nth(0)).toBeVisible();
@@ -339,8 +403,8 @@ test.describe('the app', () => {
     await expect(warnings).toHaveCount(2);
   });
 
-  test('a bad panel value shows a warning naming it and the ocean keeps its last good value', async ({ page }) => {
-    await openApp(page, 'resolution=32&seed=3');
+  test('a bad panel value shows a warning naming it and the ocean keeps its last good value', async ({ browser }) => {
+    const { page } = await reopenApp(browser, 'resolution=32&seed=3');
     const seed = page.locator('[data-key="seed"] input');
     await seed.fill('-5');
     const warning = page.locator('#status .notice.warning[data-parameter="seed"]');
@@ -364,8 +428,8 @@ test.describe('the app', () => {
     await expect.poll(() => new URL(page.url()).searchParams.get('windSpeed')).toBe(String(SEA_PRESETS.storm.windSpeed));
   });
 
-  test('the status line and the panel\'s "Hs, Tp" line show the sea state the parameters describe', async ({ page }) => {
-    const errors = await openApp(page, 'windSpeed=17&fetch=300&resolution=64');
+  test('the status line and the panel\'s "Hs, Tp" line show the sea state the parameters describe', async ({ browser }) => {
+    const { page, errors } = await reopenApp(browser, 'windSpeed=17&fetch=300&resolution=64');
     const status = page.locator('#status .status-line');
     const panelLine = page.locator('[data-key="seaState"] input');
     for (const sea of [{ windSpeed: 17, fetch: 300 }, { windSpeed: 6, fetch: 300 }]) {
@@ -385,8 +449,8 @@ test.describe('the app', () => {
     expect(errors).toEqual([]);
   });
 
-  test('choosing a preset in the dropdown applies its whole sea state, cascade sizes included', async ({ page }) => {
-    const errors = await openApp(page, 'resolution=32&seed=3&swellHeight=2&depth=20&choppiness=1.3');
+  test('choosing a preset in the dropdown applies its whole sea state, cascade sizes included', async ({ browser }) => {
+    const { page, errors } = await reopenApp(browser, 'resolution=32&seed=3&swellHeight=2&depth=20&choppiness=1.3');
     const menu = page.locator('[data-key="preset"] select');
     const beaufort = Array.from({ length: 13 }, (_, force) => `Beaufort ${force}`);
     expect(await menu.locator('option').allTextContents()).toEqual(['', ...Object.keys(SEA_PRESETS), ...beaufort]);
@@ -418,8 +482,8 @@ test.describe('the app', () => {
     expect(errors).toEqual([]);
   });
 
-  test('switching the shading mode in the panel changes the picture', async ({ page }) => {
-    await openApp(page, 'resolution=64&paused=1&t=2');
+  test('switching the shading mode in the panel changes the picture', async ({ browser }) => {
+    const { page } = await reopenApp(browser, 'resolution=64&paused=1&t=2');
     const full = await pixels(page);
     await page.getByText('Sun & shading').click(); // the folder starts closed
     await page.locator('[data-key="mode"] select').selectOption('height');
@@ -433,8 +497,8 @@ test.describe('the app', () => {
     expect(await page.evaluate(() => window.oceanApp.ocean.surface.material.wireframe)).toBe(true);
   });
 
-  test('the caustics mode under a low sun says why it is dark, and the hint goes once the sun is high', async ({ page }) => {
-    await openApp(page, 'resolution=64&paused=1&t=2&mode=caustics&sunElevation=30');
+  test('the caustics mode under a low sun says why it is dark, and the hint goes once the sun is high', async ({ browser }) => {
+    const { page } = await reopenApp(browser, 'resolution=64&paused=1&t=2&mode=caustics&sunElevation=30');
     const hint = page.locator('#status .notice.warning[data-parameter="caustics"]');
     await expect(hint).toContainText('raise the sun above 60°');
     await page.locator('.lil-title', { hasText: 'Sun & shading' }).click(); // the folder starts closed
@@ -450,8 +514,8 @@ test.describe('the app', () => {
     await expect(hint).toHaveCount(0); // only in the caustics mode
   });
 
-  test('time: paused keeps t; slow frames advance t by real time × time scale; a stall over a second counts as one frame and the status shows the ratio', async ({ page }) => {
-    await openApp(page, 'resolution=32&paused=1&t=5', { width: 320, height: 180 });
+  test('time: paused keeps t; slow frames advance t by real time × time scale; a stall over a second counts as one frame and the status shows the ratio', async ({ browser }) => {
+    const { page } = await reopenApp(browser, 'resolution=32&paused=1&t=5', { width: 320, height: 180 });
     await page.waitForTimeout(300);
     expect(await page.evaluate(() => window.oceanApp.state.t)).toBe(5);
     const timeLine = page.locator('#status .status-time');
@@ -496,8 +560,8 @@ test.describe('the app', () => {
     await expect(timeLine).not.toContainText('time ×', { timeout: 30_000 });
   });
 
-  test('time far ahead: from t = 10^16 s (where t += dt stands still) the sea moves, as at t mod its repeat period', async ({ page }) => {
-    await openApp(page, 'resolution=32&t=1e16', { width: 320, height: 180 });
+  test('time far ahead: from t = 10^16 s (where t += dt stands still) the sea moves, as at t mod its repeat period', async ({ browser }) => {
+    const { page } = await reopenApp(browser, 'resolution=32&t=1e16', { width: 320, height: 180 });
     const times = await page.evaluate(async () => {
       const app = window.oceanApp;
       await app.capturePixels();
@@ -586,8 +650,8 @@ test.describe('the app', () => {
   });
 
   // Also on the oldest three.js: the render target is drawn like the canvas through a three.js internal (drawLikeCanvas).
-  test('quality high multisamples (4x) through its render target onto a canvas without antialiasing: the picture differs from the one without MSAA at edges only', ALSO_ON_OLDEST_THREE, async ({ page }) => {
-    await openApp(page, 'resolution=32&paused=1&t=3&quality=high', { width: 480, height: 270 });
+  test('quality high multisamples (4x) through its render target onto a canvas without antialiasing: the picture differs from the one without MSAA at edges only', ALSO_ON_OLDEST_THREE, async ({ browser }) => {
+    const { page } = await reopenApp(browser, 'resolution=32&paused=1&t=3&quality=high', { width: 480, height: 270 });
     const target = await page.evaluate(async () => {
       await window.oceanApp.capturePixels();
       const target = window.oceanApp.output.multisampleTarget;
@@ -621,8 +685,8 @@ test.describe('the app', () => {
     expect(page.url()).toContain('seed=12');
   });
 
-  test('?buoys=1 drops floating buoys ahead of the camera; they ride the water, and the panel takes them away', async ({ page }) => {
-    await openApp(page, 'resolution=64&windSpeed=12&buoys=1');
+  test('?buoys=1 drops floating buoys ahead of the camera; they ride the water, and the panel takes them away', async ({ browser }) => {
+    const { page } = await reopenApp(browser, 'resolution=64&windSpeed=12&buoys=1');
     const afloat = () =>
       page.evaluate(async () => {
         const { buoys, ocean, state } = window.oceanApp;
@@ -645,9 +709,9 @@ test.describe('the app', () => {
     expect(await page.evaluate(() => window.oceanApp.buoys === null && !window.oceanApp.scene.getObjectByName('buoys'))).toBe(true);
   });
 
-  test('a click on the sea drops a stone there: rings spread from the clicked point, and the picture shows them', async ({ page }) => {
+  test('a click on the sea drops a stone there: rings spread from the clicked point, and the picture shows them', async ({ browser }) => {
     // A calm sea seen from 20 m looking down 60°, so that the rings stand out.
-    await openApp(page, 'resolution=64&windSpeed=2&cam=0,20,0,0,-60', { width: 480, height: 270 }, false);
+    const { page } = await reopenApp(browser, 'resolution=64&windSpeed=2&cam=0,20,0,0,-60', { width: 480, height: 270 }, false);
     const before = await pixels(page);
     await page.mouse.click(240, 150);
     // Where the click's ray meets the sea, and the local waves there a few seconds on.
@@ -681,8 +745,8 @@ test.describe('the app', () => {
     expect(meanAbsDifference(before, await pixels(page))).toBeGreaterThan(1);
   });
 
-  test('?boat=1 runs a boat round its course; it leaves a wake on the local waves behind it, and the panel takes it away', async ({ page }) => {
-    await openApp(page, 'resolution=64&windSpeed=2&boat=1');
+  test('?boat=1 runs a boat round its course; it leaves a wake on the local waves behind it, and the panel takes it away', async ({ browser }) => {
+    const { page } = await reopenApp(browser, 'resolution=64&windSpeed=2&boat=1');
     await page.evaluate(async () => {
       const t0 = window.oceanApp.state.t;
       while (window.oceanApp.state.t < t0 + 8) await new Promise((resolve) => requestAnimationFrame(resolve));
@@ -795,9 +859,9 @@ async function inspectorLegibility(page: Page): Promise<{ spreads: { title: stri
   });
 }
 
-test('?inspector=1 shows the inspector, which draws the real height field (a tile matches the texture it shows); the panel takes it away', async ({ page }) => {
+test('?inspector=1 shows the inspector, which draws the real height field (a tile matches the texture it shows); the panel takes it away', async ({ browser }) => {
   // The JS path keeps the field in a DataTexture the test can read; paused, so it stays put.
-  await openApp(page, 'resolution=32&path=js&paused=1&t=7.5&inspector=1', { width: 720, height: 405 }, false);
+  const { page } = await reopenApp(browser, 'resolution=32&path=js&paused=1&t=7.5&inspector=1', { width: 720, height: 405 }, false);
   await expect.poll(() => page.evaluate(() => window.oceanApp.ocean.simulation.path)).toBe('js-worker');
   await frames(page, 10);
   const cascades = await page.evaluate(() => window.oceanApp.ocean.simulation.cascades.length);
@@ -898,13 +962,10 @@ test.describe('failures the app explains', () => {
   // The skybox tests are about what is fetched and said: the smallest viewport and FFT do (the
   // default 1280×720 window at N = 256 took seconds a load under SwiftShader).
   const SMALL = 'resolution=32&quality=high';
-  test.beforeEach(async ({ page }) => {
-    await page.setViewportSize({ width: 320, height: 180 });
-  });
+  const SMALL_SIZE = { width: 320, height: 180 };
 
-  test('a skybox that fails to load shows a warning naming it, and the generated sky stays', async ({ page }) => {
-    await page.goto(`/?skybox=/no-such-skybox/&${SMALL}`);
-    await page.waitForFunction(() => window.oceanApp !== undefined);
+  test('a skybox that fails to load shows a warning naming it, and the generated sky stays', async ({ browser }) => {
+    const { page } = await reopenApp(browser, `skybox=/no-such-skybox/&${SMALL}`, SMALL_SIZE, false);
     await expect(page.locator('.notice.warning', { hasText: 'skybox' })).toBeVisible({ timeout: 30_000 });
     await expect(page.locator('.notice.warning', { hasText: 'skybox' })).toContainText('/no-such-skybox/px.png');
     const generated = await page.evaluate(() => !window.oceanApp.ocean.sky.usingFaces);
@@ -920,6 +981,7 @@ test.describe('failures the app explains', () => {
     // One page load: the first folder through the URL (the warning, the sky, the URL that drops it),
     // the others through the same function the app loads its URL's skybox with (appView.ts).
     const [first, ...others] = ['https://tracker.example/sky/', '//tracker.example/sky/', 'data:image/png;base64,AAAA/'];
+    await page.setViewportSize(SMALL_SIZE);
     await page.goto(`/?skybox=${encodeURIComponent(first)}&${SMALL}`);
     await page.waitForFunction(() => window.oceanApp !== undefined);
     const refusal = `skybox must be a folder URL on ${new URL(page.url()).origin}`;
@@ -962,9 +1024,8 @@ test.describe('failures the app explains', () => {
     expect(requested).toContain('https://sky.example/faces/px.png');
   });
 
-  test('the shipped skybox loads from the URL', async ({ page }) => {
-    await page.goto(`/?skybox=/skybox/clear-afternoon/&${SMALL}`);
-    await page.waitForFunction(() => window.oceanApp !== undefined);
+  test('the shipped skybox loads from the URL', async ({ browser }) => {
+    const { page } = await reopenApp(browser, `skybox=/skybox/clear-afternoon/&${SMALL}`, SMALL_SIZE, false);
     await expect.poll(() => page.evaluate(() => window.oceanApp.ocean.sky.usingFaces), { timeout: 30_000 }).toBe(true);
     await expect(page.locator('.notice.warning', { hasText: 'skybox' })).toHaveCount(0);
   });
@@ -973,11 +1034,10 @@ test.describe('failures the app explains', () => {
   const FALLBACK_QUERY = 'resolution=64&paused=1&t=7.5';
   let reference: Buffer;
   test.beforeAll(async ({ browser }) => {
-    const page = await browser.newPage();
-    await openApp(page, FALLBACK_QUERY, { width: 320, height: 180 }, false);
+    const { page } = await reopenApp(browser, FALLBACK_QUERY, SMALL_SIZE, false);
     await frames(page, 3);
     reference = await pixels(page);
-    await page.close();
+    await releaseSharedPage();
   });
 
   for (const [device, hidden, running, reason] of [
@@ -992,7 +1052,7 @@ test.describe('failures the app explains', () => {
     test(`on a device with ${device} the sea falls back, says why, and looks the same`, async ({ page }) => {
       const weaker = page;
       await withHiddenCapabilities(weaker, hidden);
-      await openApp(weaker, FALLBACK_QUERY, { width: 320, height: 180 }, false);
+      await openApp(weaker, FALLBACK_QUERY, SMALL_SIZE, false);
       await frames(weaker, 6); // the JS worker's fields arrive a frame or two later
       const report = await weaker.evaluate(() => window.oceanApp.ocean.path);
       expect(report.preference).toBe('auto');

@@ -1,6 +1,5 @@
 import { expect, test, type Page } from '@playwright/test';
-import { spawnSync } from 'node:child_process';
-import { existsSync, readdirSync, readFileSync, statSync } from 'node:fs';
+import { existsSync, readdirSync, readFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import type { DataTexture, WebGLRenderer } from 'three';
 import type { FftOceanElement } from '../../../src/embed/fftOceanElement';
@@ -8,6 +7,7 @@ import type { Ocean } from '../../../src/ocean';
 import { DEFAULT_PARAMETERS } from '../../../src/parameters/parameters';
 import { PNG } from 'pngjs';
 import { serveDirectory } from '../../../scripts/static-server.mjs';
+import { ensureBuiltLibrary } from '../shared/builtLibrary';
 
 // The example pages (served by Vite, as in the app build) and the built library (dist/lib)
 // loaded by a plain page through an import map.
@@ -227,27 +227,10 @@ test.describe('the gallery (examples/index.html)', () => {
 
 test.describe('the built library (dist/lib) in a page without a bundler', () => {
   const root = resolve(import.meta.dirname, '../../..');
-  const bundle = join(root, 'dist/lib/three-fft-ocean.js');
-
-  /** Newest modification time of the files the library is built from. */
-  function newestSource(): number {
-    let newest = 0;
-    const visit = (path: string) => {
-      if (!existsSync(path)) return;
-      const info = statSync(path);
-      if (info.isDirectory()) for (const entry of readdirSync(path)) visit(join(path, entry));
-      else newest = Math.max(newest, info.mtimeMs);
-    };
-    for (const path of ['src', 'shaders', 'vite.config.ts', 'tsconfig.build.json', 'package.json']) visit(join(root, path));
-    return newest;
-  }
 
   test.beforeAll(() => {
-    // This part tests build output, so it builds the library first when it is missing or stale
-    // (npm run build:lib: vite build --mode lib and tsc declarations, a few seconds).
-    if (existsSync(bundle) && statSync(bundle).mtimeMs >= newestSource()) return;
-    const result = spawnSync('npm', ['run', 'build:lib'], { cwd: root, encoding: 'utf8' });
-    if (result.status !== 0) throw new Error(`npm run build:lib failed:\n${result.stdout}\n${result.stderr}`);
+    // This part tests build output, so it builds the library first when it is missing or stale.
+    ensureBuiltLibrary();
   });
 
   test('the bundle keeps three.js external and carries the shaders, the worker and the types', () => {
