@@ -1,5 +1,5 @@
 import { expect, test } from '@playwright/test';
-import { BROWSER_ARGS, findBrowser } from '../../../scripts/browser.mjs';
+import { WEBGPU_BROWSER } from '../shared/webgpuBrowser';
 
 // The compute FFT (src/fft/computeFft.ts) on SwiftShader's WebGPU adapter, which Chromium gives
 // localhost pages with --enable-unsafe-webgpu (../shared/BROWSER.md): its fields equal the JS FFT's
@@ -7,7 +7,7 @@ import { BROWSER_ARGS, findBrowser } from '../../../scripts/browser.mjs';
 // term-by-term DFT of all at small N) too, so that an error both FFTs shared would still show. Then
 // what is built on it: a cascade's fields (ComputeWaveFields) against the JS path's, and the WebGPU
 // Ocean on path 'gpu' against path 'js'.
-test.use({ launchOptions: { executablePath: findBrowser() ?? undefined, args: [...BROWSER_ARGS, '--enable-unsafe-webgpu'] } });
+test.use(WEBGPU_BROWSER);
 
 const SIZES = [16, 32, 64, 128, 256, 512];
 /** Sizes also checked against the term-by-term DFT (N⁴ operations per field). */

@@ -1,13 +1,13 @@
 import { expect, test, type Page } from '@playwright/test';
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { PNG } from 'pngjs';
-import { BROWSER_ARGS, findBrowser } from '../../../scripts/browser.mjs';
+import { WEBGPU_BROWSER } from '../shared/webgpuBrowser';
 import type { RendererStatus } from '../../../src/embed/fftOceanElement';
 
 // The shells on three's WebGPURenderer: <fft-ocean renderer="webgpu"> and the app's
 // ?renderer=webgpu, on SwiftShader's WebGPU adapter (--enable-unsafe-webgpu, ../shared/BROWSER.md)
 // and, where a page has no navigator.gpu, on WebGPURenderer's WebGL2 backend.
-test.use({ launchOptions: { executablePath: findBrowser() ?? undefined, args: [...BROWSER_ARGS, '--enable-unsafe-webgpu'] } });
+test.use(WEBGPU_BROWSER);
 
 /** What a page said: uncaught errors, console warnings and notes. */
 interface PageLog {

@@ -1,15 +1,16 @@
 import { expect, test, type Page } from '@playwright/test';
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { PNG } from 'pngjs';
-import { BROWSER_ARGS, findBrowser } from '../../../scripts/browser.mjs';
+import { WEBGPU_BROWSER } from '../shared/webgpuBrowser';
 
 /** A decoded picture. */
 type Picture = InstanceType<typeof PNG>;
 
 // three-fft-ocean/webgpu on a real WebGPURenderer: its WebGL2 backend (forceWebGL, SwiftShader's
 // WebGL2) and its WebGPU backend (SwiftShader's WebGPU adapter, which Chromium gives localhost
-// pages with --enable-unsafe-webgpu: ../shared/BROWSER.md). This file alone launches with that flag.
-test.use({ launchOptions: { executablePath: findBrowser() ?? undefined, args: [...BROWSER_ARGS, '--enable-unsafe-webgpu'] } });
+// pages with --enable-unsafe-webgpu: ../shared/BROWSER.md), one Chromium for the files that need it
+// (../shared/webgpuBrowser.ts).
+test.use(WEBGPU_BROWSER);
 test.describe.configure({ mode: 'serial' });
 
 let page: Page;
