@@ -691,8 +691,8 @@ test("an Ocean's first frame draws the sea: the grid the drawing buffer asks for
   expect(result.spread).toBeGreaterThan(5);
 });
 
-test("update(t, camera): the local waves' grid follows the camera given, stays without one, and a bad camera is refused naming it", async ({ page }) => {
-  await openOcean(page, 160, 90);
+test("update(t, camera): the local waves' grid follows the camera given, stays without one, and a bad camera is refused naming it", async ({ browser }) => {
+  const page = await sharedOcean(browser);
   const result = await page.evaluate(() => {
     const { Ocean, ParameterError, PerspectiveCamera, renderer } = window.ocean;
     const ocean = new Ocean(renderer, { resolution: 16, worker: false });
