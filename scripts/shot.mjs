@@ -70,7 +70,7 @@ const HELP_END = `
 Encode frames into a video with e.g.: ffmpeg -framerate 30 -i frames/frame-%04d.png -pix_fmt yuv420p ocean.mp4
 Exit codes: 0 done, 1 failure (no browser, the build, WebGL), 2 usage error (a bad or unknown option).`;
 
-class UsageError extends Error {}
+export class UsageError extends Error {}
 
 /**
  * Splits the command line into this script's options and the scene options for the page (kept
