@@ -1,5 +1,6 @@
 import { openRobustnessPage as openPage } from './robustnessPage';
 import { expect, test } from '@playwright/test';
+import { sharedPages } from '../shared/sharedPages';
 
 // Hostile input, generated in the page (fast-check; tests/browser/robustness/robustness.ts) against the
 // real Ocean and <fft-ocean> in WebGL2: every call either works or is refused with a ParameterError
@@ -10,6 +11,15 @@ import { expect, test } from '@playwright/test';
 
 const SEED = 20261124;
 
+// The runs share one page: each makes its own renderer and Oceans or elements and frees them
+// (robustness.ts), so nothing of one reaches the next. `problems`: the page's errors since it loaded.
+let problems: string[] = [];
+const sharedPage = sharedPages(
+  async (page) => {
+    problems = await openPage(page);
+  },
+  () => Promise.resolve(),
+);
 
 /** Per kind of call: made, and refused (a ParameterError or a warning). */
 type Tally = Record<string, { calls: number; refused: number }>;
@@ -21,8 +31,8 @@ function describeTally(tally: Tally): string {
 }
 
 for (const path of ['gpu', 'js'] as const) {
-  test(`Ocean's setters on the ${path} path: hostile calls work or throw a ParameterError naming the option, and the sea stays finite`, async ({ page }) => {
-    const problems = await openPage(page);
+  test(`Ocean's setters on the ${path} path: hostile calls work or throw a ParameterError naming the option, and the sea stays finite`, async ({ browser }) => {
+    const page = await sharedPage(browser);
     const runs = 100;
     const started = Date.now();
     const report = await page.evaluate(([path, runs, seed]) => window.robustness.fuzzOcean(path, runs, seed), [path, runs, SEED] as const);
@@ -39,8 +49,8 @@ for (const path of ['gpu', 'js'] as const) {
   });
 }
 
-test('<fft-ocean>: hostile attributes and times are taken or refused with a warning naming them, and the sea stays finite', async ({ page }) => {
-  const problems = await openPage(page);
+test('<fft-ocean>: hostile attributes and times are taken or refused with a warning naming them, and the sea stays finite', async ({ browser }) => {
+  const page = await sharedPage(browser);
   const runs = 60;
   const started = Date.now();
   const report = await page.evaluate(([runs, seed]) => window.robustness.fuzzElement(runs, seed), [runs, SEED] as const);
