@@ -623,7 +623,7 @@ test('a frame that fails to draw: the box says so and the page gets fft-ocean-er
     el.ocean!.update = () => {
       throw new Error('a failure inside the frame');
     };
-    await new Promise((resolve) => setTimeout(resolve, 1000));
+    await window.embed.frames(2); // the element's next frame throws, however long it takes
     const message = el.shadowRoot!.querySelector('[part="message"]');
     return { events, message: message?.textContent ?? null };
   });
