@@ -372,7 +372,7 @@ describe('createCascadeSpectra with one Phillips cascade (the report’s h̃0)',
     expect(Math.abs(sumImag / count - 1)).toBeLessThan(5 * Math.sqrt(2 / count));
     // ξr·ξi: mean 0, variance 1 (independent real and imaginary parts).
     expect(Math.abs(sumCross / count)).toBeLessThan(5 / Math.sqrt(count));
-  }, 30_000);
+  });
 
   it('has no NaN or Infinity for no wind, a 60 m/s gale, and N = 1024 (built from at most 2·N² values of Ψ)', () => {
     for (const p of [params({ windSpeed: 0 }), params({ windSpeed: 60 }), params({ resolution: 1024 })]) {
@@ -406,7 +406,7 @@ describe('createCascadeSpectra with one Phillips cascade (the report’s h̃0)',
         expect(spectrum.amplitudes.some((x) => x !== 0)).toBe(true);
       }
     }
-  }, 30_000);
+  });
 });
 
 describe('createCascadeSpectrum (what a query worker builds its copy from)', () => {
