@@ -6,6 +6,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import type { BufferGeometry, Material, Mesh } from 'three';
+import { captureChanges } from '../../src/render/sceneCapture';
 import { BEACH_FACING, CLIFF_FACING, HILLS, Island, ISLAND_BOUNDS, islandSeabed, islandTerrainGeometry, SHALLOWS_DEPTH, WHOLE_FLOOR_DEPTH } from '../../src/objects/island';
 
 const { depthAt, bounds } = islandSeabed();
@@ -208,8 +209,8 @@ describe('Island', () => {
     expect(gg).toBeGreaterThan(gb);
   });
 
-  it('dispose() frees every geometry and material it made', () => {
-    const owned = new Set<BufferGeometry | Material>();
+  it("dispose() frees every geometry and material it made, the sea floor's stand-in too, and takes the stand-in off", () => {
+    const owned = new Set<BufferGeometry | Material>([island.seaFloorStandIn]);
     island.traverse((object) => {
       const mesh = object as Mesh;
       if (mesh.geometry) owned.add(mesh.geometry);
@@ -217,8 +218,15 @@ describe('Island', () => {
     });
     const freed = new Set<unknown>();
     for (const resource of owned) resource.addEventListener('dispose', () => freed.add(resource));
+    const swapped = (): Mesh[] => {
+      const swap: Mesh[] = [];
+      captureChanges(island, undefined, [], swap);
+      return swap;
+    };
+    expect(swapped()).toEqual([island.seaFloor]);
     island.dispose();
-    expect(owned.size).toBeGreaterThanOrEqual(6); // terrain, posts, planks, wood, hull and cabin
+    expect(owned.size).toBeGreaterThanOrEqual(7); // terrain, its stand-in, posts, planks, wood, hull and cabin
     expect(freed.size).toBe(owned.size);
+    expect(swapped()).toEqual([]);
   });
 });
