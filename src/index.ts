@@ -38,6 +38,7 @@ export { GpuWaveFields, supportedGpuPrecision, type GpuPrecision } from './fft/g
 export { BatchedInverseFft2D } from './fft/fft';
 export { OceanSurface } from './render/oceanSurface';
 export type { ReflectionLayers } from './render/sceneReflection';
+export { setCaptureStandIn } from './render/sceneCapture';
 export { OceanMaterial, type OceanShadingOptions } from './render/oceanMaterial';
 export { EYE_SIDE, type EyeSide, type RingPlacement, type SeaSurfaceMaterial, type SeaSurfaceMeshMaterial } from './render/seaSurfaceMaterial';
 export {

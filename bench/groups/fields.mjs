@@ -3,9 +3,12 @@
 //   fields       CpuWaveFields.update(t) in Node ("js"); in headless Chromium (SwiftShader WebGL2)
 //                GpuWaveFields.update(t) ("gpu-rgba32f", "gpu-rgba16f"), timed with a timer query
 //                and with a 1-pixel readPixels sync, and CpuWaveFields.update(t) ("js-browser").
+//   spectrum     (in Node, after the fields) createCascadeSpectra of the default cascades at
+//                N = 256: what building the sea's initial spectra costs (the unit tests bound its
+//                work, in evaluations of the spectrum, not its time).
 import { openReady, withTimeout } from '../lib/browser.mjs';
 import { emit, emitGpu, log } from '../lib/output.mjs';
-import { BROWSER_ROUNDS, BROWSER_STEP_TIMEOUT_MS, BROWSER_WARMUP_ROUNDS, SIZES } from '../lib/settings.mjs';
+import { BROWSER_ROUNDS, BROWSER_STEP_TIMEOUT_MS, BROWSER_WARMUP_ROUNDS, CASCADE_N, SIZES } from '../lib/settings.mjs';
 import { stats, timeInterleaved } from '../lib/stats.mjs';
 
 /** The fields rows of CpuWaveFields in Node ("js"); `server` loads the sources (ssrLoadModule). */
@@ -23,6 +26,10 @@ export async function node({ server, results }) {
     results.jsFields[n] = row.ms;
     emit({ bench: 'fields', N: n, path: 'js', ...row });
   }
+  log(`spectrum N=${CASCADE_N}: createCascadeSpectra in Node`);
+  const params = validateParameters({ resolution: CASCADE_N });
+  const [builds] = timeInterleaved([{ prepare: () => {}, run: () => createCascadeSpectra(params) }], 2000);
+  emit({ bench: 'spectrum', N: CASCADE_N, cascades: params.patchSizes.length, path: 'js', ...stats(builds) });
 }
 
 /** window.bench.fields(options) in the bench page, within the step timeout. */

@@ -101,6 +101,9 @@ vec4 sceneReflection(vec3 fromEye, vec3 ray, float variance) {
     weight *= along > 0.0 ? 1.0 - smoothstep(SCENE_REFLECTION_MISS.x, SCENE_REFLECTION_MISS.y, off / along) : 0.0;
   }
   vec4 seen = texture(sceneReflectionColor, uv.xy);
+  // The result is weight·seen times a factor: 0 where the converged ray shows nothing or fades out,
+  // most of the sea, which so skips the spread's six lookups.
+  if (weight == 0.0 || seen == vec4(0.0)) return vec4(0.0);
   return weight * seen * min(1.0, sceneReflectionSpreadCoverage(fromEye, ray, max(along, 0.0), variance) / max(seen.a, 1e-4));
 }
 

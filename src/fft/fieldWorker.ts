@@ -10,8 +10,10 @@
  *
  * The fields are asked for the time they will be used at: while the owner updates every frame with
  * a steady step, a request made at t asks for t + latency·step, where latency is the number of
- * updates the last round trip took (1 when the worker answers within a frame). The fields then
- * arrive for about the time of the frame that shows them, not a frame or more behind it.
+ * updates the last round trip took (1 when the worker answers within a frame) and step the mean of
+ * the recent frame steps: where frame times jitter, the last step alone, times a latency of several
+ * updates, would miss by the jitter times the latency. The fields then arrive for about the time of
+ * the frame that shows them, not a frame or more behind it.
  *
  * A worker can fail: an exception in it, a script that cannot load, one terminated from outside
  * (it then just never answers), or workers blocked altogether (a Content-Security-Policy without
@@ -34,6 +36,8 @@ const FIRST_ANSWER_TIMEOUT_MS = 20_000;
 const WORKER_REPLACEMENTS = 3;
 /** A step between updates longer than this (s) is a pause or a jump, not a frame: no time ahead. */
 const LONGEST_FRAME_STEP = 0.5;
+/** How much of each new frame step goes into the mean step (an exponential moving average). */
+const STEP_AVERAGING = 0.25;
 
 export class FieldWorker {
   private worker: Worker | null = null;
@@ -48,6 +52,8 @@ export class FieldWorker {
   /** Requests refused while one was in flight (updates the round trip took, less one), and the last round trip's count. */
   private updatesWhileBusy = 0;
   private latency = 1;
+  /** The mean of the recent frame steps (s), 0 until the first; a pause or a jump starts it again. */
+  private meanStep = 0;
 
   /**
    * `source` is the spectrum (sent as a copy: its fields can come at once) or the cascade's origin
@@ -79,6 +85,8 @@ export class FieldWorker {
    */
   request(t: number, step: number, velocities: boolean): void {
     if (this.stopped) return;
+    const frameStep = step > 0 && step <= LONGEST_FRAME_STEP;
+    this.meanStep = !frameStep ? 0 : this.meanStep === 0 ? step : this.meanStep + STEP_AVERAGING * (step - this.meanStep);
     if (this.sentAt !== null) {
       this.updatesWhileBusy++;
       const timeout = this.answered ? WORKER_TIMEOUT_MS : this.firstAnswerTimeout;
@@ -86,7 +94,7 @@ export class FieldWorker {
       return;
     }
     const spare = this.spare;
-    const ahead = step > 0 && step <= LONGEST_FRAME_STEP ? this.latency * step : 0;
+    const ahead = this.latency * this.meanStep;
     const request: WorkerRequest = { type: 'update', t: t + ahead, velocities, spare };
     this.worker!.postMessage(request, spare ? buffersOf(spare) : []);
     this.spare = null;

@@ -27,6 +27,7 @@ import {
   Vector3,
 } from 'three';
 import type { Ocean } from '../ocean';
+import { setCaptureStandIn } from '../render/sceneCapture';
 import { BoatModel } from './boat';
 
 /** The sea floor under a rectangle of the sea, as Ocean.setSeabed takes it (issue 25). */
@@ -89,6 +90,8 @@ const GRID_CELLS = 384;
 const FOCUS: [number, number] = [-40, 150];
 /** The share of a side's cells spent uniformly; the rest crowd towards FOCUS (a cubic warp). */
 const UNIFORM_SHARE = 0.4;
+/** The sea floor's stand-in in the sea's captures takes every this many grid lines where deep (seaFloorStandIn; it divides GRID_CELLS). */
+const CAPTURE_COARSENING = 4;
 
 /** Colours of the ground (sRGB, as on a palette; three converts them to linear). */
 const SAND = new Color(0xdcc9a0);
@@ -302,17 +305,62 @@ export function splitAtShallows(geometry: BufferGeometry): { above: BufferGeomet
     const [a, b, c] = [index.getX(i), index.getX(i + 1), index.getX(i + 2)];
     (Math.max(position.getY(a), position.getY(b), position.getY(c)) < -SHALLOWS_DEPTH ? below : above).push(a, b, c);
   }
+  return { above: partOf(geometry, above), below: partOf(geometry, below) };
+}
+
+/** Some of `geometry`'s triangles (`indices`, three a triangle) over its vertices, with their own bounds. */
+function partOf(geometry: BufferGeometry, indices: number[]): BufferGeometry {
+  const position = geometry.getAttribute('position');
   const corner = new Vector3();
-  const part = (indices: number[]) => {
-    const piece = new BufferGeometry();
-    for (const name of Object.keys(geometry.attributes)) piece.setAttribute(name, geometry.getAttribute(name));
-    piece.setIndex(new Uint32BufferAttribute(indices, 1));
-    piece.boundingBox = new Box3();
-    for (const v of indices) piece.boundingBox.expandByPoint(corner.fromBufferAttribute(position, v));
-    piece.boundingSphere = piece.boundingBox.getBoundingSphere(new Sphere());
-    return piece;
-  };
-  return { above: part(above), below: part(below) };
+  const piece = new BufferGeometry();
+  for (const name of Object.keys(geometry.attributes)) piece.setAttribute(name, geometry.getAttribute(name));
+  piece.setIndex(new Uint32BufferAttribute(indices, 1));
+  piece.boundingBox = new Box3();
+  for (const v of indices) piece.boundingBox.expandByPoint(corner.fromBufferAttribute(position, v));
+  piece.boundingSphere = piece.boundingBox.getBoundingSphere(new Sphere());
+  return piece;
+}
+
+/**
+ * Down to this depth (m) the sea floor's stand-in keeps every triangle (seaFloorStandIn): the reef
+ * lies there, and the sea's default absorption (σ = 0.45, 0.07, 0.04 per m) still lets through half
+ * the green and two-thirds of the blue from 10 m.
+ */
+export const WHOLE_FLOOR_DEPTH = 10;
+
+/**
+ * The sea floor's stand-in in the sea's captures (src/render/sceneCapture.ts, setCaptureStandIn),
+ * over the terrain's vertices (so with the same heights, normals and colours there): the floor's
+ * triangles whose top is within WHOLE_FLOOR_DEPTH of the surface, and deeper the terrain's grid
+ * taken every CAPTURE_COARSENING lines, a coarse cell kept wherever any vertex inside it lies under
+ * y = −WHOLE_FLOOR_DEPTH. Every deeper triangle lies inside a kept cell, so the stand-in leaves no
+ * hole; the coarse cells overlap the finer triangles a little, under them where the ground bulges
+ * up between their corners and over them where it dips.
+ */
+export function seaFloorStandIn(terrain: BufferGeometry): BufferGeometry {
+  const position = terrain.getAttribute('position');
+  const index = terrain.getIndex()!;
+  const side = GRID_CELLS + 1;
+  const indices: number[] = [];
+  for (let i = 0; i < index.count; i += 3) {
+    const [a, b, c] = [index.getX(i), index.getX(i + 1), index.getX(i + 2)];
+    const top = Math.max(position.getY(a), position.getY(b), position.getY(c));
+    if (top < -SHALLOWS_DEPTH && top >= -WHOLE_FLOOR_DEPTH) indices.push(a, b, c);
+  }
+  for (let j = 0; j < GRID_CELLS; j += CAPTURE_COARSENING) {
+    for (let i = 0; i < GRID_CELLS; i += CAPTURE_COARSENING) {
+      let lowest = Infinity;
+      for (let dj = 0; dj <= CAPTURE_COARSENING; dj++) {
+        for (let di = 0; di <= CAPTURE_COARSENING; di++) lowest = Math.min(lowest, position.getY((j + dj) * side + i + di));
+      }
+      if (lowest >= -WHOLE_FLOOR_DEPTH) continue;
+      const a = j * side + i;
+      const [right, down] = [CAPTURE_COARSENING, CAPTURE_COARSENING * side];
+      // Counter-clockwise seen from above, as the terrain's own cells.
+      indices.push(a, a + down, a + right, a + right, a + down, a + down + right);
+    }
+  }
+  return partOf(terrain, indices);
 }
 
 export class Island extends Group {
@@ -322,6 +370,8 @@ export class Island extends Group {
   readonly terrain: Mesh<BufferGeometry, MeshStandardMaterial>;
   /** The terrain's triangles wholly under SHALLOWS_DEPTH, over the same vertices and material. */
   readonly seaFloor: Mesh<BufferGeometry, MeshStandardMaterial>;
+  /** What the sea's captures draw of the sea floor (seaFloorStandIn); this island owns it. */
+  readonly seaFloorStandIn: BufferGeometry;
   /** The boat moored beside the pier's end. */
   readonly boat = new BoatModel();
   private readonly postGeometry = new BoxGeometry(0.3, 1, 0.3);
@@ -334,12 +384,15 @@ export class Island extends Group {
   constructor() {
     super();
     this.name = 'island';
-    const { above, below } = splitAtShallows(islandTerrainGeometry());
+    const whole = islandTerrainGeometry();
+    const { above, below } = splitAtShallows(whole);
     const ground = new MeshStandardMaterial({ vertexColors: true, roughness: 0.95 });
     this.terrain = new Mesh(above, ground);
     this.terrain.name = 'island terrain';
     this.seaFloor = new Mesh(below, ground);
     this.seaFloor.name = 'island sea floor';
+    this.seaFloorStandIn = seaFloorStandIn(whole);
+    setCaptureStandIn(this.seaFloor, this.seaFloorStandIn);
     const pier = new Group();
     pier.name = 'pier';
     this.posts = this.pierPosts();
@@ -408,6 +461,8 @@ export class Island extends Group {
   dispose(): void {
     this.terrain.geometry.dispose();
     this.seaFloor.geometry.dispose();
+    setCaptureStandIn(this.seaFloor, null);
+    this.seaFloorStandIn.dispose();
     this.terrain.material.dispose();
     this.postGeometry.dispose();
     this.plankGeometry.dispose();

@@ -7,7 +7,7 @@
  * instead. Everything the render changes on the renderer and the scene is put back, so it may run
  * inside another render (an object's onBeforeRender).
  */
-import { Box3, Color, type Camera, type Layers, type Material, type Mesh, type Object3D, type Scene, type WebGLRenderer, type WebGLRenderTarget } from 'three';
+import { Box3, Color, type BufferGeometry, type Camera, type Layers, type Material, type Mesh, type Object3D, type Scene, type WebGLRenderer, type WebGLRenderTarget } from 'three';
 
 const savedClearColor = new Color();
 /** The seas' objects' visibility during a capture, kept between captures so that none makes an array. */
@@ -19,9 +19,27 @@ const seas = new Map<object, readonly Object3D[]>();
 let hidden: { list: readonly Object3D[]; set: ReadonlySet<Object3D> } | null = null;
 /** True while a capture renders: a sea drawn in it anyway (one never added) draws no capture of its own. */
 let capturing = false;
-/** The meshes a capture hid for lying under the water (belowWaterMeshes), kept between captures so that none makes an array. */
+/** The meshes a capture hid for lying under the water (captureChanges), kept between captures so that none makes an array. */
 const underWater: Object3D[] = [];
+/** The meshes a capture draws with their stand-ins (captureChanges), and their own geometries meanwhile. */
+const stoodIn: Mesh[] = [];
+const ownGeometry: BufferGeometry[] = [];
 const worldBox = new Box3();
+/** The geometries the captures draw in place of their meshes' own (setCaptureStandIn); borrowed, not owned. */
+const standIns = new WeakMap<Mesh, BufferGeometry>();
+
+/**
+ * Gives `mesh` a geometry that every capture (the sea's reflection and refraction) draws in its
+ * place, while the main render keeps the mesh's own; null takes it off. What the sea shows of an
+ * object (through metres of water, bent by the waves, in a capture often smaller than the screen)
+ * seldom needs every triangle, and a capture's render costs its vertices as the main one does: a
+ * coarser copy (the island's sea floor, src/objects/island.ts) saves most of that. The stand-in is
+ * the caller's: it stays alive as long as it is set, and the caller disposes it.
+ */
+export function setCaptureStandIn(mesh: Mesh, geometry: BufferGeometry | null): void {
+  if (geometry === null) standIns.delete(mesh);
+  else standIns.set(mesh, geometry);
+}
 
 /**
  * Adds a sea's objects (`objects`, the array itself) to those every capture hides, or tells that
@@ -71,22 +89,29 @@ function onlySea(object: Object3D, sea: ReadonlySet<Object3D>): boolean {
 }
 
 /**
- * Collects into `out` the visible meshes of `object` that lie wholly under the plane y = `level`:
- * their geometry's bounding box, placed in the world, has its top below it. Only
- * plain meshes without children whose vertices are where their geometry says (no skinning,
- * instances, morph targets, displacement map or vertex shader of the user's) are judged; anything
- * else is kept.
+ * What a capture changes in `object`'s visible meshes: into `hide` those that lie wholly under the
+ * plane y = `level` (none when it is undefined), into `swap` those with a stand-in
+ * (setCaptureStandIn) that are not hidden. Under the plane means that the mesh's own geometry's
+ * bounding box, placed in the world, has its top below it; only plain meshes without children
+ * whose vertices are where their geometry says (no skinning, instances, morph targets,
+ * displacement map or vertex shader of the user's) are judged, and anything else is kept.
  */
-export function belowWaterMeshes(object: Object3D, out: Object3D[], level: number): void {
+export function captureChanges(object: Object3D, level: number | undefined, hide: Object3D[], swap: Mesh[]): void {
   if (!object.visible) return;
   const mesh = object as Mesh;
-  // A mesh with children is kept: hiding it would hide them, which may reach above the water.
-  if (mesh.isMesh === true && object.children.length === 0 && plainVertices(mesh)) {
-    const geometry = mesh.geometry;
-    if (geometry.boundingBox === null) geometry.computeBoundingBox();
-    if (worldBox.copy(geometry.boundingBox!).applyMatrix4(mesh.matrixWorld).max.y < level) out.push(mesh);
+  if (mesh.isMesh === true) {
+    if (level !== undefined && belowLevel(mesh, level)) hide.push(mesh);
+    else if (standIns.has(mesh)) swap.push(mesh);
   }
-  for (const child of object.children) belowWaterMeshes(child, out, level);
+  for (const child of object.children) captureChanges(child, level, hide, swap);
+}
+
+function belowLevel(mesh: Mesh, level: number): boolean {
+  // A mesh with children is kept: hiding it would hide them, which may reach above the water.
+  if (mesh.children.length > 0 || !plainVertices(mesh)) return false;
+  const geometry = mesh.geometry;
+  if (geometry.boundingBox === null) geometry.computeBoundingBox();
+  return worldBox.copy(geometry.boundingBox!).applyMatrix4(mesh.matrixWorld).max.y < level;
 }
 
 /** Whether a mesh's vertices are drawn where its geometry's positions put them. */
@@ -110,14 +135,16 @@ function plainMaterial(material: Material): boolean {
  * the objects whose layers meet `layers`, with every sea's objects hidden and no background. With
  * a `nearPlaneHeight` (the reflection, whose near plane is the horizontal plane at that height) the
  * meshes that lie wholly under it are hidden too: clipped whole, they would cost their vertices and
- * show nothing (the island's sea floor, most of its triangles).
+ * show nothing (the island's sea floor, most of its triangles). Meshes with a stand-in
+ * (setCaptureStandIn) are drawn with it.
  * Restores the renderer's target, clear colour and alpha, autoClear, XR and shadow-map updates, the
- * scene's background, the camera's layers and the seas' visibility.
+ * scene's background, the camera's layers, the seas' visibility and the meshes' own geometries.
  */
 export function renderSceneWithoutSea(renderer: WebGLRenderer, scene: Scene, camera: Camera, target: WebGLRenderTarget, layers: Layers, nearPlaneHeight?: number): void {
   const sea = hiddenSeaObjects().list;
   underWater.length = 0;
-  if (nearPlaneHeight !== undefined) belowWaterMeshes(scene, underWater, nearPlaneHeight);
+  stoodIn.length = 0;
+  captureChanges(scene, nearPlaneHeight, underWater, stoodIn);
   const previousTarget = renderer.getRenderTarget();
   const previousFace = renderer.getActiveCubeFace();
   const previousMipmap = renderer.getActiveMipmapLevel();
@@ -133,6 +160,10 @@ export function renderSceneWithoutSea(renderer: WebGLRenderer, scene: Scene, cam
   try {
     for (const object of sea) object.visible = false;
     for (const object of underWater) object.visible = false;
+    for (let i = 0; i < stoodIn.length; i++) {
+      ownGeometry[i] = stoodIn[i].geometry;
+      stoodIn[i].geometry = standIns.get(stoodIn[i])!;
+    }
     scene.background = null;
     camera.layers.mask = layers.mask;
     // The camera is placed by the caller: XR would replace it with the headset's. The shadows are
@@ -158,5 +189,8 @@ export function renderSceneWithoutSea(renderer: WebGLRenderer, scene: Scene, cam
     for (let i = 0; i < sea.length; i++) sea[i].visible = seaVisible[i];
     // Only visible meshes were collected.
     for (const object of underWater) object.visible = true;
+    // Only those swapped before anything threw.
+    for (let i = 0; i < ownGeometry.length; i++) stoodIn[i].geometry = ownGeometry[i];
+    ownGeometry.length = 0;
   }
 }

@@ -372,6 +372,6 @@ describe('the cascades hold the spectrum’s variance once: Σ Ψ(k)·Δk² over
       // A cascade counted twice or left out shifts the sum by its share; modes weighed by Ψ at
       // their centres alone lose up to 3.5 % here, at the band edges.
       expect(Math.abs(sum / integral - 1), `shares ${shares.map((s) => s.toFixed(4))}`).toBeLessThan(tolerance);
-    }, 30_000);
+    });
   }
 });

@@ -571,7 +571,7 @@ describe('CpuWaveFields robustness', () => {
       } else {
         expect(rms(waves.displacement)).toBeGreaterThan(0);
       }
-    }, 30_000);
+    });
   }
 
   it('gives finite, nonzero fields for every cascade of the default sea (Phillips Ψ over the default patches)', () => {
@@ -586,7 +586,7 @@ describe('CpuWaveFields robustness', () => {
       expect(waves.derivatives.every(Number.isFinite), `${spectrum.patchSize} m`).toBe(true);
       expect(rms(waves.displacement), `${spectrum.patchSize} m`).toBeGreaterThan(0);
     }
-  }, 30_000);
+  });
 });
 
 describe('CpuWaveFields memory', () => {
@@ -663,7 +663,7 @@ describe('CpuWaveFields taking over the arrays of fields no longer wanted (casca
 });
 
 describe('reducedSpectrum (the queries\' copies of a cascade on coarser grids, cascadeQueryFields.ts)', () => {
-  it('a 64² copy of the default N = 256 sea: every cascade but the finest exact at its texels; the finest within 1 % of the sea\'s RMS height there', { timeout: 60_000 }, () => {
+  it('a 64² copy of the default N = 256 sea: every cascade but the finest exact at its texels; the finest within 1 % of the sea\'s RMS height there', () => {
     // Between the texels the coarse cascades' copies are not exact: surfaceQuery.test.ts.
     const results = reducedAgainstFull(validateParameters({ resolution: 256, windSpeed: 12, seed: 8 }), 64, 17.25);
     console.log(`reduced 256² → 64²: ${JSON.stringify(results)}`);
@@ -673,7 +673,7 @@ describe('reducedSpectrum (the queries\' copies of a cascade on coarser grids, c
     expect(results[0].heightErrorRms).toBeLessThan(0.01 * seaRms); // heightAt's tolerance against the drawn surface
   });
 
-  it('gives every cascade but the finest exactly, at every 4th texel of N = 1024; the finest loses only its shortest ripples', { timeout: 60_000 }, () => {
+  it('gives every cascade but the finest exactly, at every 4th texel of N = 1024; the finest loses only its shortest ripples', () => {
     // The same modes on a coarser grid: an inverse DFT of the same coefficients evaluated at the
     // coarse grid's points, which are every (N/256)-th point of the fine grid. A coarse cascade's
     // band ends far inside the 256² grid (cascadeBands.ts), so nothing is dropped there.

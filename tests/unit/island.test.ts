@@ -6,7 +6,8 @@
  */
 import { describe, expect, it } from 'vitest';
 import type { BufferGeometry, Material, Mesh } from 'three';
-import { BEACH_FACING, CLIFF_FACING, HILLS, Island, ISLAND_BOUNDS, islandSeabed, islandTerrainGeometry, SHALLOWS_DEPTH } from '../../src/objects/island';
+import { captureChanges } from '../../src/render/sceneCapture';
+import { BEACH_FACING, CLIFF_FACING, HILLS, Island, ISLAND_BOUNDS, islandSeabed, islandTerrainGeometry, SHALLOWS_DEPTH, WHOLE_FLOOR_DEPTH } from '../../src/objects/island';
 
 const { depthAt, bounds } = islandSeabed();
 const [xMin, zMin, xMax, zMax] = bounds;
@@ -136,11 +137,54 @@ describe('Island', () => {
     expect(floorTop).toBeLessThan(-SHALLOWS_DEPTH);
     expect(groundLowest).toBeGreaterThanOrEqual(-SHALLOWS_DEPTH);
     expect(floor.getIndex()!.count + geometry.getIndex()!.count).toBe(whole);
-    // What the reflection's capture judges (belowWaterMeshes): the floor's box, not every vertex's.
+    // What the reflection's capture judges (captureChanges): the floor's box, not every vertex's.
     expect(floor.boundingBox!.max.y).toBe(floorTop);
     // Most of the terrain is sea floor: the share the reflection no longer draws.
     console.log(`island: ${floor.getIndex()!.count / 3} of ${whole / 3} triangles under the shallows`);
     expect(floor.getIndex()!.count).toBeGreaterThan(whole / 2);
+  });
+
+  it("stands in for its sea floor in the sea's captures over the same vertices: whole down to 10 m, coarse deeper, leaving no sea-floor triangle uncovered", () => {
+    const floor = island.seaFloor.geometry;
+    const standIn = island.seaFloorStandIn;
+    const position = floor.getAttribute('position');
+    expect(standIn.getAttribute('position')).toBe(position);
+    const side = Math.round(Math.sqrt(position.count));
+    const key = (corners: number[]) => [...corners].sort((x, y) => x - y).join();
+    // The stand-in's triangles: the floor's own (one grid cell wide), and coarse cells (two
+    // triangles, `step` grid lines wide) by the grid vertex of their first corner.
+    const whole = new Set<string>();
+    const kept = new Set<number>();
+    let step = 0;
+    const coarse = standIn.getIndex()!;
+    for (let t = 0; t < coarse.count; t += 3) {
+      const corners = [coarse.getX(t), coarse.getX(t + 1), coarse.getX(t + 2)];
+      const width = Math.max(...corners.map((v) => v % side)) - Math.min(...corners.map((v) => v % side));
+      if (width === 1) whole.add(key(corners));
+      else if (corners[2] - corners[0] === width) {
+        // A cell's first triangle: its corner, its neighbour across the cell, the next along the row.
+        step = width;
+        kept.add(corners[0]);
+      }
+    }
+    const fine = floor.getIndex()!;
+    let uncovered = 0;
+    let shallowNotWhole = 0;
+    for (let t = 0; t < fine.count; t += 3) {
+      const corners = [fine.getX(t), fine.getX(t + 1), fine.getX(t + 2)];
+      const top = Math.max(...corners.map((v) => position.getY(v)));
+      const i = Math.min(...corners.map((v) => v % side));
+      const j = Math.min(...corners.map((v) => Math.floor(v / side)));
+      const cell = (j - (j % step)) * side + (i - (i % step));
+      if (top >= -WHOLE_FLOOR_DEPTH && !whole.has(key(corners))) shallowNotWhole++;
+      if (!whole.has(key(corners)) && !kept.has(cell)) uncovered++;
+    }
+    expect(step).toBeGreaterThan(1);
+    expect((side - 1) % step).toBe(0);
+    expect(shallowNotWhole).toBe(0);
+    expect(uncovered).toBe(0);
+    console.log(`island: the sea floor's stand-in has ${coarse.count / 3} triangles for its ${fine.count / 3}`);
+    expect(coarse.count).toBeLessThan(fine.count / 4);
   });
 
   it('has sand at the waterline of the beach and grass on the hill (vertex colours)', () => {
@@ -165,8 +209,8 @@ describe('Island', () => {
     expect(gg).toBeGreaterThan(gb);
   });
 
-  it('dispose() frees every geometry and material it made', () => {
-    const owned = new Set<BufferGeometry | Material>();
+  it("dispose() frees every geometry and material it made, the sea floor's stand-in too, and takes the stand-in off", () => {
+    const owned = new Set<BufferGeometry | Material>([island.seaFloorStandIn]);
     island.traverse((object) => {
       const mesh = object as Mesh;
       if (mesh.geometry) owned.add(mesh.geometry);
@@ -174,8 +218,15 @@ describe('Island', () => {
     });
     const freed = new Set<unknown>();
     for (const resource of owned) resource.addEventListener('dispose', () => freed.add(resource));
+    const swapped = (): Mesh[] => {
+      const swap: Mesh[] = [];
+      captureChanges(island, undefined, [], swap);
+      return swap;
+    };
+    expect(swapped()).toEqual([island.seaFloor]);
     island.dispose();
-    expect(owned.size).toBeGreaterThanOrEqual(6); // terrain, posts, planks, wood, hull and cabin
+    expect(owned.size).toBeGreaterThanOrEqual(7); // terrain, its stand-in, posts, planks, wood, hull and cabin
     expect(freed.size).toBe(owned.size);
+    expect(swapped()).toEqual([]);
   });
 });

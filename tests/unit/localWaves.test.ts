@@ -183,7 +183,7 @@ describe('the physics of local waves', () => {
   const phaseSpeed = (k: number) => Math.sqrt(GRAVITY / k);
   const groupSpeed = (k: number) => 0.5 * phaseSpeed(k);
 
-  it('spreads a stone\'s rings at the group speed of their local wavelength, crests at the phase speed (within 5 %)', { timeout: 60_000 }, () => {
+  it('spreads a stone\'s rings at the group speed of their local wavelength, crests at the phase speed (within 5 %)', () => {
     // Cauchy–Poisson problem: at radius r and time t the waves have the wavenumber whose group speed is
     // r/t (stationary phase: Lighthill, "Waves in Fluids" (1978), §3.6; Whitham (1974), §11.4), and each
     // crest moves at the phase speed of that wavenumber.
@@ -229,7 +229,7 @@ describe('the physics of local waves', () => {
     for (const ratio of [...groupRatios, ...phaseRatios]) expect(Math.abs(ratio - 1)).toBeLessThan(0.05);
   });
 
-  it('draws a Kelvin wedge of half-angle 19.47° ± 2° behind a hull in steady motion', { timeout: 60_000 }, () => {
+  it('draws a Kelvin wedge of half-angle 19.47° ± 2° behind a hull in steady motion', () => {
     // Kelvin (1887): in deep water the waves of a source moving steadily stay inside a wedge of
     // half-angle asin(1/3) = 19.47°, whatever its speed, and are largest along its edges (the cusp
     // lines). That holds for hulls short against the wavelength 2πU²/g: for Froude numbers U/√(g·L)
@@ -299,7 +299,7 @@ describe('the physics of local waves', () => {
     expect(Math.abs(halfAngle - (Math.asin(1 / 3) * 180) / Math.PI)).toBeLessThan(2);
   });
 
-  it.each([2, 4, 8, 16])('absorbs at the border: of a %s m wave packet, under 5 percent of the energy comes back', { timeout: 60_000 }, (wavelength) => {
+  it.each([2, 4, 8, 16])('absorbs at the border: of a %s m wave packet, under 5 percent of the energy comes back', (wavelength) => {
     // A packet travelling +x, one-sided in k (so it travels one way): Z(k) a Gaussian around
     // (2π/λ, 0), centred on the grid. Its energy is ρg/2·Σ(η² + ψ²) (potential plus kinetic, by
     // Parseval, linear theory: Lamb, "Hydrodynamics", §230). Once the packet has gone into the sponge,

@@ -1,6 +1,6 @@
-import { BoxGeometry, Group, InstancedMesh, Mesh, MeshStandardMaterial, Object3D, Scene, ShaderMaterial } from 'three';
+import { BoxGeometry, BufferGeometry, Camera, Color, Group, InstancedMesh, Layers, Mesh, MeshStandardMaterial, Object3D, Scene, ShaderMaterial, type WebGLRenderer, type WebGLRenderTarget } from 'three';
 import { describe, expect, test } from 'vitest';
-import { addSea, belowWaterMeshes, hiddenSeaObjects, holdsOnlySeas, removeSea } from '../../src/render/sceneCapture';
+import { addSea, captureChanges, hiddenSeaObjects, holdsOnlySeas, removeSea, renderSceneWithoutSea, setCaptureStandIn } from '../../src/render/sceneCapture';
 
 // The one list of sea objects every scene capture hides (src/render/sceneCapture.ts): the same
 // list from render to render (nothing made per frame), made again when a sea comes, grows or goes.
@@ -74,11 +74,60 @@ describe('the meshes the reflection leaves out: wholly under the water', () => {
     scene.add(group);
     scene.updateMatrixWorld();
     const out: Object3D[] = [];
-    belowWaterMeshes(scene, out, 0);
+    captureChanges(scene, 0, out, []);
     expect(out.map((o) => o.id)).toEqual([sunk, child, inGroup].map((o) => o.id));
     // Under a plane 1.5 m down (a rough sea's troughs), the box sunk 1 cm reaches above it and is kept.
     const underTroughs: Object3D[] = [];
-    belowWaterMeshes(scene, underTroughs, -1.5);
+    captureChanges(scene, -1.5, underTroughs, []);
     expect(underTroughs.map((o) => o.id)).toEqual([child, inGroup].map((o) => o.id));
+  });
+});
+
+// A stand-in (setCaptureStandIn) is drawn in the captures only: the render sees it in the mesh's
+// place, and the mesh has its own geometry again after (a renderer that records what it draws).
+describe('capture stand-ins', () => {
+  test('a mesh with a stand-in is drawn with it in a capture and gets its own geometry back; a hidden one is not swapped', () => {
+    const scene = new Scene();
+    const material = new MeshStandardMaterial();
+    const own = new BoxGeometry(1, 1, 1);
+    const coarse = new BufferGeometry();
+    const standing = new Mesh(own, material);
+    const sunk = new Mesh(own, material);
+    sunk.position.y = -5;
+    const plain = new Mesh(own, material);
+    scene.add(standing, sunk, plain);
+    scene.updateMatrixWorld();
+    setCaptureStandIn(standing, coarse);
+    setCaptureStandIn(sunk, coarse);
+    const hide: Object3D[] = [];
+    const swap: Mesh[] = [];
+    captureChanges(scene, 0, hide, swap);
+    expect(hide).toEqual([sunk]);
+    expect(swap).toEqual([standing]);
+
+    const drawn: BufferGeometry[][] = [];
+    const renderer = {
+      getRenderTarget: () => null,
+      getActiveCubeFace: () => 0,
+      getActiveMipmapLevel: () => 0,
+      getClearColor: (colour: Color) => colour,
+      getClearAlpha: () => 1,
+      setRenderTarget: () => undefined,
+      setClearColor: () => undefined,
+      clear: () => undefined,
+      autoClear: true,
+      xr: { enabled: false },
+      shadowMap: { autoUpdate: true },
+      state: { buffers: { depth: { setMask: () => undefined } } },
+      render: () => drawn.push([standing, sunk, plain].map((m) => m.geometry)),
+    } as unknown as WebGLRenderer;
+    const layers = new Layers();
+    renderSceneWithoutSea(renderer, scene, new Camera(), {} as WebGLRenderTarget, layers);
+    expect(drawn).toEqual([[coarse, coarse, own]]); // no near plane: nothing hidden, both stand in
+    expect([standing, sunk, plain].map((m) => m.geometry)).toEqual([own, own, own]);
+    setCaptureStandIn(standing, null);
+    renderSceneWithoutSea(renderer, scene, new Camera(), {} as WebGLRenderTarget, layers);
+    expect(drawn[1]).toEqual([own, coarse, own]);
+    expect(standing.geometry).toBe(own);
   });
 });

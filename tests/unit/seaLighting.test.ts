@@ -77,5 +77,5 @@ describe('cascadeSlopes', () => {
       expect(resolved[0]).toBeLessThan(coxMunkMeanSquareSlope(windSpeed));
       expect(resolved[0]).toBeGreaterThan(0);
     }
-  }, 60_000);
+  });
 });

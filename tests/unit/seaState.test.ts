@@ -115,7 +115,7 @@ describe('waveNumberSpectrum', () => {
       // Jacobian (1/k instead of c_g/k, or c instead of c_g at finite depth) is off by 10 % or more.
       expect(relative(total, m0), name).toBeLessThan(1e-3);
     }
-  }, 60_000);
+  });
 
   it('sends against the wind (k̂·ŵ < 0) exactly what the spreading allots to |θ| > 90°', () => {
     for (const [spreading, windDirection] of [
@@ -148,7 +148,7 @@ describe('waveNumberSpectrum', () => {
       // Observed: ≤ 1e-4 relative (the two quadratures differ).
       expect(relative(against, expected), spreading).toBeLessThan(1e-3);
     }
-  }, 60_000);
+  });
 
   it('points the wind sea along windDirection and the swell along swellDirection', () => {
     const p = sea({ windDirection: 30 });
@@ -205,7 +205,7 @@ describe('waveNumberSpectrum', () => {
     // Observed: 1e-15. Both quadratures are spectrally accurate for a smooth bump in ln k that vanishes
     // at both ends (the Euler-Maclaurin corrections vanish), and |k̂·ŵ|² integrates exactly to π.
     expect(relative(polarIntegral(p, G / 12, 250), m0)).toBeLessThan(1e-6);
-  }, 60_000);
+  });
 
   it('notices a parameter object changed in place (its cache compares every value)', () => {
     const changes: Partial<SeaStateParameters> = {

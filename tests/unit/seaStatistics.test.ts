@@ -125,7 +125,7 @@ const RESOLUTION = 128;
 
 describe('(a) the simulated sea has the significant wave height 4·√m0 (Holthuijsen 2007 §4.2.2; DNV-RP-C205 §3.5.5)', () => {
   for (const { name, changes, coverage } of SEAS) {
-    it(name, { timeout: 60_000 }, () => {
+    it(name, () => {
       const params = validateParameters({ ...changes, resolution: RESOLUTION });
       const largest = params.patchSizes[params.patchSizes.length - 1];
       const { m0 } = spectralMoments(params, largest);
@@ -188,7 +188,7 @@ describe('(a) the simulated sea has the significant wave height 4·√m0 (Holthu
     });
   }
 
-  it('at N = 64 too the cascades keep m0 within 2 %', { timeout: 60_000 }, () => {
+  it('at N = 64 too the cascades keep m0 within 2 %', () => {
     // Each band's lower edge lies only 2.35 fundamentals into the finer grid here (patches 5.8×
     // apart), where the lattice holds 21 points inside the disc of 17.4 cells and Ψ ∝ k⁻⁴ is steep:
     // weighed by Ψ at their centres, the modes kept 0.909–0.965 of m0 (swell 12 s … the defaults).
@@ -346,7 +346,7 @@ describe('(b) waves travel with the wind: the variance travelling against it is 
     ['Mitsuyasu, JONSWAP 15 m/s, 300 km, depth 8 m (TMA)', { spectrum: 'tma', windSpeed: 15, fetch: 300, depth: 8, spreading: 'mitsuyasu', windDirection: -70 }],
   ];
   for (const [name, changes] of cases) {
-    it(name, { timeout: 60_000 }, () => {
+    it(name, () => {
       const params = validateParameters({ ...changes, resolution: 64 });
       const wind: [number, number] = [Math.cos((params.windDirection * Math.PI) / 180), Math.sin((params.windDirection * Math.PI) / 180)];
       const n = params.resolution;
@@ -405,7 +405,7 @@ describe('(b) waves travel with the wind: the variance travelling against it is 
     });
   }
 
-  it("'phillips' (the report's spectrum): |k̂·ŵ|² is symmetric, so about half the variance travels against the wind — a known flaw", { timeout: 30_000 }, () => {
+  it("'phillips' (the report's spectrum): |k̂·ŵ|² is symmetric, so about half the variance travels against the wind — a known flaw", () => {
     // Tessendorf (2001, eq. 23) weights directions by |k̂·ŵ|², which is the same for k and −k, and
     // the report kept it: half the waves run upwind. Documented here, not fixed: the oceanographic
     // spectra with a spreading function (above) do not have this flaw.
@@ -424,7 +424,7 @@ describe('(b) waves travel with the wind: the variance travelling against it is 
 });
 
 /** Ψ itself, for reference: the default sea's against-wind share of ∫Ψ d²k on a fine polar grid. */
-it('the spreading allowance agrees with Ψ integrated over the plane (a check of the reference itself)', { timeout: 30_000 }, () => {
+it('the spreading allowance agrees with Ψ integrated over the plane (a check of the reference itself)', () => {
   const params = validateParameters({});
   const kMin = (2 * Math.PI) / 457;
   const kMax = (Math.SQRT2 * Math.PI * 256) / 13.7;

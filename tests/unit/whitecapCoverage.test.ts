@@ -60,7 +60,7 @@ describe('whitecap coverage against Monahan & O’Muircheartaigh (1980)', () => 
         expect(row.coverage / row.monahan, row.name).toBeLessThan(2);
       }
     }
-  }, 60_000);
+  });
 
   it('is within a factor of 2 of W from 4 to 25 m/s on the default sea, and grows with the wind', () => {
     const rows = [4, 6, 8, 10, 12, 15, 20, 25].map((windSpeed) => {
@@ -73,7 +73,7 @@ describe('whitecap coverage against Monahan & O’Muircheartaigh (1980)', () => 
       expect(row.ratio, `U10 = ${row.windSpeed} m/s`).toBeLessThan(2);
     }
     rows.slice(1).forEach((row, i) => expect(row.coverage).toBeGreaterThan(rows[i].coverage));
-  }, 60_000);
+  });
 
   it('is the same within ±20 % at every quality level’s grid and patch layout (12 m/s, seed 5)', () => {
     // The grids of src/runtime/adaptiveQuality.ts' QUALITY_STEPS (simulationAtQuality: N at most
@@ -91,6 +91,6 @@ describe('whitecap coverage against Monahan & O’Muircheartaigh (1980)', () => 
     const high = rows[0].coverage;
     console.log(table(['grid', 'measured W (%)', 'Monahan W (%)', '÷ high'], rows.map((r) => [r.name, percent(r.coverage), percent(monahan(12)), (r.coverage / high).toFixed(2)])));
     for (const row of rows) expect(Math.abs(row.coverage / high - 1), row.name).toBeLessThan(0.2);
-  }, 60_000);
+  });
 
 });

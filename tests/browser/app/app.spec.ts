@@ -4,6 +4,7 @@
  * SwiftShader; pixels are read by the app right after its render (oceanApp.capturePixels).
  */
 import { expect, test, type Browser, type Page } from '@playwright/test';
+import { MAX_STEP_SECONDS } from '../../../src/app/flyControls';
 import { DEFAULT_PARAMETERS } from '../../../src/parameters/parameters';
 import { beaufortPreset, presetCloudCover, SEA_PRESETS } from '../../../src/spectrum/presets';
 import { seaState } from '../../../src/spectrum/seaState';
@@ -147,30 +148,37 @@ const dot = (a: Vec3, b: Vec3) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 const length = (a: Vec3) => Math.hypot(...a);
 
 /**
- * Holds `key` for about `ms` and returns how long the page saw it held (keydown to keyup, page
- * clock) and the longest frame meanwhile (the movement is integrated per frame).
+ * Holds `key` until the frames drawn while it was down add up to `ms` or more, and returns those
+ * frames' time, seconds: what the fly controls moved for (each frame's real step, at most
+ * MAX_STEP_SECONDS), whatever the frame rate. A frame sees the key as its listeners left it, the
+ * same for the controls' update and the count here (both run in the frame's callbacks, after its
+ * input events).
  */
-async function holdKey(page: Page, key: string, ms: number): Promise<{ held: number; longestFrame: number }> {
-  await page.evaluate(() => {
-    const record = { down: 0, up: 0, frames: [] as number[], running: true };
+async function holdKey(page: Page, key: string, ms: number): Promise<number> {
+  await page.evaluate(async (maxStep) => {
+    const record = { down: false, last: 0, seconds: 0, running: true };
     Object.assign(window, { keyRecord: record });
-    window.addEventListener('keydown', () => (record.down ||= performance.now()), { capture: true, once: true });
-    window.addEventListener('keyup', () => (record.up = performance.now()), { capture: true, once: true });
-    const tick = (now: number) => {
-      record.frames.push(now);
-      if (record.running) requestAnimationFrame(tick);
-    };
-    requestAnimationFrame(tick);
-  });
+    window.addEventListener('keydown', () => (record.down = true), { capture: true, once: true });
+    window.addEventListener('keyup', () => (record.down = false), { capture: true, once: true });
+    // The first frame only sets where the next one's step starts: it is over before keydown.
+    await new Promise<void>((resolve) => {
+      const tick = (now: number) => {
+        if (record.down) record.seconds += Math.min((now - record.last) / 1000, maxStep);
+        record.last = now;
+        resolve();
+        if (record.running) requestAnimationFrame(tick);
+      };
+      requestAnimationFrame(tick);
+    });
+  }, MAX_STEP_SECONDS);
   await page.keyboard.down(key);
-  await page.waitForTimeout(ms);
+  await page.waitForFunction((seconds) => (window as unknown as { keyRecord: { seconds: number } }).keyRecord.seconds >= seconds, ms / 1000);
   await page.keyboard.up(key);
   await frames(page, 2); // the frame after keyup applies nothing more
   return page.evaluate(() => {
-    const record = (window as unknown as { keyRecord: { down: number; up: number; frames: number[]; running: boolean } }).keyRecord;
+    const record = (window as unknown as { keyRecord: { seconds: number; running: boolean } }).keyRecord;
     record.running = false;
-    const intervals = record.frames.slice(1).map((t, i) => t - record.frames[i]);
-    return { held: (record.up - record.down) / 1000, longestFrame: Math.max(...intervals) / 1000 };
+    return record.seconds;
   });
 }
 
@@ -226,16 +234,15 @@ test.describe('the app', () => {
       const moved = sub(afterW.position, before.position);
       const v = viewDirection(30, -10);
       expect(dot(moved, v) / length(moved)).toBeGreaterThan(0.99999);
-      // Integrated per frame: off by at most about a frame at each end.
-      expect(Math.abs(length(moved) - 10 * forward.held)).toBeLessThan(10 * 2 * forward.longestFrame + 0.5);
-      expect(length(moved)).toBeGreaterThan(10 * 0.5 * forward.held);
+      // Speed × the time of the frames that saw the key down.
+      expect(length(moved)).toBeCloseTo(10 * forward, 6);
       expect(afterW.yaw).toBe(30);
       expect(afterW.pitch).toBe(-10);
 
-      await holdKey(page, 'a', 800);
+      const sideways = await holdKey(page, 'a', 800);
       const afterA = await pose(page);
       const left = sub(afterA.position, afterW.position);
-      expect(length(left)).toBeGreaterThan(1);
+      expect(length(left)).toBeCloseTo(10 * sideways, 6);
       const l: Vec3 = [v[2], 0, -v[0]]; // u × v with u = (0, 1, 0)
       expect(dot(left, l) / (length(left) * length(l))).toBeGreaterThan(0.99999);
       expect(Math.abs(left[1])).toBeLessThan(1e-9);
@@ -243,14 +250,14 @@ test.describe('the app', () => {
       const rightAxis = await page.evaluate(() => window.oceanApp.camera.matrixWorld.elements.slice(0, 3) as [number, number, number]);
       expect(dot(left, rightAxis) / length(left)).toBeLessThan(-0.99999);
 
-      await holdKey(page, 'Space', 500);
-      expect((await pose(page)).position[1]).toBeGreaterThan(afterA.position[1] + 1);
+      const up = await holdKey(page, 'Space', 500);
       const high = (await pose(page)).position[1];
-      const down = await holdKey(page, 'Shift', 2000); // 10 m/s down for 2 s from ~13 m: under the water
+      expect(high - afterA.position[1]).toBeCloseTo(10 * up, 6);
+      const down = await holdKey(page, 'Shift', 2000); // 10 m/s down for 2 s or more from ~13 m: under the water
       const low = (await pose(page)).position[1];
       // The camera dives (down to 200 m: flyControls.ts MIN_HEIGHT), by speed × time.
       expect(low).toBeLessThan(0);
-      expect(Math.abs(high - low - 10 * down.held)).toBeLessThan(10 * 2 * down.longestFrame + 0.5);
+      expect(high - low).toBeCloseTo(10 * down, 6);
     });
 
     test('dragging turns the view: right increases yaw, up increases pitch, pitch clamps at ±89°', async ({ browser }) => {
@@ -536,11 +543,20 @@ test.describe('the app', () => {
     const stalled = await page.evaluate(async () => {
       const app = window.oceanApp;
       await app.capturePixels();
-      const frameStart = performance.now();
-      await app.capturePixels();
-      // The main thread stalls for 1.5 s, or 8 frames as this machine draws them now if longer: a
-      // gap is over a second and over 4 times the frame before it (src/runtime/simulationClock.ts).
-      const stall = Math.max(1500, 8 * (performance.now() - frameStart));
+      // The frames' lengths as this machine draws them now, from requestAnimationFrame's
+      // timestamps (the app's clock sees the same): the longest of five.
+      const longestFrame = await new Promise<number>((resolve) => {
+        const stamps: number[] = [];
+        const frame = (now: number) => {
+          stamps.push(now);
+          if (stamps.length < 6) requestAnimationFrame(frame);
+          else resolve(Math.max(...stamps.slice(1).map((stamp, i) => stamp - stamps[i])));
+        };
+        requestAnimationFrame(frame);
+      });
+      // The main thread stalls for 1.5 s, or 8 of the longest frames if longer: a gap is over a
+      // second and over 4 times the frame before it, or over 10 s (src/runtime/simulationClock.ts).
+      const stall = Math.min(10_500, Math.max(1500, 8 * longestFrame));
       const before = app.state.t;
       const end = performance.now() + stall;
       while (performance.now() < end) {
@@ -589,10 +605,10 @@ test.describe('the app', () => {
       }).observe(document, { subtree: true, childList: true, characterData: true });
     });
     await openApp(page, 'quality=auto&targetFps=60', { width: 640, height: 360 }, false);
-    // Frames made slow (250 ms longer each) until 'auto' is at the lowest level, a window (2 s) a
+    // Frames of 250 ms (by their timestamps) until 'auto' is at the lowest level, a window (2 s) a
     // step: 60 fps is then out of reach on any machine, not only under SwiftShader.
     const slowed = await slowFramesUntil(page, 'app', 'lowest');
-    console.log(`quality auto for 60 fps: lowest after ${slowed.frames} frames made slow, ${slowed.seconds.toFixed(1)} s`);
+    console.log(`quality auto for 60 fps: lowest after ${slowed.frames} frames of 250 ms`);
     const status = page.locator('#status .status-line');
     await expect(status).toContainText(/quality lowest \(auto, for 60 fps, frame \d+ ms\): render scale 0\.3, no MSAA, 2 cascades of 32² · /);
     expect(await page.evaluate(() => (window as unknown as { qualitiesShown: string[] }).qualitiesShown)).toEqual(

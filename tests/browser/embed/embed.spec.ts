@@ -210,7 +210,7 @@ test('quality and target-fps: a level sets the render scale, MSAA, N and cascade
     } });
     return { high, lowest, kept };
   });
-  // Frames made 250 ms slower each until 'auto' is at the lowest level: 120 fps is then out of
+  // Frames of 250 ms (by their timestamps) until 'auto' is at the lowest level: 120 fps is then out of
   // reach on any machine, however fast it draws (a real GPU would hold it unslowed).
   await slowFramesUntil(page, 'element', 'lowest');
   const levels = { ...settled, ...(await page.evaluate(() => (window as unknown as { qualityAfterAuto: () => Promise<{ auto: unknown; changes: { level: string; medianFrameMs: number | null }[]; targetFps: number }> }).qualityAfterAuto())) };
@@ -623,7 +623,7 @@ test('a frame that fails to draw: the box says so and the page gets fft-ocean-er
     el.ocean!.update = () => {
       throw new Error('a failure inside the frame');
     };
-    await new Promise((resolve) => setTimeout(resolve, 1000));
+    await window.embed.frames(2); // the element's next frame throws, however long it takes
     const message = el.shadowRoot!.querySelector('[part="message"]');
     return { events, message: message?.textContent ?? null };
   });

@@ -53,8 +53,11 @@ export async function warmUpLeavesNoTrace(path: 'gpu' | 'js'): Promise<{
   try {
     const cascades = ocean.simulation.cascades;
     let t = 10;
-    const frames = async () => {
-      for (const until = performance.now() + QUERY_WORKER_DELAY_MS + 350; performance.now() < until; ) {
+    // Frames 30 ms apart for QUERY_WORKER_DELAY_MS and more (a query worker due has been made by
+    // then), and on until `done`: a worker busy with its last request is asked for nothing new,
+    // for as long as its answer takes on this machine.
+    const frames = async (done = () => true) => {
+      for (const until = performance.now() + QUERY_WORKER_DELAY_MS + 350; performance.now() < until || !done(); ) {
         ocean.update((t += 1 / 60));
         await new Promise((resolve) => setTimeout(resolve, 30));
       }
@@ -66,7 +69,7 @@ export async function warmUpLeavesNoTrace(path: 'gpu' | 'js'): Promise<{
     const [workersBefore, velocityRequestsBefore] = [workersMade, velocityRequests];
     const height = ocean.heightAt(3, -4);
     const heightError = Math.abs(height - heightAt(exactLayers(cascades), ocean.parameters.choppiness, t, 3, -4));
-    await frames();
+    await frames(() => velocityRequests > 0);
     return { warmUpQueries, cascades: cascades.length, queriedBefore, workersBefore, workersAfter: workersMade, velocityRequestsBefore, velocityRequestsAfter: velocityRequests, heightError, rms: ocean.heightRms };
   } finally {
     ocean.dispose();

@@ -30,38 +30,52 @@ export function slowFrames(page: Page, source: 'app' | 'element'): Promise<{ sim
 }
 
 /**
- * Makes every frame of the page 250 ms slower, as slowFrames does, until the quality 'auto' of the
- * app (`'app'`) or of the first <fft-ocean> (`'element'`) has come down to `until` (a level: one
- * step a window, WINDOW_SECONDS, of frames slower than the target), or until a window of them was
- * measured (`'a window measured'`: the quality's median frame time is known, for a fixed level,
- * which keeps it). Far over a 60 fps target's 20 ms whatever the machine, so what 'auto' does does
- * not depend on how fast this one draws. Gives up after 60 s.
+ * Gives the page's frames timestamps 250 ms apart (requestAnimationFrame's, which the app's and
+ * the element's clocks read: frames of 250 ms as far as they can tell, however fast or slow the
+ * machine really draws them) until the quality 'auto' of the app (`'app'`) or of the first
+ * <fft-ocean> (`'element'`) has come down to `until` (a level: one step a window, WINDOW_SECONDS,
+ * of frames slower than the target), or until a window of them was measured (`'a window
+ * measured'`: the quality's median frame time is known, for a fixed level, which keeps it). Far
+ * over a 60 fps target's 20 ms, so what 'auto' does depends on the frames alone. Gives up after
+ * 100 frames (a window is 8 of them).
  */
 export function slowFramesUntil(
   page: Page,
   source: 'app' | 'element',
   until: 'medium' | 'low' | 'lowest' | 'a window measured',
-): Promise<{ frames: number; seconds: number }> {
+): Promise<{ frames: number }> {
   return page.evaluate(
     async ({ source, until }) => {
       const quality = () => (source === 'app' ? window.oceanApp.quality : document.querySelector('fft-ocean')!.quality);
       const done = () => (until === 'a window measured' ? quality().medianFrameMs !== null : quality().level === until);
-      const start = performance.now();
+      const original = window.requestAnimationFrame;
+      // Every callback of one real frame gets the same made-up timestamp: the first frame's own,
+      // then 250 ms more a frame.
+      let real: number | null = null;
+      let stamp = 0;
       let frames = 0;
-      await new Promise<void>((resolve, reject) => {
-        const frame = () => {
-          if (done()) return resolve();
-          if (performance.now() - start > 60_000) return reject(new Error(`slow frames for 60 s and still not ${until}: quality ${quality().level}`));
-          const end = performance.now() + 250;
-          while (performance.now() < end) {
-            // busy
+      window.requestAnimationFrame = (callback) =>
+        original.call(window, (now) => {
+          if (now !== real) {
+            stamp = real === null ? now : stamp + 250;
+            real = now;
+            frames++;
           }
-          frames++;
+          callback(stamp);
+        });
+      try {
+        await new Promise<void>((resolve, reject) => {
+          const frame = () => {
+            if (done()) return resolve();
+            if (frames > 100) return reject(new Error(`100 frames of 250 ms and still not ${until}: quality ${quality().level}`));
+            requestAnimationFrame(frame);
+          };
           requestAnimationFrame(frame);
-        };
-        requestAnimationFrame(frame);
-      });
-      return { frames, seconds: (performance.now() - start) / 1000 };
+        });
+      } finally {
+        window.requestAnimationFrame = original;
+      }
+      return { frames };
     },
     { source, until },
   );
