@@ -175,25 +175,26 @@ export class CpuFieldTextures implements FftFieldSource, CpuFieldsForQueries {
 }
 
 /**
- * The texture's mipmap chain down to 1×1, from its image: each level the mean of 2×2 texels of the
- * one above, wrapping (the fields repeat), as generateMipmap's box filter does. Reuses the levels'
- * arrays from one update to the next.
+ * The texture's mipmap chain down to 1×1, from its image of square float texels of any number of
+ * channels: each level the mean of 2×2 texels of the one above, wrapping (the fields repeat), as
+ * generateMipmap's box filter does. Reuses the levels' arrays from one update to the next.
  */
-function setMipmapLevels(texture: DataTexture): void {
+export function setMipmapLevels(texture: DataTexture): void {
   const data = texture.image.data as Float32Array;
   let size = texture.image.width;
+  const channels = data.length / (size * size);
   const levels = texture.mipmaps as { data: Float32Array; width: number; height: number }[];
   levels[0] = { data, width: size, height: size };
   for (let level = 1; size > 1; level++) {
     const above = levels[level - 1].data;
     const half = size / 2;
-    if (levels[level]?.width !== half) levels[level] = { data: new Float32Array(4 * half * half), width: half, height: half };
+    if (levels[level]?.width !== half) levels[level] = { data: new Float32Array(channels * half * half), width: half, height: half };
     const below = levels[level].data;
     for (let j = 0; j < half; j++) {
       for (let i = 0; i < half; i++) {
-        const a = 4 * (2 * j * size + 2 * i);
-        const b = a + 4 * size;
-        for (let c = 0; c < 4; c++) below[4 * (j * half + i) + c] = 0.25 * (above[a + c] + above[a + 4 + c] + above[b + c] + above[b + 4 + c]);
+        const a = channels * (2 * j * size + 2 * i);
+        const b = a + channels * size;
+        for (let c = 0; c < channels; c++) below[channels * (j * half + i) + c] = 0.25 * (above[a + c] + above[a + channels + c] + above[b + c] + above[b + channels + c]);
       }
     }
     size = half;

@@ -30,13 +30,13 @@ const PACKED_SPECTRA = 4;
 const MODE_LENGTH = 8;
 
 export class CpuWaveFields {
-  /** RGBA texels (Dx, h, Dz, ∂Dx/∂z). */
-  readonly displacement: Float32Array;
-  /** RGBA texels (∂h/∂x, ∂h/∂z, ∂Dx/∂x, ∂Dz/∂z). */
-  readonly derivatives: Float32Array;
   private readonly fft: BatchedInverseFft2D;
-  /** The two fields, displacement then derivatives: the FFT writes its two pairs of packed fields straight into them. */
-  private readonly textures: readonly Float32Array[];
+  /**
+   * The two fields, displacement then derivatives, made on first use (the compute FFT asks for the
+   * spectra only, spectraAt: 8 MB it would not read at N = 512): the FFT writes its two pairs of
+   * packed fields straight into them.
+   */
+  private texels: readonly [Float32Array, Float32Array] | null;
   private readonly phaseTable = new Float32Array(4 * PHASE_TABLE_SIZE);
   /**
    * The modes with a nonzero amplitude, each pair ±k once (both are written together), in the
@@ -70,10 +70,8 @@ export class CpuWaveFields {
     this.inputBand = largestFrequency(spectrum);
     const same = reuse !== null && reuse.size === n && reuse.inputBand === this.inputBand ? reuse : null;
     const fft = (this.fft = same?.fft ?? new BatchedInverseFft2D(n, PACKED_SPECTRA, this.inputBand));
-    this.displacement = same?.displacement ?? new Float32Array(4 * n * n);
-    this.derivatives = same?.derivatives ?? new Float32Array(4 * n * n);
+    this.texels = same?.texels ?? null;
     this.velocityFields = same?.velocityFields ?? null;
-    this.textures = [this.displacement, this.derivatives];
     // Each pair of wave vectors ±k once, as the one of the two with the lower input index, in the
     // order of the input indexes (so that evolve() writes through the buffers nearly in order).
     const pairCount = (n * n) / 2 + 2; // k ≡ −k at (0, 0), (N/2, 0), (0, N/2) and (N/2, N/2)
@@ -113,10 +111,20 @@ export class CpuWaveFields {
     this.hasZeroModes = kept < pairCount;
   }
 
-  /** Computes every field at time t (seconds). Allocates nothing. */
+  /** RGBA texels (Dx, h, Dz, ∂Dx/∂z). */
+  get displacement(): Float32Array {
+    return this.fieldTexels()[0];
+  }
+
+  /** RGBA texels (∂h/∂x, ∂h/∂z, ∂Dx/∂x, ∂Dz/∂z). */
+  get derivatives(): Float32Array {
+    return this.fieldTexels()[1];
+  }
+
+  /** Computes every field at time t (seconds). Allocates nothing after the first. */
   update(t: number): void {
     this.spectraAt(t);
-    this.fft.runToTexels(this.textures);
+    this.fft.runToTexels(this.fieldTexels());
   }
 
   /**
@@ -151,6 +159,11 @@ export class CpuWaveFields {
     this.evolve(fft, true);
     fft.runToTexels([texels]);
     return texels;
+  }
+
+  private fieldTexels(): readonly [Float32Array, Float32Array] {
+    const n = this.size;
+    return (this.texels ??= [new Float32Array(4 * n * n), new Float32Array(4 * n * n)]);
   }
 
   /**

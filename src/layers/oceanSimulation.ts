@@ -33,6 +33,7 @@ import { LOCAL_WAVES_OPTION_KEYS, LocalWaves, type LocalWavesOptions } from './l
 import { orderLayers, type WaveLayer } from './waveLayer';
 import { calibrateFoam, jacobianCovariance, type FoamCalibration, type JacobianCovariance } from './foamModel';
 import { WhitecapFoam } from './whitecapFoam';
+import { webglFloatTextureSupport } from '../fft/cpuFieldTextures';
 
 /** Which implementation computes the fields. */
 export type SimulationPath = 'gpu-rgba32f' | 'gpu-rgba16f' | 'js' | 'js-worker';
@@ -348,7 +349,7 @@ export class OceanSimulation {
     if (this.currentFoam) this.retire([this.currentFoam]);
     const precision = this.gpuPrecision;
     const periodic = this.currentLayers.filter((layer) => layer.frame.periodic);
-    this.currentFoam = new WhitecapFoam(this.renderer, periodic, precision);
+    this.currentFoam = new WhitecapFoam(periodic, precision === null ? { js: webglFloatTextureSupport(this.renderer) } : { renderer: this.renderer, precision });
     this.madeSinceUpdate.add(this.currentFoam);
   }
 

@@ -19,6 +19,7 @@
  * which recomputes the layers at the warm-up's times (GPU), or their CPU fields (JS).
  */
 import { DataTexture, FloatType, LinearFilter, LinearMipmapLinearFilter, NearestFilter, RedFormat, RepeatWrapping, type Texture, type WebGLRenderer } from 'three';
+import { setMipmapLevels, type FloatTextureSupport } from '../fft/cpuFieldTextures';
 import type { FieldTarget, GpuDevice, GpuPrecision, PassMaterial } from '../device/gpuDevice';
 import { createGpuDevice } from '../device/deviceFor';
 import { shaderSource, withLayerCount } from '../shaderSource';
@@ -39,6 +40,13 @@ export interface FoamSettings {
   /** τ, s. */
   persistence: number;
 }
+
+/**
+ * Where the foam is computed: in fragment passes on a WebGLRenderer at the cascades' float type, or
+ * in JS, uploaded to a float texture of what the renderer's device can do with one (the WebGL
+ * Ocean's JS path and the WebGPU Ocean).
+ */
+export type FoamPath = { renderer: WebGLRenderer; precision: GpuPrecision } | { js: FloatTextureSupport };
 
 export class WhitecapFoam {
   /** Coverage in the red channel, sampled like the largest cascade's fields. */
@@ -61,20 +69,18 @@ export class WhitecapFoam {
 
   /** `layers`: the sea's periodic layers, in the contract's order (orderLayers): the largest last. */
   constructor(
-    renderer: WebGLRenderer,
     private readonly layers: readonly WaveLayer[],
-    /** The GPU path's float type (the cascades'), or null for the JS path. */
-    gpuPrecision: GpuPrecision | null,
+    path: FoamPath,
   ) {
     if (layers.length === 0 || layers.some((layer, i) => !layer.frame.periodic || (i > 0 && layer.frame.size < layers[i - 1].frame.size))) {
       throw new RangeError('WhitecapFoam: its layers are periodic ones, from the smallest patch to the largest (orderLayers)');
     }
     const largest = layers[layers.length - 1].frame;
     this.frame = { size: largest.size, origin: [0, 0], periodic: true, resolution: largest.resolution };
-    this.producer = gpuPrecision === null ? new JsFoam(renderer, this.frame) : new GpuFoam(createGpuDevice(renderer), layers, this.frame, gpuPrecision);
+    this.producer = 'js' in path ? new JsFoam(path.js, this.frame) : new GpuFoam(createGpuDevice(path.renderer), layers, this.frame, path.precision);
     this.texture = this.producer.texture;
     // Removed in dispose(); guarded for canvas-like objects without listeners, as the sky is.
-    this.canvas = gpuPrecision === null ? null : (renderer.domElement as EventTarget | undefined) ?? null;
+    this.canvas = 'js' in path ? null : (path.renderer.domElement as EventTarget | undefined) ?? null;
     this.canvas?.addEventListener?.('webglcontextrestored', this.onContextRestored);
   }
 
@@ -191,21 +197,24 @@ class JsFoam {
   readonly texture: { value: Texture | null };
   private readonly field: CpuFoamField;
   private readonly dataTexture: DataTexture;
+  /** Whether the mipmap levels are made here (a float texture that filters but cannot be rendered to), as for the cascades' (cpuFieldTextures.ts). */
+  private readonly levelsInJs: boolean;
 
-  constructor(renderer: WebGLRenderer, frame: LayerFrame) {
+  constructor({ filterable, renderable }: FloatTextureSupport, frame: LayerFrame) {
     this.field = new CpuFoamField(frame.size, frame.resolution);
     const texture = new DataTexture(this.field.coverage, frame.resolution, frame.resolution, RedFormat, FloatType);
-    const filterable = renderer.extensions.has('OES_texture_float_linear');
-    // Mipmaps are made by rendering: only for a format that is both filterable and renderable.
-    const mipmapped = filterable && renderer.extensions.has('EXT_color_buffer_float');
+    // The GPU makes the mipmaps by rendering: only into a format that is both filterable and renderable.
+    const mipmapped = filterable && renderable;
+    this.levelsInJs = filterable && !renderable;
     texture.name = 'foam';
     texture.wrapS = texture.wrapT = RepeatWrapping;
     texture.magFilter = filterable ? LinearFilter : NearestFilter;
-    texture.minFilter = mipmapped ? LinearMipmapLinearFilter : texture.magFilter;
+    texture.minFilter = filterable ? LinearMipmapLinearFilter : NearestFilter;
     texture.generateMipmaps = mipmapped;
     texture.needsUpdate = true;
     this.dataTexture = texture;
     this.texture = { value: texture };
+    this.changed();
   }
 
   coverageOnCpu(): Float32Array {
@@ -214,7 +223,7 @@ class JsFoam {
 
   clear(): void {
     this.field.clear();
-    this.dataTexture.needsUpdate = true;
+    this.changed();
   }
 
   /**
@@ -228,6 +237,12 @@ class JsFoam {
       resolution: layer.frame.resolution,
     }));
     this.field.step(onCpu, choppiness, calibration, rate, persistence, dt);
+    this.changed();
+  }
+
+  /** Uploads the coverage, with its mipmap levels where they are made here. */
+  private changed(): void {
+    if (this.levelsInJs) setMipmapLevels(this.dataTexture);
     this.dataTexture.needsUpdate = true;
   }
 

@@ -18,10 +18,21 @@
  * Both repeat a whole number of times within FOAM_PATTERN_PERIOD, and every octave's cells within
  * its texture, so the pattern is periodic.
  */
-import { DataTexture, LinearFilter, LinearMipmapLinearFilter, RedFormat, RepeatWrapping, RGFormat, UnsignedByteType } from 'three';
+import { DataTexture, LinearFilter, LinearMipmapLinearFilter, RedFormat, RepeatWrapping, RGFormat, UnsignedByteType, type Vector2 } from 'three';
 
 /** The pattern repeats every this many metres (the eye's place is reduced modulo it, OceanMaterial.setEye). */
 export const FOAM_PATTERN_PERIOD = 1000;
+
+/**
+ * The pattern's origin for an eye at (x, z) m, into `target`: the eye's place in the streaked
+ * pattern's coordinates (foamStreaks.glsl's streakPatternPoint, which is linear, for a wind along
+ * (windX, windZ) and an elongation E) modulo the period. The pattern repeats, so only the eye's
+ * place within a period matters, a number small enough for float32 wherever the eye is.
+ */
+export function foamPatternOrigin(x: number, z: number, windX: number, windZ: number, elongation: number, target: Vector2): Vector2 {
+  const along = (1 - 1 / elongation) * (x * windX + z * windZ);
+  return target.set((x - along * windX) % FOAM_PATTERN_PERIOD, (z - along * windZ) % FOAM_PATTERN_PERIOD);
+}
 
 /** One octave of value noise: cells per metre, its weight in the pattern's sum, and a lattice offset that decorrelates it. */
 export interface FoamOctave {
@@ -146,16 +157,18 @@ export function foamPatternTextures(): { coarse: DataTexture; fine: DataTexture 
   return { coarse, fine };
 }
 
-/** The constants foam.glsl takes from here, as GLSL float literals (its FOAM_* defines). */
+/** The constants foam.glsl takes from here (its FOAM_* defines; the WebGPU Ocean's foamNodes.ts reads them as numbers). */
+export const FOAM_PATTERN_CONSTANTS = {
+  FOAM_COARSE_CELLS: COARSE_CELLS,
+  FOAM_COARSE_CELLS_PER_METRE: COARSE_FOAM_LATTICE.octave.cellsPerMetre,
+  FOAM_COARSE_WEIGHT: COARSE_FOAM_LATTICE.octave.weight,
+  FOAM_FINE_TILE: FINE_FOAM_TILE.size,
+  FOAM_FINE_WEIGHT: FINE_FOAM_TILE.octaves.reduce((sum, o) => sum + o.weight, 0),
+  FOAM_PATTERN_PERIOD,
+} as const;
+
+/** FOAM_PATTERN_CONSTANTS as GLSL float literals. */
 export function foamPatternDefines(): Record<string, string> {
   const float = (value: number) => (Number.isInteger(value) ? value.toFixed(1) : String(value));
-  const { octave } = COARSE_FOAM_LATTICE;
-  return {
-    FOAM_COARSE_CELLS: float(COARSE_CELLS),
-    FOAM_COARSE_CELLS_PER_METRE: float(octave.cellsPerMetre),
-    FOAM_COARSE_WEIGHT: float(octave.weight),
-    FOAM_FINE_TILE: float(FINE_FOAM_TILE.size),
-    FOAM_FINE_WEIGHT: float(FINE_FOAM_TILE.octaves.reduce((sum, o) => sum + o.weight, 0)),
-    FOAM_PATTERN_PERIOD: float(FOAM_PATTERN_PERIOD),
-  };
+  return Object.fromEntries(Object.entries(FOAM_PATTERN_CONSTANTS).map(([name, value]) => [name, float(value)]));
 }

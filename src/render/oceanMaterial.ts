@@ -13,7 +13,7 @@ import type { WaveLayer } from '../layers/waveLayer';
 import { mergeOptions, ParameterError } from '../parameters/options';
 import { DEFAULT_SHADING, SHADING_MODES, SHADING_OPTIONS, type ShadingChanges, type ShadingOptions } from '../parameters/sceneOptions';
 import { shaderSource, withLayerCount } from '../shaderSource';
-import { FOAM_PATTERN_PERIOD, foamPatternDefines, foamPatternTextures } from './foamPattern';
+import { foamPatternDefines, foamPatternOrigin, foamPatternTextures } from './foamPattern';
 import { finestTexel, RING_COUNT } from './horizonGrid';
 import { SEA_SUN_COLOR, SLOPE_FILTER_LEVELS, seaLightingValues, VIEW_DEPTH } from './seaLighting';
 import { beaufortAppearance } from './beaufortAppearance';
@@ -220,11 +220,8 @@ export class OceanMaterial extends ShaderMaterial implements SeaSurfaceMaterial 
   setEye(x: number, z: number): void {
     const u = this.uniforms;
     patchBlendUniforms(this.blendedSize, u.patchBlend.value, x, z);
-    // The pattern repeats, so only the eye's place within a period matters, small enough for float32;
-    // in the streaked pattern's coordinates (foamStreaks.glsl's streakPatternPoint, which is linear).
     const w = u.windAlong.value;
-    const along = (1 - 1 / u.streakElongation.value) * (x * w.x + z * w.y);
-    u.foamPatternOrigin.value.set((x - along * w.x) % FOAM_PATTERN_PERIOD, (z - along * w.y) % FOAM_PATTERN_PERIOD);
+    foamPatternOrigin(x, z, w.x, w.y, u.streakElongation.value, u.foamPatternOrigin.value);
   }
 
   setRings(rings: RingPlacement, cellsPerRing: number): void {

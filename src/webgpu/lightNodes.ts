@@ -127,6 +127,11 @@ export function filteredSkyReflection(
   return { reflectance: weighted, radiance: reflected.div(max(weighted, 1e-6)) };
 }
 
+/** seaLighting.glsl's crestHeight: how high a crest stands, 0 at the mean sea, 1 from twice the rms height up. */
+export function crestHeight(heightAboveMean: FloatNode, heightRms: number): FloatNode {
+  return clamp(heightAboveMean.div(2 * Math.max(heightRms, 1e-3)), 0, 1);
+}
+
 /** seaLighting.glsl's SEA_CREST_GLOW (set by eye, not measured). */
 const CREST_GLOW = 4;
 
@@ -135,7 +140,7 @@ const CREST_GLOW = 4;
  * GDC 2019), growing with the crest's height over twice the rms height, with (d·l)⁴ and ((1 − n·l)/2)³.
  */
 export function crestGlow(view: Vec3Node, normal: Vec3Node, sun: Vec3Node, heightAboveMean: FloatNode, heightRms: number, reflectance: FloatNode, sunLight: Vec3Node, scatter: Vec3Node): Vec3Node {
-  const crest = clamp(heightAboveMean.div(2 * Math.max(heightRms, 1e-3)), 0, 1);
+  const crest = crestHeight(heightAboveMean, heightRms);
   const forward = pow(max(dot(view, sun), 0), 4);
   const thin = pow(float(0.5).sub(dot(normal, sun).mul(0.5)), 3);
   return sunLight.mul(scatter).mul(crest.mul(forward).mul(thin).mul(float(1).sub(reflectance)).mul(CREST_GLOW));

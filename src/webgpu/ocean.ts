@@ -14,17 +14,19 @@
  * compute FFT instead: src/fft/computeWaveFields.ts),
  * displaced and lit in TSL (seaNodes.ts, lightNodes.ts) as the WebGL Ocean's ocean.frag lights it:
  * the reflection of its analytic sky (skyNodes.ts, also drawn behind everything), the light from
- * under the surface, the caustics, the sun's glint and the crests' glow; on its horizon rings round
+ * under the surface, the caustics, the sun's glint and the crests' glow; and its whitecap foam,
+ * the same field as the WebGL Ocean's JS path makes (src/layers/whitecapFoam.ts, in JS over the
+ * largest cascade's patch, on the same clock, uploaded as a float texture), drawn as ocean.frag
+ * draws it, with its streaks from force 7 and the spray from force 9 (foamNodes.ts); on its horizon rings round
  * the camera (seaRings.ts), placed before each draw. heightAt and normalAt answer from the same
  * fields and code as the WebGL Ocean's (src/layers/surfaceQuery.ts), so for the same options and
  * time they return the same numbers.
  *
- * What it does not draw yet throws an UnsupportedError when asked for (NOT_YET), and what is on by
- * default in the WebGL Ocean but missing here (whitecap foam) is named in one console warning per
- * page. Owns its cascades, textures, geometry and materials; dispose()
- * frees them, after which every method throws a DisposedError.
+ * What it does not draw yet throws an UnsupportedError when asked for (NOT_YET). Owns its
+ * cascades, foam, textures, geometry and materials; dispose() frees them, after which every method
+ * throws a DisposedError.
  */
-import { Mesh, Object3D, SphereGeometry, Vector2, Vector3, type BufferGeometry } from 'three';
+import { Mesh, Object3D, SphereGeometry, Vector2, Vector3, type BufferGeometry, type Texture } from 'three';
 import type { MeshBasicNodeMaterial, WebGPURenderer } from 'three/webgpu';
 import { uniform } from 'three/tsl';
 import { CpuFieldTextures, type FloatTextureSupport } from '../fft/cpuFieldTextures';
@@ -33,7 +35,11 @@ import { FftCascade, type FftBackend } from '../layers/fftCascade';
 import { heightAt, normalAt } from '../layers/surfaceQuery';
 import { orderLayers, type WaveLayer } from '../layers/waveLayer';
 import { checkOption, checkOptionNames, DisposedError, UnsupportedError } from '../parameters/options';
-import { ParameterError, SIMULATION_OPTIONS, validateParameters, type SimulationParameters } from '../parameters/parameters';
+import { ParameterError, SHADER_ONLY_PARAMETERS, SIMULATION_OPTIONS, validateParameters, type SimulationParameters } from '../parameters/parameters';
+import { calibrateFoam, jacobianCovariance, type FoamCalibration, type JacobianCovariance } from '../layers/foamModel';
+import { WhitecapFoam } from '../layers/whitecapFoam';
+import { beaufortAppearance, type BeaufortAppearance } from '../render/beaufortAppearance';
+import { FoamShading } from './foamNodes';
 import { colorToLinear, DEFAULT_SHADING, DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ColorInput } from '../parameters/sceneOptions';
 import { sunAngles, type SunDirection } from '../render/skyEnvironment';
 import { createCascadeSpectra } from '../spectrum/initialSpectrum';
@@ -109,13 +115,19 @@ export function notDrawnYet(options: object, renderer: WebGPURenderer): { name: 
 const SIMULATION_KEYS = Object.keys(SIMULATION_OPTIONS) as (keyof SimulationParameters)[];
 const OPTION_KEYS: readonly string[] = [...SIMULATION_KEYS, 'ior', 'scatterColor', 'absorption', 'causticPower', 'causticColor', 'worker', ...Object.keys(SUN_OPTIONS), 'sunDirection', 'path', ...Object.keys(NOT_YET)];
 
-/** The one warning of what the WebGL Ocean draws by default and this one does not, once per page. */
-let warnedOfMissing = false;
-
 export class Ocean extends Object3D {
   /** The FFT cascades, finest first (the JS FFT's fields as float textures). */
   private cascades: FftCascade<null>[] = [];
   private currentLayers: readonly WaveLayer[] = [];
+  /** The whitecap foam over the largest cascade's patch, computed in JS (whitecapFoam.ts). */
+  private foam!: WhitecapFoam;
+  /** The cascades' Jacobian statistics, and the foam's calibration for them at the current choppiness and wind (foamModel.ts). */
+  private covariance!: JacobianCovariance;
+  private calibration!: FoamCalibration;
+  /** The foam pattern's textures and origin, for every surface material. */
+  private readonly foamShading = new FoamShading();
+  /** The streaks' and spray's values for the current wind (beaufortAppearance.ts). */
+  private look!: BeaufortAppearance;
   private parameters: SimulationParameters;
   private readonly uniforms: SeaUniforms;
   private readonly useWorker: boolean;
@@ -173,16 +185,14 @@ export class Ocean extends Object3D {
     this.surface.onBeforeRender = (drawing, _scene, camera) => {
       this.fitGrid(drawing as unknown as WebGPURenderer);
       this.rings.place(camera, this.cellsPerRing);
+      const eye = camera.matrixWorld.elements;
+      this.foamShading.setEye(eye[12], eye[14], this.look);
     };
     this.skyMesh = new Mesh(new SphereGeometry(1, 32, 16), skyMaterial(this.uniforms));
     this.skyMesh.name = 'OceanWebGPU sky';
     this.skyMesh.frustumCulled = false;
     this.skyMesh.renderOrder = -Infinity; // first, under everything
     this.add(this.skyMesh, this.surface);
-    if (!warnedOfMissing && this.parameters.foamAmount > 0) {
-      warnedOfMissing = true;
-      console.warn('three-fft-ocean/webgpu: not drawn yet on WebGPURenderer: whitecap foam (foamAmount), quality levels.');
-    }
   }
 
   /** Every wave layer (the cascades), in the order the surface and the queries sum them. */
@@ -191,18 +201,29 @@ export class Ocean extends Object3D {
     return this.currentLayers;
   }
 
+  /**
+   * Which FFT computes the cascades: 'gpu', the compute FFT (path 'gpu', on the WebGPU backend), or
+   * 'js', the JS FFT ('auto' and 'js'), as the WebGL Ocean's `path.running` names its own.
+   */
+  get path(): 'gpu' | 'js' {
+    this.checkAlive('path');
+    return this.computeFft ? 'gpu' : 'js';
+  }
+
   /** The time (s) of the last update. */
   get time(): number {
     this.checkAlive('time');
     return this.currentTime;
   }
 
-  /** Computes the sea at time t (s, any finite value) and uploads its fields. */
+  /** Computes the sea at time t (s, any finite value), then its foam, and uploads their fields. */
   update(t: number): void {
     this.checkAlive('update');
     if (!Number.isFinite(t)) throw new ParameterError('time', t, 'a finite number of seconds');
     const step = Number.isNaN(this.lastTime) ? 0 : t - this.lastTime;
     for (const cascade of this.cascades) cascade.update(t, step);
+    const { choppiness, foamAmount, foamPersistence } = this.parameters;
+    this.foam.update(t, { choppiness, calibration: this.calibration, amount: foamAmount, persistence: foamPersistence });
     this.currentTime = this.lastTime = t;
   }
 
@@ -227,11 +248,15 @@ export class Ocean extends Object3D {
   setParameters(changes: Partial<SimulationParameters>): void {
     this.checkAlive('setParameters');
     const next = validateParameters(changes, this.parameters);
-    const onlyChoppiness = (Object.keys(next) as (keyof SimulationParameters)[]).every((key) => key === 'choppiness' || next[key] === this.parameters[key]);
+    // As the WebGL Ocean's simulation: the spectra stay for the parameters only the shading and the foam read.
+    const keepSpectra = (Object.keys(next) as (keyof SimulationParameters)[]).every((key) => SHADER_ONLY_PARAMETERS.includes(key) || String(next[key]) === String(this.parameters[key]));
     this.parameters = next;
     this.uniforms.choppiness.value = next.choppiness;
-    if (onlyChoppiness) return;
-    for (const cascade of this.cascades) cascade.dispose();
+    if (keepSpectra) {
+      this.calibration = calibrateFoam(this.covariance, next.choppiness, next.windSpeed);
+      return;
+    }
+    this.disposeCascades();
     this.buildCascades();
     const old = this.surface.material;
     this.surface.material = this.surfaceMaterial();
@@ -241,9 +266,10 @@ export class Ocean extends Object3D {
   /** Frees the cascades (their textures and workers), the grid, the sky and the materials. */
   dispose(): void {
     if (this.disposed) return;
-    for (const cascade of this.cascades) cascade.dispose();
+    this.disposeCascades();
     this.cascades = [];
     this.currentLayers = [];
+    this.foamShading.dispose();
     this.surface.geometry.dispose();
     this.surface.material.dispose();
     this.skyMesh.geometry.dispose();
@@ -255,7 +281,8 @@ export class Ocean extends Object3D {
   /** The surface's material over the current layers, with new rings for them. */
   private surfaceMaterial(): MeshBasicNodeMaterial {
     this.rings = new SeaRings(this.currentLayers);
-    return seaMaterial(this.currentLayers, this.uniforms, seaLightingValues(this.currentLayers, this.parameters.windSpeed), this.rings);
+    const foam = { coverage: this.foam.texture.value as Texture, shading: this.foamShading, look: this.look };
+    return seaMaterial(this.currentLayers, this.uniforms, seaLightingValues(this.currentLayers, this.parameters.windSpeed), this.rings, foam);
   }
 
   /**
@@ -270,14 +297,27 @@ export class Ocean extends Object3D {
     this.cellsPerRing = cells;
   }
 
-  /** The cascades of the parameters: their textures ask nothing more of the renderer than `support`, read once. */
+  /**
+   * The cascades of the parameters and their foam: their textures ask nothing more of the renderer
+   * than `support`, read once.
+   */
   private buildCascades(): void {
     const params = this.parameters;
     const renderer = this.computeFft;
     const backend: FftBackend<null> = renderer ? (_none, spectrum) => new ComputeWaveFields(renderer, spectrum) : (_none, spectrum) => new CpuFieldTextures(this.support, spectrum, this.useWorker);
-    this.cascades = createCascadeSpectra(params).map((spectrum, cascade) => new FftCascade(null, spectrum, { params, cascade }, backend, this.useWorker));
+    const spectra = createCascadeSpectra(params);
+    this.cascades = spectra.map((spectrum, cascade) => new FftCascade(null, spectrum, { params, cascade }, backend, this.useWorker));
     this.currentLayers = orderLayers(this.cascades);
+    this.covariance = jacobianCovariance(spectra);
+    this.calibration = calibrateFoam(this.covariance, params.choppiness, params.windSpeed);
+    this.foam = new WhitecapFoam(this.currentLayers, { js: this.support });
+    this.look = beaufortAppearance(params.windSpeed, params.windDirection);
     this.lastTime = NaN;
+  }
+
+  private disposeCascades(): void {
+    for (const cascade of this.cascades) cascade.dispose();
+    this.foam.dispose();
   }
 
   private checkAlive(what: string): void {

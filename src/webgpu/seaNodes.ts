@@ -10,7 +10,9 @@
  *             ocean.frag's c = R·c_sky + (1 − R)·c_water + K·c_caustic + glint + crest glow, R the
  *             exact Fresnel reflectance, c_sky the analytic sky (skyNodes.ts) reflected by the
  *             pixel's unresolved slopes, the glint a Cox–Munk lobe (lightNodes.ts, twins of
- *             seaLighting.glsl, absorption.glsl, caustics.glsl and fresnel.glsl)
+ *             seaLighting.glsl, absorption.glsl, caustics.glsl and fresnel.glsl); then the
+ *             whitecap foam over it, its streaks and the spray (foamNodes.ts, twins of foam.glsl,
+ *             foamCells.glsl, foamStreaks.glsl and spray.glsl)
  */
 import { BackSide, type Texture } from 'three';
 import { MeshBasicNodeMaterial, type UniformNode } from 'three/webgpu';
@@ -22,15 +24,19 @@ import {
   cameraViewMatrix,
   cos,
   cross,
+  clamp,
   dFdx,
   dFdy,
   Fn,
   float,
+  fwidth,
   max,
+  mix,
   normalize,
   positionGeometry,
   positionWorld,
   refract,
+  select,
   sin,
   texture,
   varying,
@@ -46,6 +52,23 @@ import { SEA_SUN_COLOR, VIEW_DEPTH, type SeaLightingValues } from '../render/sea
 import { analyticSkyRadiance, type SkyUniforms } from './skyNodes';
 import { causticBrightness, crestGlow, facingEye, filteredSkyReflection, footprintLevel, subPixelSlopeVariance, sunGlint, throughWater } from './lightNodes';
 import type { FloatNode, Vec2Node, Vec3Node, Vec4Node } from './nodeTypes';
+import type { BeaufortAppearance } from '../render/beaufortAppearance';
+import {
+  blendedFoam,
+  FOAM_MEAN_BUBBLES,
+  FOAM_VISIBLE,
+  foamCellOpacity,
+  foamOpacity,
+  foamPattern,
+  foamPatternShown,
+  foamRadiance,
+  restFootprint,
+  streakedFoam,
+  streakedMeanFoam,
+  streakPatternPoint,
+  throughSpray,
+  type FoamShading,
+} from './foamNodes';
 
 /** The uniforms the surface and the sky share, which the Ocean sets. */
 export interface SeaUniforms {
@@ -62,6 +85,16 @@ export interface SeaUniforms {
   causticColor: UniformNode<'vec3'>;
   /** The analytic sky and its sun (skyNodes.ts). */
   sky: SkyUniforms;
+}
+
+/** The whitecap foam the surface draws. */
+export interface SeaFoam {
+  /** The coverage over the largest layer's patch, as many texels as that layer's fields (whitecapFoam.ts). */
+  coverage: Texture;
+  /** The pattern's textures and origin (foamNodes.ts). */
+  shading: FoamShading;
+  /** The wind's streaks and spray (beaufortAppearance.ts). */
+  look: BeaufortAppearance;
 }
 
 /**
@@ -84,7 +117,7 @@ function blendWeights(rings: SeaRings, fromEye: Vec2Node): Vec4Node {
  * The surface's material over `layers` (the periodic FFT cascades, the largest last as
  * orderLayers gives them, with the textures they hold now), on the grid `rings` places.
  */
-export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms, lighting: SeaLightingValues, rings: SeaRings): MeshBasicNodeMaterial {
+export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms, lighting: SeaLightingValues, rings: SeaRings, foam: SeaFoam): MeshBasicNodeMaterial {
   const material = new MeshBasicNodeMaterial();
   material.name = 'OceanWebGPU';
   const point = rings.point();
@@ -96,6 +129,8 @@ export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms,
   // Vertex (ocean.vert): the displacement summed at the ring's mip level, whole levels apart between layers.
   let displacement: Vec4Node = vec4(0, 0, 0, 0);
   let blendSlope: Vec2Node = vec2(0, 0);
+  // The foam coverage at the largest layer's mip level (ocean.vert's vFoam), for the far sea.
+  let vertexFoam: FloatNode = float(0);
   const uvs = layers.map((layer, i) => {
     const uv = rings.layerUv(point, i, layer.frame.size);
     const level = point.lod.add(Math.round(Math.log2(finest / (layer.frame.size / layer.frame.resolution))));
@@ -109,6 +144,7 @@ export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms,
     displacement = displacement.add(first.mul(blend.x)).add(copy.mul(blend.y));
     // The blend's own change adds (−sin θ·h1 + cos θ·h2)·∇θ to the height's slope (ocean.vert's vBlendSlope).
     blendSlope = blend.zw.mul(copy.y.mul(blend.x).sub(first.y.mul(blend.y)));
+    vertexFoam = blendedFoam(blend.xy, texture(foam.coverage, uv).level(level).r, texture(foam.coverage, uv.add(copyOffset)).level(level).r);
     return varying(uv);
   });
   const choppiness = uniforms.choppiness;
@@ -120,6 +156,9 @@ export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms,
   const blendAtFragment = varying(blend.xy);
   const restAtFragment = varying(point.fromEye);
   const innerRing = varying(rings.innerRing(point));
+  const foamAtVertex = varying(vertexFoam);
+  const { look } = foam;
+  const largestSize = layers[largest].frame.size;
 
   // Fragment: Σ (∂h/∂x, ∂h/∂z, ∂Dx/∂x, ∂Dz/∂z), mipmapped by the pixel's footprint (ocean.frag).
   let derivatives: Vec4Node = vec4(0, 0, 0, 0);
@@ -132,9 +171,15 @@ export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms,
     derivatives = derivatives.add(texture(map, uvs[i]).mul(blendAtFragment.x)).add(texture(map, uvs[i].add(copyOffset)).mul(blendAtFragment.y));
   });
   material.colorNode = Fn(() => {
-    // The slopes this pixel's normal does not show (seaLighting.glsl), from the rest point's change to
-    // the next pixel: taken first, as ocean.frag does, since derivatives need the whole 2×2 quad.
-    const slopeVariance = subPixelSlopeVariance(lighting, footprintLevel(dFdx(restAtFragment), dFdy(restAtFragment))).toVar();
+    // The slopes this pixel's normal does not show (seaLighting.glsl) and the foam's pattern (foam.glsl),
+    // from the rest point's change to the next pixel: taken first, as ocean.frag does, since
+    // derivatives need the whole 2×2 quad.
+    const restPerPixelX = dFdx(restAtFragment).toVar();
+    const restPerPixelY = dFdy(restAtFragment).toVar();
+    const slopeVariance = subPixelSlopeVariance(lighting, footprintLevel(restPerPixelX, restPerPixelY)).toVar();
+    const foamRestPoint = streakPatternPoint(restAtFragment, look).add(foam.shading.origin).toVar();
+    const foamDetail = foamPattern(foam.shading, foamRestPoint).toVar();
+    const foamDetailPerPixel = fwidth(foamDetail.x).toVar();
     // Each point of the rest plane is drawn by one ring: a ring drops its overlap with the one inside (ocean.frag).
     const fromInner = abs(restAtFragment.sub(innerRing.xy));
     Discard(max(fromInner.x, fromInner.y).lessThan(innerRing.z));
@@ -148,7 +193,7 @@ export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms,
     const [air, water] = [float(1), uniforms.ior];
     const sky = uniforms.sky;
     const skyRadiance = (direction: Vec3Node) => analyticSkyRadiance(sky, direction);
-    // ocean.frag's full shading, without what is not drawn here yet (scene reflections and refractions, foam, spray).
+    // ocean.frag's full shading, without what is not drawn here yet (scene reflections and refractions).
     const reflection = filteredSkyReflection(view, normal, slopeVariance, air, water, skyRadiance);
     const reflectance = reflection.reflectance.toVar();
     const refracted = refract(view, normal, air.div(water));
@@ -158,7 +203,19 @@ export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms,
     const sunLight = vec3(...SEA_SUN_COLOR).mul(sky.sunVisibility);
     const glint = sunLight.mul(sunGlint(view, normal, sky.sunDirection, slopeVariance, air, water));
     const crest = crestGlow(view, normal, sky.sunDirection, positionWorld.y, lighting.heightRms, reflectance, sunLight, uniforms.scatterColor);
-    return reflection.radiance.mul(reflectance).add(below.mul(float(1).sub(reflectance))).add(uniforms.causticColor.mul(caustic.mul(sky.sunVisibility))).add(glint).add(crest);
+    const colour = reflection.radiance.mul(reflectance).add(below.mul(float(1).sub(reflectance))).add(uniforms.causticColor.mul(caustic.mul(sky.sunVisibility))).add(glint).add(crest);
+    // The foam coverage (ocean.frag): where its pattern shows, read for each pixel; farther, the vertex stage's.
+    const foamShown = foamPatternShown(restFootprint(restPerPixelX, restPerPixelY)).toVar();
+    const largestUv = uvs[largest];
+    const pixelFoam = blendedFoam(blendAtFragment, texture(foam.coverage, largestUv).r, texture(foam.coverage, largestUv.add(copyOffset)).r);
+    const foamCoverage = mix(streakedMeanFoam(foamAtVertex, look), streakedFoam(foam.coverage, largestUv, copyOffset, blendAtFragment, largestSize, pixelFoam, look), foamShown).toVar();
+    // Where the pattern does not show, whole white cells with the coverage's share (foamCells.glsl).
+    const foamTexel = largestSize / (foam.coverage.image as { width: number }).width;
+    const far = select(foamShown.lessThan(1), foamCellOpacity(foamCoverage, foamRestPoint, restPerPixelX, restPerPixelY, foamTexel, FOAM_MEAN_BUBBLES), float(0));
+    const opacity = select(foamCoverage.greaterThan(FOAM_VISIBLE), foamOpacity(foamCoverage, foamDetail, foamDetailPerPixel, foamShown, far), float(0));
+    const foamed = mix(colour, foamRadiance(normal, sky.sunDirection, sunLight, skyRadiance(normal)), clamp(opacity, 0, 1));
+    const fromEye = positionWorld.sub(cameraPosition);
+    return throughSpray(foamed, fromEye, positionWorld.y, lighting.heightRms, skyRadiance(normalize(vec3(view.x, 0, view.z))), look);
   })();
   return material;
 }

@@ -589,6 +589,26 @@ describe('CpuWaveFields robustness', () => {
   });
 });
 
+describe('CpuWaveFields memory', () => {
+  it("makes its fields' texels on first use only: spectraAt (the compute FFT's input) leaves them unmade, 8 MB at N = 512", () => {
+    const waves = new CpuWaveFields(phillipsCascade(params({ resolution: 512 })));
+    const texelBytes = 2 * 4 * 512 * 512 * Float32Array.BYTES_PER_ELEMENT;
+    const before = process.memoryUsage().arrayBuffers;
+    waves.spectraAt(1.5);
+    const afterSpectra = process.memoryUsage().arrayBuffers;
+    waves.update(1.5);
+    const afterUpdate = process.memoryUsage().arrayBuffers;
+    console.log(`N = 512: spectraAt allocated ${((afterSpectra - before) / 2 ** 20).toFixed(2)} MB, the first update ${((afterUpdate - afterSpectra) / 2 ** 20).toFixed(2)} MB`);
+    expect(afterSpectra - before).toBeLessThan(texelBytes / 8);
+    expect(afterUpdate - afterSpectra).toBeGreaterThanOrEqual(texelBytes);
+    // The same arrays from then on, which the update writes.
+    const displacement = waves.displacement;
+    waves.update(2.5);
+    expect(waves.displacement).toBe(displacement);
+    expect(rms(displacement)).toBeGreaterThan(0);
+  }, 30_000);
+});
+
 /**
  * Each cascade of `parameters` at time t on its grid and on a reduced grid of `resolution`, compared
  * at the reduced grid's texels: the largest difference of any channel relative to the largest

@@ -10,12 +10,12 @@ import { Ocean as WebGLOcean } from '../../../src/ocean';
 import { finestTexel } from '../../../src/render/horizonGrid';
 import { WebGLRenderer, WebGLRenderTarget } from 'three';
 
-/** A small sea for quick tests: N = 64, the JS FFT on this thread (the fields are there at once). */
-const SEA_PARAMETERS = { resolution: 64, windSpeed: 10, seed: 3, foamAmount: 0 };
+/** A small sea for quick tests: N = 64, the JS FFT on this thread (the fields are there at once), whitecaps on (the default). */
+const SEA_PARAMETERS = { resolution: 64, windSpeed: 10, seed: 3 };
 const SEA: WebGPUOceanOptions = { ...SEA_PARAMETERS, worker: false };
 
-/** A compared view: where the sun is (the default's where left out), and the camera's (x, z) (the origin's). */
-type ViewOptions = Pick<WebGPUOceanOptions, 'sunElevation' | 'sunAzimuth' | 'cloudCover'> & { at?: [number, number] };
+/** A compared view: where the sun is, the wind and the foam (the default's where left out), and the camera's (x, z) (the origin's) and altitude (4 m). */
+type ViewOptions = Pick<WebGPUOceanOptions, 'sunElevation' | 'sunAzimuth' | 'cloudCover' | 'windSpeed' | 'foamAmount'> & { at?: [number, number]; altitude?: number };
 
 let renderer: WebGPURenderer | null = null;
 
@@ -37,10 +37,10 @@ async function open(backend: 'webgl' | 'webgpu'): Promise<{ isWebGPUBackend: boo
   return { isWebGPUBackend, reason };
 }
 
-/** The default view's camera: 4 m over the sea at (x, z) looking slightly down towards −z. */
-function viewCamera(x = 0, z = 0): PerspectiveCamera {
+/** The default view's camera: 4 m (or `altitude`) over the sea at (x, z) looking towards a point 40 m ahead (−z), 1 m up. */
+function viewCamera(x = 0, z = 0, altitude = 4): PerspectiveCamera {
   const camera = new PerspectiveCamera(60, 16 / 9, 0.5, 30_000);
-  camera.position.set(x, 4, z);
+  camera.position.set(x, altitude, z);
   camera.lookAt(x, 1, z - 40);
   camera.updateMatrixWorld();
   return camera;
@@ -69,14 +69,14 @@ function pictureTarget<T extends RenderTarget | WebGLRenderTarget>(Target: new (
  * SwiftShader WebGPU lost its device after presenting one frame to a canvas, even of an empty
  * scene, "A valid external Instance reference no longer exists".)
  */
-async function drawView(t: number, width = 320, height = 180, { at = [0, 0], ...sun }: ViewOptions = {}): Promise<{ width: number; height: number; data: number[] }> {
+async function drawView(t: number, width = 320, height = 180, { at = [0, 0], altitude, ...view }: ViewOptions = {}): Promise<{ width: number; height: number; data: number[] }> {
   const scene = new Scene();
-  const ocean = new Ocean(renderer!, { ...SEA, ...sun });
+  const ocean = new Ocean(renderer!, { ...SEA, ...view });
   scene.add(ocean);
   const target = pictureTarget(RenderTarget, width, height);
   ocean.update(t);
   renderer!.setRenderTarget(target);
-  renderer!.render(scene, viewCamera(...at));
+  renderer!.render(scene, viewCamera(...at, altitude));
   renderer!.setRenderTarget(null);
   const pixels = (await renderer!.readRenderTargetPixelsAsync(target, 0, 0, width, height)) as Uint8Array;
   target.dispose();
@@ -86,20 +86,20 @@ async function drawView(t: number, width = 320, height = 180, { at = [0, 0], ...
 }
 
 /**
- * The same view of the same sea under the same sun drawn by the WebGL Ocean on a WebGLRenderer, with what the WebGPU
- * Ocean does not draw yet left out of both (foam; scene reflections and refractions, which show
- * the sky here anyway), no tone mapping as in open(). Only while no WebGPU device lives in the
- * page (see the spec).
+ * The same view of the same sea under the same sun drawn by the WebGL Ocean on a WebGLRenderer, its
+ * foam from its JS path as the WebGPU Ocean's, without what the WebGPU Ocean does not draw yet
+ * (scene reflections and refractions, which show the sky here anyway; local waves), no tone
+ * mapping as in open(). Only while no WebGPU device lives in the page (see the spec).
  */
-function drawWebGLView(t: number, width: number, height: number, { at = [0, 0], ...sun }: ViewOptions = {}): { width: number; height: number; data: number[] } {
+function drawWebGLView(t: number, width: number, height: number, { at = [0, 0], altitude, ...view }: ViewOptions = {}): { width: number; height: number; data: number[] } {
   const gl = new WebGLRenderer({ antialias: false });
   gl.toneMapping = NoToneMapping;
   gl.setPixelRatio(1);
   gl.setSize(width, height);
-  const ocean = new WebGLOcean(gl, { ...SEA_PARAMETERS, path: 'js', worker: false, localWaves: false, reflections: 'sky', refractions: 'sky', ...sun });
+  const ocean = new WebGLOcean(gl, { ...SEA_PARAMETERS, path: 'js', worker: false, localWaves: false, reflections: 'sky', refractions: 'sky', ...view });
   const scene = new Scene();
   scene.add(ocean);
-  const camera = viewCamera(...at);
+  const camera = viewCamera(...at, altitude);
   const target = pictureTarget(WebGLRenderTarget, width, height);
   ocean.update(t, camera);
   gl.setRenderTarget(target);
@@ -234,6 +234,20 @@ async function memoryCycle(): Promise<{ before: Record<string, number>; during: 
   return { before, during, after: memory() };
 }
 
+/** ocean.path for each `path` option the backend takes ('gpu' on the WebGPU backend only). */
+function paths(): Record<string, string> {
+  const isWebGPUBackend = (renderer!.backend as { isWebGPUBackend?: boolean }).isWebGPUBackend === true;
+  const asked = isWebGPUBackend ? (['auto', 'js', 'gpu'] as const) : (['auto', 'js'] as const);
+  return Object.fromEntries(
+    asked.map((path) => {
+      const ocean = new Ocean(renderer!, { ...SEA, path });
+      const running = ocean.path;
+      ocean.dispose();
+      return [path, running];
+    }),
+  );
+}
+
 /** What each bad input throws: [name, message]. */
 function badInputs(): [string, string][] {
   const gl = new WebGLRenderer();
@@ -259,7 +273,7 @@ function badInputs(): [string, string][] {
   return thrown;
 }
 
-const harness = { open, drawView, drawWebGLView, heightAgreement, sameQueriesAsWebGL, memoryCycle, badInputs };
+const harness = { open, drawView, drawWebGLView, heightAgreement, sameQueriesAsWebGL, memoryCycle, paths, badInputs };
 declare global {
   interface Window {
     webgpuOcean: typeof harness;
