@@ -40,7 +40,7 @@ import { calibrateFoam, jacobianCovariance, type FoamCalibration, type JacobianC
 import { WhitecapFoam } from '../layers/whitecapFoam';
 import { beaufortAppearance, type BeaufortAppearance } from '../render/beaufortAppearance';
 import { FoamShading } from './foamNodes';
-import { colorToLinear, DEFAULT_SHADING, DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ColorInput } from '../parameters/sceneOptions';
+import { DEFAULT_SHADING, DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ColorInput } from '../parameters/sceneOptions';
 import { sunAngles, type SunDirection } from '../render/skyEnvironment';
 import { createCascadeSpectra } from '../spectrum/initialSpectrum';
 import { SeaRings } from './seaRings';
@@ -353,9 +353,8 @@ function isWebGPUBackend(renderer: WebGPURenderer): boolean {
   return (renderer.backend as { isWebGPUBackend?: boolean }).isWebGPUBackend === true;
 }
 
-function linearColor(name: string, value: ColorInput | undefined, fallback: readonly [number, number, number]): [number, number, number] {
+/** A colour option checked by SHADING_OPTIONS' own rule (the WebGL Ocean's), as linear [r, g, b]; `fallback` when not given. */
+function linearColor(name: 'scatterColor' | 'causticColor', value: ColorInput | undefined, fallback: readonly [number, number, number]): [number, number, number] {
   if (value === undefined) return [fallback[0], fallback[1], fallback[2]];
-  const rgb = colorToLinear(value);
-  if (rgb === undefined || !rgb.every((c) => Number.isFinite(c) && c >= 0 && c <= 100)) throw new ParameterError(name, value, 'a colour: a three.js Color, a CSS colour string, a hex number or linear [r, g, b] from 0 to 100');
-  return rgb;
+  return checkOption(SHADING_OPTIONS, name, value).value as [number, number, number];
 }
