@@ -1,6 +1,7 @@
-// Whitecaps seen from afar: where a pixel spans more sea than the foam field's texel and the sea is
-// seen from above (foamCellOpacity says where), the coverage W the foam field gives is drawn as
-// whole white cells, not as a veil of opacity W over every pixel. From 1 km straight down a veil of 1 %
+// Whitecaps seen from afar: where a pixel spans more sea than the foam's pattern can show
+// (foam.glsl's foamPatternShown) and the sea is seen from above (foamCellOpacity says where), the
+// coverage W the foam field gives is drawn as whole white cells, not as a veil of opacity W over
+// every pixel. From 1 km straight down a veil of 1 %
 // lifts the whole picture by about 2.5 levels and no pixel looks like a whitecap; a photograph shows
 // bright specks on dark water instead.
 //
@@ -17,13 +18,19 @@
 // to FOAM_CELL_FOOTPRINTS footprints, a share of the coarser cells that grows as the footprint
 // shrinks splits into the finer. FOAM_CELL_LARGEST is a limit chosen for the picture, not a
 // measured whitecap size: beyond it (towards the horizon, where a pixel spans hundreds of metres)
-// the average stays, not white blocks as wide.
+// the average stays, not white blocks as wide. It is large enough for the coarsest quality level
+// (render scale 0.3) seen straight down from 1 km, where a pixel spans about 13 m at 480x270.
+//
+// Whether the cells show does not depend on the foam field's texel: on a coarse grid (quality
+// 'low', 64² over 457 m) the field's texels are 7 m wide and hold a low coverage spread over them,
+// which drawn as a veil left no whitecap visible from 1 km (none at 'lowest', against the 1 %
+// Monahan gives at 10 m/s); as cells it is about the same share of white pixels at every level.
 //
 // Hash: pcg2d of Jarzynski & Olano (2020), "Hash Functions for GPU Rendering", Journal of Computer
 // Graphics Techniques 9(3): 21–38.
 
 #define FOAM_CELL_FOOTPRINTS 2.5  // a cell's side in pixel footprints, give or take a factor √2
-#define FOAM_CELL_LARGEST 16.0    // metres: larger cells fade into the average coverage (up to twice this)
+#define FOAM_CELL_LARGEST 40.0    // metres: larger cells fade into the average coverage (up to twice this)
 #define FOAM_CELL_GRAZING 0.6     // below this isotropy (sin of the angle below the horizon) no cells; all from 0.2 more
 
 uvec2 pcg2d(uvec2 v) {
@@ -52,9 +59,8 @@ float foamCellUniform(uint hashed, uint shift, uint bits) {
 
 // The foam's opacity where its pattern is not drawn, for a coverage W at a rest point (modulo
 // FOAM_PATTERN_PERIOD) that changes by restPerPixelX/Y to the next pixel across and down: white
-// cells of mean opacity `opacity` covering a share W of the sea where a pixel spans more than the
-// foam field's texel (`foamTexel` metres: finer, the field itself draws its whitecaps where they
-// are, as patches of partial white). The veil opacity·W stays where the cells would be larger than
+// cells of mean opacity `opacity` covering a share W of the sea as the pattern fades out (where a
+// pixel spans tens of centimetres). The veil opacity·W stays where the cells would be larger than
 // FOAM_CELL_LARGEST, and where the sea is seen at a grazing angle: there a square cell a few pixels
 // long along the view is side/long as many times wider across it (the sin of the angle below the
 // horizon), a bar rather than a speck.
@@ -63,14 +69,14 @@ float foamCellUniform(uint hashed, uint shift, uint bits) {
 // changes: each cell draws, from its hash, whether it is drawn as a cell or as veil, and a cell of
 // the coarser size whether it splits into the four of the finer; the mean stays opacity·W
 // everywhere and no cell is drawn half-bright (grey spots).
-float foamCellOpacity(float coverage, vec2 restPoint, vec2 restPerPixelX, vec2 restPerPixelY, float foamTexel, float opacity) {
+float foamCellOpacity(float coverage, vec2 restPoint, vec2 restPerPixelX, vec2 restPerPixelY, float opacity) {
   float veil = opacity * coverage;
   float footprint = restFootprint(restPerPixelX, restPerPixelY);
   float side = FOAM_CELL_FOOTPRINTS * footprint;
   // |det| / longest²: 1 seen straight down, sin(angle below the horizon) at grazing angles.
   float longest = max(dot(restPerPixelX, restPerPixelX), dot(restPerPixelY, restPerPixelY));
   float isotropy = abs(restPerPixelX.x * restPerPixelY.y - restPerPixelX.y * restPerPixelY.x) / max(longest, 1e-12);
-  float cellShare = smoothstep(0.5 * foamTexel, 1.5 * foamTexel, footprint) *
+  float cellShare = (1.0 - foamPatternShown(footprint)) *
                     (1.0 - smoothstep(FOAM_CELL_LARGEST, 2.0 * FOAM_CELL_LARGEST, side)) *
                     smoothstep(FOAM_CELL_GRAZING, FOAM_CELL_GRAZING + 0.2, isotropy);
   if (cellShare <= 0.0) return veil;

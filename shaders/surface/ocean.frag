@@ -88,8 +88,12 @@ void main() {
   #include <logdepthbuf_fragment>
   // The foam's pattern and the rest point's and the pattern's change to the next pixel (foam.glsl),
   // taken before any branch: derivatives are defined only where every pixel of a 2×2 quad runs the
-  // same code.
-  vec2 restPerPixelX = dFdx(vRestFromEye), restPerPixelY = dFdy(vRestFromEye);
+  // same code. The change of the rest point is taken from the largest layer's coordinates, not from
+  // vRestFromEye: that one is centroid-sampled, and with multisampling a pixel on a triangle's edge
+  // evaluates it off its centre, so its dFdx is not one pixel's change; from altitude at quality
+  // 'high' (MSAA) that drew lines of foam veil along the grid's edges.
+  vec2 restPerPixelX = dFdx(vLayerUv[LAYER_COUNT - 1]) * layerSizes[LAYER_COUNT - 1];
+  vec2 restPerPixelY = dFdy(vLayerUv[LAYER_COUNT - 1]) * layerSizes[LAYER_COUNT - 1];
   vec2 foamRestPoint = streakPatternPoint(vRestFromEye) + foamPatternOrigin;
   vec2 foamDetail = foamPattern(foamRestPoint);
   float foamDetailPerPixel = fwidth(foamDetail.x);
@@ -210,8 +214,7 @@ void main() {
   // texture lookups, is taken above for every pixel: its fwidth needs the neighbours).
   if (foamCoverage > FOAM_VISIBLE) {
     // Where the pattern does not show, whole white cells with the coverage's share (foamCells.glsl).
-    float far = foamShown < 1.0 ? foamCellOpacity(foamCoverage, foamRestPoint, restPerPixelX, restPerPixelY,
-                                                      layerSizes[LAYER_COUNT - 1] / float(textureSize(tFoam, 0).x), FOAM_MEAN_BUBBLES) : 0.0;
+    float far = foamShown < 1.0 ? foamCellOpacity(foamCoverage, foamRestPoint, restPerPixelX, restPerPixelY, FOAM_MEAN_BUBBLES) : 0.0;
     float opacity = foamOpacity(foamCoverage, foamDetail, foamDetailPerPixel, foamShown, far);
     if (opacity > 0.0) colour = mix(colour, foamRadiance(normal, sunDirection, sunLight, environmentRadiance(normal)), min(opacity, 1.0));
   }

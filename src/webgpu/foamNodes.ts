@@ -26,7 +26,7 @@ import type { FloatNode, IntNode, UintNode, Vec2Node, Vec3Node } from './nodeTyp
  * FOAM_CELL_LARGEST (m) and FOAM_CELL_GRAZING, foamStreaks.glsl's STREAK_TAPS.
  */
 export const [FOAM_VISIBLE, FOAM_MEAN_BUBBLES] = [0.002, 0.825];
-const [FOAM_CELL_FOOTPRINTS, FOAM_CELL_LARGEST, FOAM_CELL_GRAZING, STREAK_TAPS] = [2.5, 16, 0.6, 6];
+const [FOAM_CELL_FOOTPRINTS, FOAM_CELL_LARGEST, FOAM_CELL_GRAZING, STREAK_TAPS] = [2.5, 40, 0.6, 6];
 
 /** The foam pattern's textures, shared by the Ocean's materials, and its origin under the eye. */
 export class FoamShading {
@@ -127,17 +127,17 @@ function foamCellUniform(hashed: UintNode, shift: number, bits: number): FloatNo
 
 /**
  * foamCells.glsl's foamCellOpacity: white cells of mean opacity `opacity` covering a share W of the
- * sea where a pixel spans more than the foam field's texel (`foamTexel` m), the veil opacity·W
+ * sea as the foam's pattern fades out (foamPatternShown), the veil opacity·W
  * where the cells would be too large or seen at a grazing angle; a share of the cells changes
  * between the two, and between two cell sizes.
  */
-export function foamCellOpacity(coverage: FloatNode, restPoint: Vec2Node, restPerPixelX: Vec2Node, restPerPixelY: Vec2Node, foamTexel: number, opacity: number): FloatNode {
+export function foamCellOpacity(coverage: FloatNode, restPoint: Vec2Node, restPerPixelX: Vec2Node, restPerPixelY: Vec2Node, opacity: number): FloatNode {
   const veil = coverage.mul(opacity);
   const footprint = restFootprint(restPerPixelX, restPerPixelY);
   const side = footprint.mul(FOAM_CELL_FOOTPRINTS);
   const longest = max(dot(restPerPixelX, restPerPixelX), dot(restPerPixelY, restPerPixelY));
   const isotropy = abs(restPerPixelX.x.mul(restPerPixelY.y).sub(restPerPixelX.y.mul(restPerPixelY.x))).div(max(longest, 1e-12));
-  const cellShare = smoothstep(0.5 * foamTexel, 1.5 * foamTexel, footprint)
+  const cellShare = float(1).sub(foamPatternShown(footprint))
     .mul(float(1).sub(smoothstep(FOAM_CELL_LARGEST, 2 * FOAM_CELL_LARGEST, side)))
     .mul(smoothstep(FOAM_CELL_GRAZING, FOAM_CELL_GRAZING + 0.2, isotropy))
     .toVar();

@@ -210,8 +210,7 @@ export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms,
     const pixelFoam = blendedFoam(blendAtFragment, texture(foam.coverage, largestUv).r, texture(foam.coverage, largestUv.add(copyOffset)).r);
     const foamCoverage = mix(streakedMeanFoam(foamAtVertex, look), streakedFoam(foam.coverage, largestUv, copyOffset, blendAtFragment, largestSize, pixelFoam, look), foamShown).toVar();
     // Where the pattern does not show, whole white cells with the coverage's share (foamCells.glsl).
-    const foamTexel = largestSize / (foam.coverage.image as { width: number }).width;
-    const far = select(foamShown.lessThan(1), foamCellOpacity(foamCoverage, foamRestPoint, restPerPixelX, restPerPixelY, foamTexel, FOAM_MEAN_BUBBLES), float(0));
+    const far = select(foamShown.lessThan(1), foamCellOpacity(foamCoverage, foamRestPoint, restPerPixelX, restPerPixelY, FOAM_MEAN_BUBBLES), float(0));
     const opacity = select(foamCoverage.greaterThan(FOAM_VISIBLE), foamOpacity(foamCoverage, foamDetail, foamDetailPerPixel, foamShown, far), float(0));
     const foamed = mix(colour, foamRadiance(normal, sky.sunDirection, sunLight, skyRadiance(normal)), clamp(opacity, 0, 1));
     const fromEye = positionWorld.sub(cameraPosition);

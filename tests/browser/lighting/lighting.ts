@@ -11,6 +11,7 @@ import { DEFAULT_SHADING, type ShadingMode } from '../../../src/parameters/scene
 import { QUALITY_STEPS, simulationAtQuality, type QualityLevel } from '../../../src/runtime/adaptiveQuality';
 import { fitFarPlane } from '../../../src/runtime/farPlane';
 import { pictureRenderer } from '../shared/pictureRenderer';
+import { SceneOutput } from '../../../src/render/sceneOutput';
 
 export interface ViewRequest {
   windSpeed: number;
@@ -34,6 +35,8 @@ export interface ViewRequest {
   png?: boolean;
   /** Linear radiance (no tone mapping) from a float target instead of the 8-bit picture. */
   linear?: boolean;
+  /** Draw multisampled where the level has MSAA (QualityStep.msaa), through SceneOutput as the app does. */
+  msaa?: boolean;
   /** False: the sun's light on the water (glint, foam, crests) left out, the sky's reflection kept. */
   sunlit?: boolean;
   /**
@@ -63,6 +66,7 @@ export interface ViewResult {
 }
 
 const { canvas, renderer, scene, camera } = pictureRenderer();
+const output = new SceneOutput(renderer);
 let ocean: Ocean | null = null;
 let built = '';
 
@@ -121,7 +125,8 @@ function render(request: ViewRequest): ViewResult {
     renderer.setRenderTarget(null);
     target.dispose();
   } else {
-    renderer.render(scene, camera);
+    output.msaa = request.msaa === true && step.msaa;
+    output.render(scene, camera);
     const gl = renderer.getContext();
     raw = new Uint8Array(4 * w * h);
     gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, raw);
