@@ -27,21 +27,22 @@ const seabeds: Record<'beach' | 'island', () => Seabed> = {
  * given the other seabed by setSeabed.
  */
 function sameQueriesAsWebGL(points: [number, number][], t: number, first: 'beach' | 'island', second: 'beach' | 'island'): { webgpu: number[]; webgl: number[] } {
-  const ocean = new Ocean(openedRenderer(), { ...SEA, worker: false, seabed: seabeds[first]() });
   const gl = new WebGLRenderer();
-  const reference = new WebGLOcean(gl, { ...SEA, path: 'js', localWaves: false, worker: false, seabed: seabeds[first]() });
-  const answers = (sea: Ocean | WebGLOcean) => points.flatMap(([x, z]) => [sea.heightAt(x, z), ...sea.normalAt(x, z).toArray(), sea.depthAt(x, z)]);
+  const seas = {
+    webgpu: new Ocean(openedRenderer(), { ...SEA, worker: false, seabed: seabeds[first]() }),
+    webgl: new WebGLOcean(gl, { ...SEA, path: 'js', localWaves: false, worker: false, seabed: seabeds[first]() }),
+  };
   const result = { webgpu: [] as number[], webgl: [] as number[] };
-  for (const seabed of [first, second]) {
-    ocean.setSeabed(seabeds[seabed]());
-    reference.setSeabed(seabeds[seabed]());
-    ocean.update(t);
-    reference.update(t);
-    result.webgpu.push(...answers(ocean));
-    result.webgl.push(...answers(reference));
+  for (const name of [first, second]) {
+    for (const which of ['webgpu', 'webgl'] as const) {
+      const sea = seas[which];
+      sea.setSeabed(seabeds[name]());
+      sea.update(t);
+      result[which].push(...points.flatMap(([x, z]) => [sea.heightAt(x, z), ...sea.normalAt(x, z).toArray(), sea.depthAt(x, z)]));
+    }
   }
-  ocean.dispose();
-  reference.dispose();
+  seas.webgpu.dispose();
+  seas.webgl.dispose();
   gl.dispose();
   return result;
 }
