@@ -154,8 +154,9 @@ export class ShoreNodes {
 /**
  * The depth map of a seabed given as a function or a heightfield, checked as the WebGL Ocean checks
  * it (a ParameterError naming what is wrong). Meshes are drawn from above into the map by the WebGL
- * Ocean's WebGLRenderer (shaders/seabed/depthMap.*), which has no WebGPURenderer twin yet: they
- * throw an UnsupportedError that says what to give instead.
+ * Ocean's WebGLRenderer (shaders/seabed/depthMap.*) and read back at once; WebGPURenderer reads a
+ * target back only asynchronously (readRenderTargetPixelsAsync), so setSeabed could not return
+ * with the map: they throw an UnsupportedError that says what to give instead.
  */
 export function seabedMapFor(seabed: Seabed): SeabedMap {
   if (seabed !== null && typeof seabed === 'object' && 'meshes' in seabed) {
