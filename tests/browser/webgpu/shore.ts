@@ -88,7 +88,7 @@ function badSeabeds(): { thrown: [string, string, string][]; depthAfter: number[
   return { thrown, depthAfter, constructed };
 }
 
-/** renderer.info.memory before an Ocean over the beach, while it draws (after setSeabed gave it the island), and after its dispose. */
+/** renderer.info.memory before an Ocean over the beach, while it draws (after setSeabed gave it the island and setParameters a new wind), and after its dispose. */
 async function memoryCycle(): Promise<{ before: Record<string, number>; during: Record<string, number>; after: Record<string, number> }> {
   const renderer = openedRenderer();
   const scene = new Scene();
@@ -103,6 +103,10 @@ async function memoryCycle(): Promise<{ before: Record<string, number>; during: 
   renderer.render(scene, camera);
   ocean.setSeabed(seabeds.island());
   ocean.update(1.1);
+  renderer.render(scene, camera);
+  // New cascades under the same seabed: a new shoaling table and material.
+  ocean.setParameters({ windSpeed: 14 });
+  ocean.update(1.2);
   renderer.render(scene, camera);
   const during = memory();
   ocean.dispose();
