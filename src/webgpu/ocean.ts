@@ -20,11 +20,13 @@
  * draws it, with its streaks from force 7 and the spray from force 9 (foamNodes.ts); on its horizon rings round
  * the camera (seaRings.ts), placed before each draw. heightAt and normalAt answer from the same
  * fields and code as the WebGL Ocean's (src/layers/surfaceQuery.ts), so for the same options and
- * time they return the same numbers.
+ * time they return the same numbers. Over a seabed (the `seabed` option, setSeabed) the waves
+ * shoal and break, run up the beach and foam there, by the WebGL Ocean's shore (src/layers/shore.ts)
+ * drawn by TSL twins of its GLSL (shoreNodes.ts), and the queries follow the same surface.
  *
  * What it does not draw yet throws an UnsupportedError when asked for (NOT_YET). Owns its
- * cascades, foam, textures, geometry and materials; dispose() frees them, after which every method
- * throws a DisposedError.
+ * cascades, foam, shore, textures, geometry and materials; dispose() frees them, after which every
+ * method throws a DisposedError.
  */
 import { Mesh, Object3D, SphereGeometry, Vector2, Vector3, type BufferGeometry, type Texture } from 'three';
 import type { MeshBasicNodeMaterial, WebGPURenderer } from 'three/webgpu';
