@@ -15,8 +15,8 @@ export class SeaStatistics {
   private summary: { parameters: Readonly<SimulationParameters>; value: SeaStateSummary } | null = null;
   private period: { parameters: Readonly<SimulationParameters>; value: number } | null = null;
 
-  /** @param simulation the sea's simulation (asked each time: the Ocean makes it after this) */
-  constructor(private readonly simulation: () => OceanSimulation) {}
+  /** @param simulation the sea's simulation, or the WebGPU Ocean's cascades and parameters (asked each time: the Ocean makes it after this) */
+  constructor(private readonly simulation: () => Pick<OceanSimulation, 'cascades' | 'parameters'>) {}
 
   /**
    * RMS of the height over time (m): by Parseval the mean of h² over a patch is Σ|h̃(k, t)|², whose

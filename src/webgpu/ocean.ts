@@ -20,11 +20,13 @@
  * draws it, with its streaks from force 7 and the spray from force 9 (foamNodes.ts); on its horizon rings round
  * the camera (seaRings.ts), placed before each draw. heightAt and normalAt answer from the same
  * fields and code as the WebGL Ocean's (src/layers/surfaceQuery.ts), so for the same options and
- * time they return the same numbers.
+ * time they return the same numbers. Over a seabed (the `seabed` option, setSeabed) the waves
+ * shoal and break, run up the beach and foam there, by the WebGL Ocean's shore (src/layers/shore.ts)
+ * drawn by TSL twins of its GLSL (shoreNodes.ts), and the queries follow the same surface.
  *
  * What it does not draw yet throws an UnsupportedError when asked for (NOT_YET). Owns its
- * cascades, foam, textures, geometry and materials; dispose() frees them, after which every method
- * throws a DisposedError.
+ * cascades, foam, shore, textures, geometry and materials; dispose() frees them, after which every
+ * method throws a DisposedError.
  */
 import { Mesh, Object3D, SphereGeometry, Vector2, Vector3, type BufferGeometry, type Texture } from 'three';
 import type { MeshBasicNodeMaterial, WebGPURenderer } from 'three/webgpu';
@@ -50,6 +52,10 @@ import { skyUniforms } from './skyNodes';
 import { seaLightingValues } from '../render/seaLighting';
 import { checkCoordinates } from '../oceanQueries';
 import { checkRenderer } from '../device/deviceFor';
+import { Shore } from '../layers/shore';
+import type { Seabed } from '../layers/seabed';
+import { SeaStatistics } from '../oceanStatistics';
+import { seabedMapFor, ShoreNodes } from './shoreNodes';
 
 export interface WebGPUOceanOptions extends Partial<SimulationParameters> {
   /** Refractive index of water n_w, (1, 3] (ShadingOptions.ior). @defaultValue 1.333 */
@@ -80,8 +86,12 @@ export interface WebGPUOceanOptions extends Partial<SimulationParameters> {
   refractions?: 'sky' | 'scene';
   /** Only false (the default here): local waves are not drawn yet. @defaultValue false */
   localWaves?: boolean | object;
-  /** Only null (the default): no seabed yet. @defaultValue null */
-  seabed?: object | null;
+  /**
+   * The sea floor under part of the sea (OceanOptions.seabed, Ocean.setSeabed): waves shoal and
+   * break over it. As a function or a heightfield; meshes are refused here (UnsupportedError).
+   * @defaultValue null
+   */
+  seabed?: Seabed | null;
 }
 
 /** Options the WebGL Ocean has and this one does not yet: the value it draws, and what is missing. */
@@ -89,7 +99,6 @@ const NOT_YET: Record<string, { drawn: unknown; missing: string }> = {
   reflections: { drawn: 'sky', missing: "scene reflections (reflections: 'scene'): the sea reflects its sky" },
   refractions: { drawn: 'sky', missing: "objects seen under the water (refractions: 'scene')" },
   localWaves: { drawn: false, missing: 'local waves (stones, hulls)' },
-  seabed: { drawn: null, missing: 'a seabed (shoaling, breaking, the shore)' },
   shadingMode: { drawn: 'full', missing: "the debug shading modes (shadingMode other than 'full')" },
 };
 
@@ -113,7 +122,7 @@ export function notDrawnYet(options: object, renderer: WebGPURenderer): { name: 
 }
 
 const SIMULATION_KEYS = Object.keys(SIMULATION_OPTIONS) as (keyof SimulationParameters)[];
-const OPTION_KEYS: readonly string[] = [...SIMULATION_KEYS, 'ior', 'scatterColor', 'absorption', 'causticPower', 'causticColor', 'worker', ...Object.keys(SUN_OPTIONS), 'sunDirection', 'path', ...Object.keys(NOT_YET)];
+const OPTION_KEYS: readonly string[] = [...SIMULATION_KEYS, 'ior', 'scatterColor', 'absorption', 'causticPower', 'causticColor', 'worker', ...Object.keys(SUN_OPTIONS), 'sunDirection', 'path', 'seabed', ...Object.keys(NOT_YET)];
 
 export class Ocean extends Object3D {
   /** The FFT cascades, finest first (the JS FFT's fields as float textures). */
@@ -141,6 +150,12 @@ export class Ocean extends Object3D {
   private cellsPerRing: number;
   private readonly drawingBuffer = new Vector2();
   private readonly skyMesh: Mesh<SphereGeometry, MeshBasicNodeMaterial>;
+  /** The seabed and its shoaling factors (src/layers/shore.ts, the WebGL Ocean's), owned here. */
+  private readonly shore = new Shore();
+  /** The surface material's shore nodes over the shore's textures of now (shoreNodes.ts); null without a seabed. */
+  private shoreNodes: ShoreNodes | null = null;
+  /** The sea's Hs and peak period, for the swash (the WebGL Ocean's statistics). */
+  private readonly statistics = new SeaStatistics(() => ({ cascades: this.cascades, parameters: this.parameters }));
   private currentTime = 0;
   private lastTime = NaN;
   private disposed = false;
@@ -155,6 +170,8 @@ export class Ocean extends Object3D {
     const simulation: Partial<SimulationParameters> = {};
     for (const key of SIMULATION_KEYS) if (options[key] !== undefined) (simulation as Record<string, unknown>)[key] = options[key];
     this.parameters = validateParameters(simulation);
+    // Checked before anything is allocated: a bad seabed throws with nothing to free.
+    this.shore.setMap(options.seabed === undefined || options.seabed === null ? null : seabedMapFor(options.seabed));
     const ior = options.ior ?? DEFAULT_SHADING.ior;
     const absorption = options.absorption ?? DEFAULT_SHADING.absorption;
     const causticPower = options.causticPower ?? DEFAULT_SHADING.causticPower;
@@ -187,6 +204,7 @@ export class Ocean extends Object3D {
       this.rings.place(camera, this.cellsPerRing);
       const eye = camera.matrixWorld.elements;
       this.foamShading.setEye(eye[12], eye[14], this.look);
+      if (this.shoreNodes) this.placeShore(eye[12], eye[14]);
     };
     this.skyMesh = new Mesh(new SphereGeometry(1, 32, 16), skyMaterial(this.uniforms));
     this.skyMesh.name = 'OceanWebGPU sky';
@@ -234,14 +252,35 @@ export class Ocean extends Object3D {
   heightAt(x: number, z: number): number {
     this.checkAlive('heightAt');
     checkCoordinates('heightAt', x, z);
-    return heightAt(this.currentLayers, this.parameters.choppiness, this.currentTime, x, z);
+    return heightAt(this.currentLayers, this.parameters.choppiness, this.currentTime, x, z, this.preparedShore());
   }
 
   /** Upward unit normal of the water surface over (x, z), written into `target` (surfaceQuery.ts). */
   normalAt(x: number, z: number, target: Vector3 = new Vector3()): Vector3 {
     this.checkAlive('normalAt');
     checkCoordinates('normalAt', x, z);
-    return normalAt(this.currentLayers, this.parameters.choppiness, this.currentTime, x, z, target);
+    return normalAt(this.currentLayers, this.parameters.choppiness, this.currentTime, x, z, target, this.preparedShore());
+  }
+
+  /**
+   * Puts a sea floor under part of the sea, or takes it away (null), as the WebGL Ocean's setSeabed:
+   * a function `{ depthAt(x, z), bounds: [xMin, zMin, xMax, zMax], resolution? }` or a heightfield
+   * `{ depths, width, height, bounds }`; meshes (`{ meshes }`) throw an UnsupportedError here. Over
+   * it each cascade shoals and breaks, with surf foam and swash on the beach, drawn and queried
+   * alike (docs/shores.md). A bad seabed throws a ParameterError naming what is wrong and the last
+   * good one stays.
+   */
+  setSeabed(seabed: Seabed | null): void {
+    this.checkAlive('setSeabed');
+    this.shore.setMap(seabed === null ? null : seabedMapFor(seabed));
+    this.replaceSurfaceMaterial();
+  }
+
+  /** Depth of the sea floor (m below mean sea level; negative over land) under (x, z): the seabed's, else the `depth` option. */
+  depthAt(x: number, z: number): number {
+    this.checkAlive('depthAt');
+    checkCoordinates('depthAt(x, z)', x, z);
+    return this.shore.active ? this.shore.depthAt(x, z) : this.parameters.depth;
   }
 
   /** Changes some simulation parameters (a ParameterError names the first bad one and changes nothing). */
@@ -258,9 +297,7 @@ export class Ocean extends Object3D {
     }
     this.disposeCascades();
     this.buildCascades();
-    const old = this.surface.material;
-    this.surface.material = this.surfaceMaterial();
-    old.dispose();
+    this.replaceSurfaceMaterial();
   }
 
   /** Frees the cascades (their textures and workers), the grid, the sky and the materials. */
@@ -274,15 +311,40 @@ export class Ocean extends Object3D {
     this.surface.material.dispose();
     this.skyMesh.geometry.dispose();
     this.skyMesh.material.dispose();
+    this.shore.dispose();
+    this.shoreNodes = null;
     this.removeFromParent();
     this.disposed = true;
   }
 
-  /** The surface's material over the current layers, with new rings for them. */
+  /** The surface's material over the current layers and seabed, with new rings for them. */
   private surfaceMaterial(): MeshBasicNodeMaterial {
     this.rings = new SeaRings(this.currentLayers);
     const foam = { coverage: this.foam.texture.value as Texture, shading: this.foamShading, look: this.look };
-    return seaMaterial(this.currentLayers, this.uniforms, seaLightingValues(this.currentLayers, this.parameters.windSpeed), this.rings, foam);
+    const shore = this.preparedShore();
+    this.shoreNodes = shore ? new ShoreNodes(shore) : null;
+    return seaMaterial(this.currentLayers, this.uniforms, seaLightingValues(this.currentLayers, this.parameters.windSpeed), this.rings, foam, this.shoreNodes);
+  }
+
+  /** Makes the surface's material again (new layers, a new seabed) and frees the one before. */
+  private replaceSurfaceMaterial(): void {
+    const old = this.surface.material;
+    this.surface.material = this.surfaceMaterial();
+    old.dispose();
+  }
+
+  /** The shore for the queries and the surface, its factors made for the layers of now; null without a seabed. */
+  private preparedShore(): Shore | null {
+    if (!this.shore.active) return null;
+    this.shore.prepare(this.currentLayers, this.cascades, this.parameters.depth, 4 * this.statistics.heightRms, this.statistics.seaState.peakPeriod);
+    return this.shore;
+  }
+
+  /** Before each draw: the shore's values for the eye at (x, z) m, into the material's nodes. */
+  private placeShore(x: number, z: number): void {
+    this.preparedShore();
+    this.shore.setEye(x, z);
+    this.shoreNodes!.sync();
   }
 
   /**

@@ -31,6 +31,7 @@ import {
   float,
   fwidth,
   max,
+  min,
   mix,
   normalize,
   positionGeometry,
@@ -53,6 +54,7 @@ import { analyticSkyRadiance, type SkyUniforms } from './skyNodes';
 import { causticBrightness, crestGlow, facingEye, filteredSkyReflection, footprintLevel, subPixelSlopeVariance, sunGlint, throughWater } from './lightNodes';
 import type { FloatNode, Vec2Node, Vec3Node, Vec4Node } from './nodeTypes';
 import type { BeaufortAppearance } from '../render/beaufortAppearance';
+import type { ShoreNodes } from './shoreNodes';
 import {
   blendedFoam,
   FOAM_MEAN_BUBBLES,
@@ -115,9 +117,10 @@ function blendWeights(rings: SeaRings, fromEye: Vec2Node): Vec4Node {
 
 /**
  * The surface's material over `layers` (the periodic FFT cascades, the largest last as
- * orderLayers gives them, with the textures they hold now), on the grid `rings` places.
+ * orderLayers gives them, with the textures they hold now), on the grid `rings` places; over the
+ * seabed of `shore` when given (shoreNodes.ts: ocean.vert's and ocean.frag's SEABED blocks).
  */
-export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms, lighting: SeaLightingValues, rings: SeaRings, foam: SeaFoam): MeshBasicNodeMaterial {
+export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms, lighting: SeaLightingValues, rings: SeaRings, foam: SeaFoam, shore: ShoreNodes | null = null): MeshBasicNodeMaterial {
   const material = new MeshBasicNodeMaterial();
   material.name = 'OceanWebGPU';
   const point = rings.point();
@@ -131,25 +134,35 @@ export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms,
   let blendSlope: Vec2Node = vec2(0, 0);
   // The foam coverage at the largest layer's mip level (ocean.vert's vFoam), for the far sea.
   let vertexFoam: FloatNode = float(0);
+  // Over a seabed (ocean.vert): each layer's shoaling factor at the rest point, and the sea's height before shoaling.
+  const depth = shore?.seabedAt(point.fromEye).x;
+  const shoaling = layers.map((_layer, i) => (shore && depth ? varying(shore.shoalingFactor(i, depth)) : null));
+  const shoaled = <T extends FloatNode | Vec2Node | Vec4Node>(value: T, i: number): T => (shoaling[i] ? ((value as Vec4Node).mul(shoaling[i]) as unknown as T) : value);
+  let deepHeight: FloatNode = float(0);
   const uvs = layers.map((layer, i) => {
     const uv = rings.layerUv(point, i, layer.frame.size);
     const level = point.lod.add(Math.round(Math.log2(finest / (layer.frame.size / layer.frame.resolution))));
     const map = layer.textures.displacement.value as Texture;
     const first = texture(map, uv).level(level);
     if (i !== largest) {
-      displacement = displacement.add(first);
+      displacement = displacement.add(shoaled(first, i));
+      deepHeight = deepHeight.add(first.y);
       return varying(uv);
     }
     const copy = texture(map, uv.add(copyOffset)).level(level);
-    displacement = displacement.add(first.mul(blend.x)).add(copy.mul(blend.y));
+    displacement = displacement.add(shoaled(first.mul(blend.x).add(copy.mul(blend.y)), i));
+    deepHeight = deepHeight.add(first.y.mul(blend.x).add(copy.y.mul(blend.y)));
     // The blend's own change adds (−sin θ·h1 + cos θ·h2)·∇θ to the height's slope (ocean.vert's vBlendSlope).
-    blendSlope = blend.zw.mul(copy.y.mul(blend.x).sub(first.y.mul(blend.y)));
+    blendSlope = shoaled(blend.zw.mul(copy.y.mul(blend.x).sub(first.y.mul(blend.y))), i);
     vertexFoam = blendedFoam(blend.xy, texture(foam.coverage, uv).level(level).r, texture(foam.coverage, uv.add(copyOffset)).level(level).r);
     return varying(uv);
   });
   const choppiness = uniforms.choppiness;
+  // Over a seabed the height rides on the swash and is limited by breaking, which adds foam (ocean.vert).
+  const onShore = shore?.vertex(point.fromEye, displacement.xz.mul(choppiness), displacement.y, deepHeight);
+  if (onShore) vertexFoam = clamp(vertexFoam.add(onShore.foam), 0, 1);
   // World coordinates: the eye's plus the rest point and displacement from it.
-  material.positionNode = vec3(point.fromEye.x.add(displacement.x.mul(choppiness)), displacement.y, point.fromEye.y.add(displacement.z.mul(choppiness))).add(vec3(cameraPosition.x, 0, cameraPosition.z));
+  material.positionNode = vec3(point.fromEye.x.add(displacement.x.mul(choppiness)), onShore?.height ?? displacement.y, point.fromEye.y.add(displacement.z.mul(choppiness))).add(vec3(cameraPosition.x, 0, cameraPosition.z));
   // Per vertex, as the WebGL Ocean: λ·∂Dx/∂z (a second-order part of the normal) and the blend's slope.
   const crossDerivative = varying(displacement.w.mul(choppiness));
   const blendSlopeAtFragment = varying(blendSlope);
@@ -165,10 +178,10 @@ export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms,
   layers.forEach((layer, i) => {
     const map = layer.textures.derivatives.value as Texture;
     if (i !== largest) {
-      derivatives = derivatives.add(texture(map, uvs[i]));
+      derivatives = derivatives.add(shoaled(texture(map, uvs[i]), i));
       return;
     }
-    derivatives = derivatives.add(texture(map, uvs[i]).mul(blendAtFragment.x)).add(texture(map, uvs[i].add(copyOffset)).mul(blendAtFragment.y));
+    derivatives = derivatives.add(shoaled(texture(map, uvs[i]).mul(blendAtFragment.x).add(texture(map, uvs[i].add(copyOffset)).mul(blendAtFragment.y)), i));
   });
   material.colorNode = Fn(() => {
     // The slopes this pixel's normal does not show (seaLighting.glsl) and the foam's pattern (foam.glsl),
@@ -183,7 +196,8 @@ export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms,
     // Each point of the rest plane is drawn by one ring: a ring drops its overlap with the one inside (ocean.frag).
     const fromInner = abs(restAtFragment.sub(innerRing.xy));
     Discard(max(fromInner.x, fromInner.y).lessThan(innerRing.z));
-    const slopes = derivatives.xy.add(blendSlopeAtFragment);
+    // Over a seabed the height's slopes follow the breaking limit (ocean.frag's SEABED block).
+    const slopes = onShore ? derivatives.xy.add(blendSlopeAtFragment).mul(onShore.breakingSlope) : derivatives.xy.add(blendSlopeAtFragment);
     const stretch = derivatives.zw.mul(choppiness);
     // choppyNormal.glsl: ∂P/∂z0 × ∂P/∂x0 with ∂P/∂x0 = (1 + λ∂Dx/∂x, ∂h/∂x, λ∂Dx/∂z), ∂P/∂z0 = (λ∂Dx/∂z, ∂h/∂z, 1 + λ∂Dz/∂z).
     const alongX = vec3(stretch.x.add(1), slopes.x, crossDerivative);
@@ -207,7 +221,8 @@ export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms,
     // The foam coverage (ocean.frag): where its pattern shows, read for each pixel; farther, the vertex stage's.
     const foamShown = foamPatternShown(restFootprint(restPerPixelX, restPerPixelY)).toVar();
     const largestUv = uvs[largest];
-    const pixelFoam = blendedFoam(blendAtFragment, texture(foam.coverage, largestUv).r, texture(foam.coverage, largestUv.add(copyOffset)).r);
+    const whitecaps = blendedFoam(blendAtFragment, texture(foam.coverage, largestUv).r, texture(foam.coverage, largestUv.add(copyOffset)).r);
+    const pixelFoam = onShore ? min(whitecaps.add(onShore.foam), 1) : whitecaps;
     const foamCoverage = mix(streakedMeanFoam(foamAtVertex, look), streakedFoam(foam.coverage, largestUv, copyOffset, blendAtFragment, largestSize, pixelFoam, look), foamShown).toVar();
     // Where the pattern does not show, whole white cells with the coverage's share (foamCells.glsl).
     const far = select(foamShown.lessThan(1), foamCellOpacity(foamCoverage, foamRestPoint, restPerPixelX, restPerPixelY, FOAM_MEAN_BUBBLES), float(0));

@@ -14,10 +14,16 @@ import { WebGLRenderer, WebGLRenderTarget } from 'three';
 const SEA_PARAMETERS = { resolution: 64, windSpeed: 10, seed: 3 };
 const SEA: WebGPUOceanOptions = { ...SEA_PARAMETERS, worker: false };
 
-/** A compared view: where the sun is, the wind and the foam (the default's where left out), and the camera's (x, z) (the origin's) and altitude (4 m). */
-type ViewOptions = Pick<WebGPUOceanOptions, 'sunElevation' | 'sunAzimuth' | 'cloudCover' | 'windSpeed' | 'foamAmount'> & { at?: [number, number]; altitude?: number };
+/** A compared view: where the sun is, the wind, the foam and the seabed (the default's where left out), and the camera's (x, z) (the origin's) and altitude (4 m). */
+type ViewOptions = Pick<WebGPUOceanOptions, 'sunElevation' | 'sunAzimuth' | 'cloudCover' | 'windSpeed' | 'foamAmount' | 'seabed'> & { at?: [number, number]; altitude?: number };
 
 let renderer: WebGPURenderer | null = null;
+
+/** The renderer open() made, for the pages that build on this one (shore.ts). */
+export function openedRenderer(): WebGPURenderer {
+  if (!renderer) throw new Error('open a renderer first (window.webgpuOcean.open)');
+  return renderer;
+}
 
 /**
  * A WebGPURenderer of 320×180 on `backend`, initialized; which backend it got. Asked for WebGPU
@@ -117,9 +123,9 @@ function drawWebGLView(t: number, width: number, height: number, { at = [0, 0], 
  * The displaced surface read back from the real vertex node: the surface's positionNode with the
  * world position as its colour, drawn straight down by an orthographic camera over a `side` m square
  * centred on (cx, cz) into an RGBA32F target; for every pixel the sea covers, the drawn (x, y, z)
- * and ocean.heightAt(x, z). Also the same at another time, for a control.
+ * and ocean.heightAt(x, z) (`xs` the pixels' drawn x). Also the same at another time, for a control.
  */
-async function heightAgreement(cx: number, cz: number, side: number, t: number, options: WebGPUOceanOptions): Promise<{ drawn: number[]; queried: number[]; bound: number[]; heightRms: number }> {
+async function heightAgreement(cx: number, cz: number, side: number, t: number, options: WebGPUOceanOptions): Promise<{ drawn: number[]; queried: number[]; bound: number[]; xs: number[]; heightRms: number }> {
   const scene = new Scene();
   const ocean = new Ocean(renderer!, { ...SEA, ...options });
   scene.add(ocean);
@@ -148,11 +154,13 @@ async function heightAgreement(cx: number, cz: number, side: number, t: number, 
   const drawn: number[] = [];
   const queried: number[] = [];
   const bound: number[] = [];
+  const xs: number[] = [];
   let sumSquares = 0;
   for (let p = 0; p < size * size; p++) {
     if (pixels[4 * p + 3] !== 1) continue; // not the sea
     const [x, y, z] = [pixels[4 * p], pixels[4 * p + 1], pixels[4 * p + 2]];
     drawn.push(y);
+    xs.push(x);
     const h = ocean.heightAt(x, z);
     queried.push(h);
     bound.push(interpolationBound(ocean, x, z, finestTexel(ocean.waveLayers)));
@@ -162,7 +170,7 @@ async function heightAgreement(cx: number, cz: number, side: number, t: number, 
   positions.dispose();
   target.dispose();
   ocean.dispose();
-  return { drawn, queried, bound, heightRms: Math.sqrt(sumSquares / Math.max(drawn.length, 1)) };
+  return { drawn, queried, bound, xs, heightRms: Math.sqrt(sumSquares / Math.max(drawn.length, 1)) };
 }
 
 /**
