@@ -12,7 +12,7 @@ import { ACESFilmicToneMapping, BoxGeometry, Mesh, MeshBasicMaterial, Perspectiv
 import type { PressureSource } from '../../src/layers/localWaves';
 import { Ocean, type OceanOptions } from '../../src/ocean';
 import { islandFrames } from './island';
-import { timeRounds } from './timedRounds';
+import { onePixelRead, timeRounds } from './timedRounds';
 
 export interface FrameOptions {
   resolution: number;
@@ -66,7 +66,7 @@ async function frames(options: FrameOptions): Promise<FrameSamples[]> {
     return { label, scene, ocean, hull, samples: [] as number[], calls: 0, triangles: 0 };
   });
   try {
-    await timeRounds(gl, subjects, options, (subject, t, round) => {
+    await timeRounds(onePixelRead(gl), subjects, options, (subject, t, round) => {
       if (subject.hull) {
         // 5 m/s round a 30 m circle ahead of the camera, and a stone every second.
         const angle = t / 6;
