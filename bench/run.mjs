@@ -6,14 +6,15 @@
 //
 //   in Node      fft2d, fields, cascades (the JS path; Vite loads the TypeScript sources)
 //   in Chromium  the `browser` row (what its WebGL2 supports; bench/lib/browser.mjs), then fields,
-//                cascades, frame, living, reflections, island, queries (with query-frames and parameter-change), app
-//                (with compare), and last the fields row with RGBA16F
+//                cascades, frame, lighting, living, reflections, island, queries (with query-frames and parameter-change), app
+//                (with compare), webgpu (in a Chromium of its own, with WebGPU), and last the fields row with RGBA16F
 //   always       targets, summary
 //
 // If the browser part fails, the Node rows and the summary are still printed and the exit code is 1.
 // `npm run bench -- --only=queries,living` runs only the groups named (fft2d, fields, cascades,
-// frame, living, reflections, island, queries, app); the summary then has nulls for the others.
-// `--island-rounds=3` times only that many frames in the island rows (a quick check that they run).
+// frame, lighting, living, reflections, island, queries, app, webgpu); the summary then has nulls for the others.
+// `--island-rounds=3`, `--lighting-rounds=3` and `--webgpu-rounds=3` time only that many rounds in
+// the island, lighting and webgpu rows (a quick check that they run).
 // `--compare=<dir>` (or BENCH_COMPARE=<dir>) times dli/waves beside the app (bench/groups/compare.mjs);
 // `--query-frames=256` sets the grids of the query-frames rows.
 // BENCH_PORT=<port> sets the first port tried for the servers (default 5180; the next free ones after it).
@@ -30,8 +31,10 @@ import * as fft2d from './groups/fft2d.mjs';
 import * as fields from './groups/fields.mjs';
 import * as frame from './groups/frame.mjs';
 import * as island from './groups/island.mjs';
+import * as lighting from './groups/lighting.mjs';
 import * as living from './groups/living.mjs';
 import * as reflections from './groups/reflections.mjs';
+import * as webgpu from './groups/webgpu.mjs';
 import * as parameterChange from './groups/parameter-change.mjs';
 import * as queries from './groups/queries.mjs';
 import * as queryFrames from './groups/query-frames.mjs';
@@ -45,12 +48,21 @@ const FIRST_PORT = process.env.BENCH_PORT ? Number(process.env.BENCH_PORT) : 518
 if (!Number.isInteger(FIRST_PORT) || FIRST_PORT < 1024 || FIRST_PORT > 65000) throw new Error(`BENCH_PORT: not a port from 1024 to 65000: '${process.env.BENCH_PORT}'`);
 
 /** The grids of the query-frames rows (`--query-frames=256` for one). */
-/** Frames timed per island row (`--island-rounds=<n>`; FRAME_ROUNDS by default). */
-const islandArgument = process.argv.find((a) => a.startsWith('--island-rounds='));
-const ISLAND_ROUNDS = islandArgument ? Number(islandArgument.slice(16)) : undefined;
-if (ISLAND_ROUNDS !== undefined && !(Number.isInteger(ISLAND_ROUNDS) && ISLAND_ROUNDS > 0)) throw new Error(`--island-rounds: not a whole number of frames above 0: '${islandArgument}'`);
+/** The whole number above 0 given as `--<name>-rounds=<n>`, or undefined (the group's own default). */
+function roundsArgument(name) {
+  const prefix = `--${name}-rounds=`;
+  const argument = process.argv.find((a) => a.startsWith(prefix));
+  if (argument === undefined) return undefined;
+  const rounds = Number(argument.slice(prefix.length));
+  if (!(Number.isInteger(rounds) && rounds > 0)) throw new Error(`${prefix.slice(0, -1)}: not a whole number of rounds above 0: '${argument}'`);
+  return rounds;
+}
+/** Frames timed per island, lighting and webgpu row (FRAME_ROUNDS by default; webgpu: its WEBGPU_ROUNDS). */
+const ISLAND_ROUNDS = roundsArgument('island');
+const LIGHTING_ROUNDS = roundsArgument('lighting');
+const WEBGPU_ROUNDS = roundsArgument('webgpu');
 const QUERY_FRAME_RESOLUTIONS = (process.argv.find((a) => a.startsWith('--query-frames='))?.slice(15) ?? '256,512,1024').split(',').map(Number);
-const GROUPS = ['fft2d', 'fields', 'cascades', 'frame', 'living', 'reflections', 'island', 'queries', 'app'];
+const GROUPS = ['fft2d', 'fields', 'cascades', 'frame', 'lighting', 'living', 'reflections', 'island', 'queries', 'app', 'webgpu'];
 const compareArgument = process.argv.slice(2).find((argument) => argument.startsWith('--compare='));
 /** The directory of a dli/waves checkout to time beside the app, or null. */
 const compareDir = compareArgument ? resolve(compareArgument.slice('--compare='.length)) : process.env.BENCH_COMPARE ? resolve(process.env.BENCH_COMPARE) : null;
@@ -82,6 +94,7 @@ const BROWSER_STEPS = [
   ['cascades', cascades.browser],
   [null, ({ page, port }) => openReady(page, port, 'frame.html')], // frame, living, queries and parameter-change run there
   ['frame', frame.browser],
+  ['lighting', lighting.browser],
   ['living', living.browser],
   ['reflections', reflections.browser],
   ['island', island.browser],
@@ -89,6 +102,7 @@ const BROWSER_STEPS = [
   ['queries', queryFrames.browser],
   ['queries', parameterChange.browser],
   ['app', app.browser], // and compare
+  ['webgpu', webgpu.browser], // in a Chromium of its own
   ['fields', fields.halfFloat], // back on the bench page
 ];
 
@@ -104,7 +118,7 @@ async function nodeBenchmarks(results) {
 
 async function browserBenchmarks(results) {
   await withBenchBrowser(FIRST_PORT, async (opened) => {
-    const context = { ...opened, results, firstPort: FIRST_PORT, compareDir, queryFrameResolutions: QUERY_FRAME_RESOLUTIONS, islandRounds: ISLAND_ROUNDS };
+    const context = { ...opened, results, firstPort: FIRST_PORT, compareDir, queryFrameResolutions: QUERY_FRAME_RESOLUTIONS, islandRounds: ISLAND_ROUNDS, lightingRounds: LIGHTING_ROUNDS, webgpuRounds: WEBGPU_ROUNDS };
     for (const [group, step] of BROWSER_STEPS) if (group === null || wanted(group)) await step(context);
   });
 }
@@ -128,6 +142,10 @@ const results = {
   app: {},
   /** dli/waves: { ms, N }, or { error }; null when not asked for (no --compare). */
   compare: null,
+  /** The lighting group: { slopeLightCost, beaufortLookCostAtForce9 }. */
+  lighting: null,
+  /** The webgpu group: frameMs by subject, webgpuVsWebGL, webgpuVsWebGLSameDraw, fftMs by N and subject. */
+  webgpu: null,
 };
 let exitCode = 0;
 let browserError = null;

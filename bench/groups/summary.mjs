@@ -1,7 +1,7 @@
 // A group of `npm run bench` (bench/run.mjs), always printed last:
 //
 //   summary      the key ratios; jsCascadesMs256, gpuCascadesMs256 and frameMs256ByCascades are
-//                keyed by cascade count.
+//                keyed by cascade count; webgpuFrameMs by subject, webgpuFftMs by N then subject.
 import { emit } from '../lib/output.mjs';
 import { CASCADE_COUNTS } from '../lib/settings.mjs';
 import { ratio } from '../lib/stats.mjs';
@@ -52,6 +52,14 @@ export function emitSummary(results, browserError, started) {
     gpuCascadesReadPixelsMs256: byCascades((count) => results.gpuCascades[count]?.readPixels),
     gpuCascadesTimer: (results.gpuCascades[3]?.timerQuery ?? null) !== null ? 'timer-query' : results.gpuCascades[3] ? 'readpixels-sync' : null,
     frameMs256ByCascades: byCascades((count) => results.frameByCascades[count]),
+    // The lighting group: issue 26's slope light over the 'high' frame without it (goal ≤ 1.1); the streaks and spray at force 9.
+    slopeLightCost: results.lighting?.slopeLightCost ?? null,
+    beaufortLookCostAtForce9: results.lighting?.beaufortLookCostAtForce9 ?? null,
+    // The webgpu group: the frame at 1280x720 by subject, the WebGL2 backend's over the WebGL Ocean's (goal ≤ 1.2), the FFT update by N and subject.
+    webgpuFrameMs: results.webgpu?.frameMs ?? null,
+    webgpuVsWebGL: results.webgpu?.webgpuVsWebGL ?? null,
+    webgpuVsWebGLSameDraw: results.webgpu?.webgpuVsWebGLSameDraw ?? null,
+    webgpuFftMs: results.webgpu?.fftMs ?? null,
     browser: browserError === null ? 'ok' : 'failed',
     ...(browserError === null ? {} : { browserError }),
     seconds: Math.round((performance.now() - started) / 100) / 10,

@@ -12,7 +12,8 @@ import { ACESFilmicToneMapping, BoxGeometry, Mesh, MeshBasicMaterial, Perspectiv
 import type { PressureSource } from '../../src/layers/localWaves';
 import { Ocean, type OceanOptions } from '../../src/ocean';
 import { islandFrames } from './island';
-import { timeRounds } from './timedRounds';
+import { withoutBeaufortLook, withoutSlopeLight } from './lightingCost';
+import { onePixelRead, timeRounds } from './timedRounds';
 
 export interface FrameOptions {
   resolution: number;
@@ -27,8 +28,13 @@ export interface FrameOptions {
    * with `activeLocalWaves`, a hull circling ahead of the camera and a stone every second, so that
    * the local waves step every frame (the living-surface rows).
    */
-  variants?: { label: string; options: OceanOptions; activeLocalWaves: boolean; boxes?: boolean }[];
+  variants?: { label: string; options: OceanOptions; activeLocalWaves: boolean; boxes?: boolean; surface?: SurfaceEdit }[];
+  /** The canvas with 4× MSAA, as the 'high' quality level draws (the lighting rows). */
+  antialias?: boolean;
 }
+
+/** What the lighting rows leave out of a variant's surface (lightingCost.ts). */
+type SurfaceEdit = 'without slope light' | 'without Beaufort look';
 
 export interface FrameSamples {
   label: string;
@@ -43,7 +49,7 @@ export interface FrameSamples {
 }
 
 async function frames(options: FrameOptions): Promise<FrameSamples[]> {
-  const renderer = new WebGLRenderer({ antialias: false });
+  const renderer = new WebGLRenderer({ antialias: options.antialias ?? false });
   renderer.setPixelRatio(1);
   renderer.setSize(options.width, options.height);
   renderer.toneMapping = ACESFilmicToneMapping;
@@ -52,21 +58,22 @@ async function frames(options: FrameOptions): Promise<FrameSamples[]> {
   const camera = new PerspectiveCamera(55, options.width / options.height, 0.5, 1e5);
   camera.position.set(0, 12, 0);
   camera.lookAt(60, 0, -80);
-  const variants =
+  const variants: NonNullable<FrameOptions['variants']> =
     options.variants ?? options.patchSizeSets.map((patchSizes) => ({ label: 'frame', options: patchSizes ? { patchSizes } : {}, activeLocalWaves: false, boxes: false }));
   const box = new BoxGeometry(6, 4, 6);
   const red = new MeshBasicMaterial({ color: 0xc02020 });
-  const subjects = variants.map(({ label, options: oceanOptions, activeLocalWaves, boxes }) => {
+  const subjects = variants.map(({ label, options: oceanOptions, activeLocalWaves, boxes, surface }) => {
     const scene = new Scene();
     // With `boxes`: five boxes ahead of the camera, for the sea to reflect (the reflections rows).
     if (boxes) for (let i = 0; i < 5; i++) scene.add(new Mesh(box, red).translateX(30 + 12 * i).translateY(2).translateZ(-40 - 10 * i));
     const ocean = new Ocean(renderer, { resolution: options.resolution, seed: 7, path: 'gpu', ...oceanOptions });
     scene.add(ocean);
     const hull: PressureSource | null = activeLocalWaves ? (ocean.localWaves?.addPressure({ length: 8, beam: 2.6, draft: 0.6 }, { x: 30, z: -40, heading: 0 }) ?? null) : null;
-    return { label, scene, ocean, hull, samples: [] as number[], calls: 0, triangles: 0 };
+    if (surface === 'without slope light') withoutSlopeLight(ocean.surface.material);
+    return { label, scene, ocean, hull, surface, samples: [] as number[], calls: 0, triangles: 0 };
   });
   try {
-    await timeRounds(gl, subjects, options, (subject, t, round) => {
+    await timeRounds(onePixelRead(gl), subjects, options, (subject, t, round) => {
       if (subject.hull) {
         // 5 m/s round a 30 m circle ahead of the camera, and a stone every second.
         const angle = t / 6;
@@ -74,6 +81,8 @@ async function frames(options: FrameOptions): Promise<FrameSamples[]> {
         if (round % 30 === 0) subject.ocean.localWaves?.drop(20, -25);
       }
       subject.ocean.update(t);
+      // After the first draw, whose bindLayers sets the wind's look: three uniform writes a frame.
+      if (subject.surface === 'without Beaufort look') withoutBeaufortLook(subject.ocean.surface.material);
       camera.far = Math.max(1e4, 1.5 * subject.ocean.horizonDistance);
       camera.updateProjectionMatrix();
       renderer.render(subject.scene, camera);

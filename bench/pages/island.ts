@@ -14,7 +14,7 @@ import { SunLight } from '../../src/objects/sunLight';
 import { fitFarPlane, Ocean } from '../../src/index';
 import { ParameterError } from '../../src/parameters/options';
 import { QUALITY_STEPS, simulationAtQuality, type QualityLevel } from '../../src/runtime/adaptiveQuality';
-import { timeRounds } from './timedRounds';
+import { onePixelRead, timeRounds } from './timedRounds';
 
 export interface IslandFrameOptions {
   width: number;
@@ -70,7 +70,7 @@ export async function islandFrames(options: IslandFrameOptions): Promise<IslandF
     return { label, scene, ocean, samples: [] as number[], updateSamples: [] as number[], calls: 0 };
   });
   try {
-    await timeRounds(gl, subjects, options, (subject, t, _round, timed) => {
+    await timeRounds(onePixelRead(gl), subjects, options, (subject, t, _round, timed) => {
       subject.scene.add(island); // a reparenting, nothing drawn
       const start = performance.now();
       subject.ocean.update(t, camera);

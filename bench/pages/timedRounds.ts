@@ -1,29 +1,37 @@
 /**
- * The frame pages' timed loop (frame.ts, island.ts): each round advances the simulated time by a
- * 30 fps frame and draws every subject once, interleaved so that the machine's drifts fall on all
- * alike. A frame is timed from an idle GPU to a 1-pixel readPixels after it (gl.finish does not
- * block in Chromium: BROWSER.md), and yields to the event loop before the next one.
+ * The frame pages' timed loop (frame.ts, island.ts, webgpu.ts): each round advances the simulated
+ * time by a 30 fps frame and draws every subject once, interleaved so that the machine's drifts
+ * fall on all alike. A frame is timed from an idle GPU to the end of `finish(subject)`, which
+ * returns once the GPU has done the frame's work (on WebGL a 1-pixel readPixels, onePixelRead:
+ * gl.finish does not block in Chromium, BROWSER.md), and yields to the event loop before the next one.
  */
 export async function timeRounds<S extends { samples: number[] }>(
-  gl: WebGLRenderingContext | WebGL2RenderingContext,
+  finish: (subject: S) => void | Promise<void>,
   subjects: readonly S[],
   counts: { warmup: number; rounds: number },
   /** Draws `subject` at time `t`; `timed` is false during the warm-up, whose frames are not kept. */
   drawFrame: (subject: S, t: number, round: number, timed: boolean) => void,
 ): Promise<void> {
-  const pixel = new Uint8Array(4);
-  const sync = () => gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
   let t = 3;
   for (let round = 0; round < counts.warmup + counts.rounds; round++) {
     t += 1 / 30;
     const timed = round >= counts.warmup;
     for (const subject of subjects) {
-      sync();
+      await finish(subject);
       const start = performance.now();
       drawFrame(subject, t, round, timed);
-      sync();
+      await finish(subject);
       if (timed) subject.samples.push(performance.now() - start);
       await new Promise((resolve) => setTimeout(resolve, 0));
     }
   }
+}
+
+/**
+ * A `finish` for timeRounds on a WebGL context: a 1-pixel readPixels of the framebuffer bound for
+ * reading, which cannot return before the commands before it are done.
+ */
+export function onePixelRead(gl: WebGLRenderingContext | WebGL2RenderingContext): () => void {
+  const pixel = new Uint8Array(4);
+  return () => gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
 }

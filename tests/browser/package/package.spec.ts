@@ -1,4 +1,4 @@
-import { expect, test, type Page } from '@playwright/test';
+import { chromium, expect, test, type Page } from '@playwright/test';
 import { execFileSync } from 'node:child_process';
 import { copyFileSync, existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -6,12 +6,15 @@ import { dirname, join, relative, resolve } from 'node:path';
 import { PNG } from 'pngjs';
 import { serveDirectory } from '../../../scripts/static-server.mjs';
 import { ensureBuiltLibrary } from '../shared/builtLibrary';
+import { WEBGPU_BROWSER } from '../shared/webgpuBrowser';
 
 // What a new user gets (issue 11, "Done when"): the library packed as npm publishes it (`npm pack`
 // of dist/lib as prepack builds it), installed with three into a new project outside the repository,
 // the README's Quick start page and main.js copied into it verbatim, built with vite, served as
 // plain files and opened in headless Chromium. Its picture must be the app's first view: the same
-// camera, renderer settings and sea at the same time give the same pixels.
+// camera, renderer settings and sea at the same time give the same pixels. The README's WebGPU
+// quick start (three-fft-ocean/webgpu on WebGPURenderer) is built in the same project and must
+// draw the sea on both of WebGPURenderer's backends (issue 23).
 
 const repo = resolve(import.meta.dirname, '../../..');
 /** The three.js the repository develops against: the one the new project installs. */
@@ -136,6 +139,13 @@ function newProject(name: string, packages: string[]): string {
   return project;
 }
 
+let quickStart: string | undefined;
+/** The project the README's quick starts are built in: the tarball and three, installed once for both tests. */
+function quickStartProject(): string {
+  quickStart ??= newProject('quick-start', [tarball(), `three@${threeVersion}`]);
+  return quickStart;
+}
+
 test("the packed library in a new vite project: the README's Quick start shows the app's first view", async ({ page, browser }) => {
   test.setTimeout(180_000); // pack (the library built if stale), install, build, two pages: about 60 s here, more on a busy machine
   let project = '';
@@ -145,7 +155,7 @@ test("the packed library in a new vite project: the README's Quick start shows t
   });
 
   await test.step('install the tarball and three into a new project', () => {
-    project = newProject('quick-start', [tarball(), `three@${threeVersion}`]);
+    project = quickStartProject();
     expect(JSON.parse(readFileSync(join(project, 'node_modules/three/package.json'), 'utf8')).version).toBe(threeVersion);
   });
 
@@ -249,6 +259,148 @@ test("the packed library in a new vite project: the README's Quick start shows t
       await appPage.close();
     }
   } finally {
+    await server.close();
+  }
+});
+
+/**
+ * Runs in the page before its scripts (page.addInitScript): hands three's WebGPU backend a texture
+ * of the canvas's size and format in place of the canvas's own (GPUCanvasContext's configure and
+ * getCurrentTexture), and gives the page `readCanvasTexture()`, which copies it back, RGBA rows
+ * from the top, or null before the first frame. Headless SwiftShader drops its WebGPU instance
+ * once a frame is presented to a canvas (../shared/BROWSER.md; here "Instance dropped in
+ * popErrorScope" and a white canvas): so nothing is presented, and what the quick start drew, the
+ * whole of WebGPURenderer's output to the canvas with its tone mapping and colour space, is read
+ * back from that texture instead, as tests/browser/webgpu reads back its render targets.
+ */
+function drawCanvasIntoReadableTexture(): void {
+  const { GPUTextureUsage, GPUBufferUsage, GPUMapMode } = globalThis as unknown as Record<'GPUTextureUsage' | 'GPUBufferUsage' | 'GPUMapMode', Record<string, number>>;
+  let configuration: GPUCanvasConfiguration | null = null;
+  let texture: GPUTexture | null = null;
+  GPUCanvasContext.prototype.configure = function (given: GPUCanvasConfiguration) {
+    configuration = given;
+  };
+  GPUCanvasContext.prototype.getCurrentTexture = function (this: GPUCanvasContext) {
+    if (!configuration) throw new Error('getCurrentTexture before configure');
+    const { width, height } = this.canvas;
+    if (!texture || texture.width !== width || texture.height !== height) {
+      texture?.destroy();
+      const usage = (configuration.usage ?? GPUTextureUsage.RENDER_ATTACHMENT) | GPUTextureUsage.COPY_SRC;
+      texture = configuration.device.createTexture({ size: [width, height], format: configuration.format, usage });
+    }
+    return texture;
+  };
+  const readCanvasTexture = async () => {
+    if (!configuration || !texture) return null;
+    const { device, format } = configuration;
+    const { width, height } = texture;
+    const bytesPerRow = Math.ceil((4 * width) / 256) * 256; // copyTextureToBuffer's row alignment
+    const buffer = device.createBuffer({ size: bytesPerRow * height, usage: GPUBufferUsage.COPY_DST | GPUBufferUsage.MAP_READ });
+    const encoder = device.createCommandEncoder();
+    encoder.copyTextureToBuffer({ texture }, { buffer, bytesPerRow }, [width, height]);
+    device.queue.submit([encoder.finish()]);
+    await buffer.mapAsync(GPUMapMode.READ);
+    const bytes = new Uint8Array(buffer.getMappedRange());
+    const [r, b] = format === 'bgra8unorm' ? [2, 0] : [0, 2];
+    const data: number[] = [];
+    for (let row = 0; row < height; row++) {
+      for (let i = row * bytesPerRow; i < row * bytesPerRow + 4 * width; i += 4) data.push(bytes[i + r], bytes[i + 1], bytes[i + b], bytes[i + 3]);
+    }
+    buffer.destroy();
+    return { width, height, data };
+  };
+  Object.assign(window, { readCanvasTexture });
+}
+
+/**
+ * How much the sea near the camera (the picture's lower half) varies from pixel to pixel: the mean
+ * |difference| of the green channel between horizontal neighbours. The JS FFT's worker has not
+ * delivered fields for the first frames, which show a flat sea.
+ */
+function waviness({ width, height, data }: Picture): number {
+  let sum = 0;
+  for (let y = Math.round(height / 2); y < height; y++) for (let x = 1; x < width; x++) sum += Math.abs(data[4 * (y * width + x) + 1] - data[4 * (y * width + x - 1) + 1]);
+  return sum / ((height - Math.round(height / 2)) * (width - 1));
+}
+
+/**
+ * Opens the quick start's `url` with Playwright's clock stopped, lets its animation loop draw frames
+ * from FRAME_MS on, one a poll, until its sea has waves (the worker's fields arrived), and returns
+ * that picture as `capture` takes it and the page's problems.
+ */
+async function drawUntilWaves(page: Page, url: string, capture: () => Promise<Picture | null>): Promise<{ picture: Picture; problems: string[] }> {
+  await page.clock.install({ time: 0 });
+  await page.clock.pauseAt(1000);
+  const problems = watchProblems(page);
+  await page.goto(url);
+  await page.waitForFunction(() => document.querySelector('canvas') !== null);
+  await page.clock.fastForward(FRAME_MS - (await page.evaluate(() => performance.now())));
+  let picture: Picture | null = null;
+  await expect
+    .poll(async () => {
+      await page.clock.runFor(17); // one more frame
+      picture = await capture();
+      return picture ? waviness(picture) : 0;
+    }, { timeout: 60_000, message: 'waves on the sea near the camera' })
+    .toBeGreaterThan(WAVY);
+  return { picture: picture!, problems };
+}
+
+/**
+ * The waviness (above) a sea with waves exceeds. Measured at 480×270: the quick start's first
+ * frame, before the worker's fields, 0.31 (without tone mapping); with waves 3.26 (WebGL2 backend)
+ * and 3.31 (WebGPU backend).
+ */
+const WAVY = 1.5;
+
+test("the packed library's three-fft-ocean/webgpu in the same project: the README's WebGPU quick start draws the sea on WebGPURenderer's two backends", async ({ page }) => {
+  test.setTimeout(180_000);
+  const project = join(quickStartProject(), 'webgpu'); // the first test's project: its packages, installed once
+  await test.step("build the README's WebGPU quick start with vite", () => {
+    const readme = readFileSync(join(repo, 'README.md'), 'utf8');
+    mkdirSync(project, { recursive: true });
+    writeFileSync(join(project, 'index.html'), quickStartFile(readme, 'index.html'));
+    writeFileSync(join(project, 'main.js'), quickStartFile(readme, 'webgpu/main.js'));
+    run(join(repo, 'node_modules/.bin/vite'), ['build', project, '--logLevel', 'error'], project);
+  });
+  const server = await serveDirectory(join(project, 'dist'));
+  const webgpuBrowser = await chromium.launch(WEBGPU_BROWSER.launchOptions);
+  try {
+    // WebGL2: the test's own Chromium has no WebGPU adapter (no --enable-unsafe-webgpu), so
+    // WebGPURenderer falls back to its WebGL2 backend, the backend forceWebGL: true makes; the canvas is drawn and shown.
+    await page.setViewportSize(SIZE);
+    const webgl = await drawUntilWaves(page, `${server.url}/`, () => screenshot(page));
+    expect(await page.evaluate(() => document.querySelector('canvas')!.getContext('webgl2') !== null), 'a WebGL2 canvas').toBe(true);
+    // WebGPU: SwiftShader's adapter, read back from the texture the canvas would present.
+    const webgpuPage = await webgpuBrowser.newPage({ viewport: SIZE });
+    await webgpuPage.addInitScript(drawCanvasIntoReadableTexture);
+    const readBack = () => webgpuPage.evaluate(() => (window as unknown as { readCanvasTexture: () => Promise<{ width: number; height: number; data: number[] } | null> }).readCanvasTexture());
+    const webgpu = await drawUntilWaves(webgpuPage, `${server.url}/`, async () => {
+      const read = await readBack();
+      return read && { ...read, data: new Uint8Array(read.data) };
+    });
+    const bandMeans: Record<string, [number, number, number][]> = {};
+    for (const [backend, { picture, problems }] of Object.entries({ webgl2: webgl, webgpu })) {
+      const png = new PNG({ width: picture.width, height: picture.height });
+      png.data = Buffer.from(picture.data);
+      writeFileSync(test.info().outputPath(`webgpu-quick-start-${backend}.png`), PNG.sync.write(png));
+      expect(problems, `errors on the ${backend} page`).toEqual([]);
+      expect([picture.width, picture.height], `the ${backend} picture's size`).toEqual([SIZE.width, SIZE.height]);
+      const { height } = picture;
+      const sky = meanColour(picture, 0, Math.round(height / 10));
+      const sea = meanColour(picture, Math.round((height * 3) / 4), height);
+      expect(sky[2], `${backend}: the sky at the top`).toBeGreaterThan(120);
+      expect(sea[2], `${backend}: the sea is blue`).toBeGreaterThan(sea[0] + 10);
+      expect(sky[0] + sky[1] + sky[2], `${backend}: the sky brighter than the sea`).toBeGreaterThan(sea[0] + sea[1] + sea[2] + 30);
+      bandMeans[backend] = [sky, sea];
+      console.log(`package.spec: WebGPU quick start on ${backend}: sky ${sky.map(Math.round)}, sea ${sea.map(Math.round)}, waviness ${waviness(picture).toFixed(2)}`);
+    }
+    // The same code on the two backends draws the same sea (a few frames apart: the frame with the worker's first fields).
+    for (let band = 0; band < 2; band++) {
+      for (let c = 0; c < 3; c++) expect(Math.abs(bandMeans.webgl2[band][c] - bandMeans.webgpu[band][c]), `${band ? 'sea' : 'sky'} colour, channel ${c}, WebGL2 against WebGPU`).toBeLessThan(6);
+    }
+  } finally {
+    await webgpuBrowser.close();
     await server.close();
   }
 });
