@@ -7,7 +7,8 @@
 //                most 1.5x at high, 1.25x at medium); and at 'high' the same frame and its
 //                ocean.update alone without the seabed (seabed-cost: the seabed's share, issue
 //                25: at most 5 %). Each row has the frame's wall time (ms) and, on Linux, the CPU
-//                time Chromium's processes spent on it (cpuMs; island-cost's cpuSceneOverSky):
+//                time Chromium's processes spent on it (cpuMs; island-cost's cpuSceneOverSky,
+//                seabed-cost's cpuFrameShare):
 //                SwiftShader's work, which the machine's load does not stretch (bench/lib/cpuTime.mjs).
 import { withTimeout } from '../lib/browser.mjs';
 import { descendantsCpuMs } from '../lib/cpuTime.mjs';
@@ -63,8 +64,9 @@ export async function browser({ page, results, islandRounds = FRAME_ROUNDS }) {
     emit({ bench: 'island-cost', quality, ...results.island[quality] });
     if (ms['scene, no seabed']) {
       const without = ms['scene, no seabed'];
-      results.island.seabed = { frame: ms.scene.frame / without.frame - 1, update: ms.scene.update / without.update - 1 };
-      emit({ bench: 'seabed-cost', quality, frameShare: results.island.seabed.frame, updateShare: results.island.seabed.update });
+      const cpuFrame = ms.scene.cpu !== null && without.cpu !== null ? ms.scene.cpu / without.cpu - 1 : null;
+      results.island.seabed = { frame: ms.scene.frame / without.frame - 1, update: ms.scene.update / without.update - 1, cpuFrame };
+      emit({ bench: 'seabed-cost', quality, frameShare: results.island.seabed.frame, updateShare: results.island.seabed.update, cpuFrameShare: results.island.seabed.cpuFrame });
     }
   }
 }
