@@ -21,7 +21,8 @@
 //
 // bench/lib/ holds what the groups share: settings.mjs (sizes, rounds, timeouts), stats.mjs
 // (medians, quartiles, interleaved timing), output.mjs (rows and progress), servers.mjs (Vite, a
-// static server, free ports) and browser.mjs (Chromium and page helpers).
+// static server, free ports), browser.mjs (Chromium and page helpers) and cpuTime.mjs (the CPU time
+// Chromium's processes have run, for the island rows).
 import { existsSync, statSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import * as app from './groups/app.mjs';

@@ -6,7 +6,9 @@
  * 1-pixel readPixels, the Oceans of one call interleaved round by round. A quality level is put
  * in force as applyQuality.ts does, but for its MSAA (this page draws straight into an unsampled
  * canvas): the pixel ratio, the simulation's grid and cascades, the refraction capture's and the
- * reflection's scale. Each frame's ocean.update(t) is also timed alone (the simulation's share).
+ * reflection's scale. Each frame's ocean.update(t) is also timed alone (the simulation's share),
+ * and where the bench gives the page Chromium's CPU time (window.benchCpuMs, bench/lib/cpuTime.mjs)
+ * each frame's CPU time too.
  */
 import { ACESFilmicToneMapping, PerspectiveCamera, Scene, WebGLRenderer } from 'three';
 import { Island, ISLAND_VIEW } from '../../src/objects/island';
@@ -30,10 +32,19 @@ export interface IslandFrameSamples {
   label: string;
   samples: number[];
   updateSamples: number[];
+  /** Chromium's CPU time per frame, ms; empty without window.benchCpuMs. */
+  cpuSamples: number[];
   resolution: number;
   cascades: number;
   pixelRatio: number;
   calls: number;
+}
+
+declare global {
+  interface Window {
+    /** Chromium's CPU time so far, ms (null where the system does not tell it), when the bench exposes it. */
+    benchCpuMs?: () => Promise<number | null>;
+  }
 }
 
 export async function islandFrames(options: IslandFrameOptions): Promise<IslandFrameSamples[]> {
@@ -67,7 +78,7 @@ export async function islandFrames(options: IslandFrameOptions): Promise<IslandF
     light.update();
     const scene = new Scene();
     scene.add(ocean, light);
-    return { label, scene, ocean, samples: [] as number[], updateSamples: [] as number[], calls: 0 };
+    return { label, scene, ocean, samples: [] as number[], updateSamples: [] as number[], cpuSamples: [] as number[], calls: 0 };
   });
   try {
     await timeRounds(onePixelRead(gl), subjects, options, (subject, t, _round, timed) => {
@@ -79,11 +90,12 @@ export async function islandFrames(options: IslandFrameOptions): Promise<IslandF
       fitFarPlane(camera, subject.ocean);
       renderer.render(subject.scene, camera);
       subject.calls = renderer.info.render.calls;
-    });
-    return subjects.map(({ label, ocean, samples, updateSamples, calls }) => ({
+    }, window.benchCpuMs);
+    return subjects.map(({ label, ocean, samples, updateSamples, cpuSamples, calls }) => ({
       label,
       samples,
       updateSamples,
+      cpuSamples,
       resolution: ocean.parameters.resolution,
       cascades: ocean.parameters.patchSizes.length,
       pixelRatio: renderer.getPixelRatio(),
