@@ -36,7 +36,8 @@
  * off by about 5e-4 of its RMS.
  */
 import { StorageBufferAttribute, type ComputeNode, type Node, type StorageBufferNode, type WebGPURenderer } from 'three/webgpu';
-import { Fn, instanceIndex, storage, uint, vec2, workgroupArray, workgroupBarrier } from 'three/tsl';
+import { Fn, instanceIndex, storage, uint, workgroupArray, workgroupBarrier } from 'three/tsl';
+import { complexMultiply, timesI } from './complexNodes';
 import { ParameterError } from '../parameters/options';
 import type { Vec2Node } from '../webgpu/nodeTypes';
 
@@ -123,7 +124,7 @@ export class ComputeInverseFft2D {
           const k = butterfly.bitAnd(uint(ns - 1));
           const x = Array.from({ length: radix }, (_, r) => read(butterfly.add(uint((r * n) / radix))).toVar());
           if (ns > 1) {
-            for (let r = 1; r < radix; r++) x[r].assign(times(x[r], twiddles.element(k.mul(uint((r * n) / (radix * ns))))));
+            for (let r = 1; r < radix; r++) x[r].assign(complexMultiply(x[r], twiddles.element(k.mul(uint((r * n) / (radix * ns))))));
           }
           const out = butterfly.sub(k).mul(uint(radix)).add(k);
           dft(x).forEach((value, q) => write(out.add(uint(q * ns)), value));
@@ -136,11 +137,6 @@ export class ComputeInverseFft2D {
   }
 }
 
-/** The complex product a·w. */
-function times(a: Vec2Node, w: Vec2Node): Vec2Node {
-  return vec2(a.x.mul(w.x).sub(a.y.mul(w.y)), a.x.mul(w.y).add(a.y.mul(w.x)));
-}
-
 /** The inverse DFT of 2 or 4 values, y_q = Σ_r x_r·e^{+2πi·r·q/R}: for R = 4, e^{iπ/2·rq} = i^{rq}. */
 function dft(x: readonly Vec2Node[]): Vec2Node[] {
   if (x.length === 2) return [x[0].add(x[1]), x[0].sub(x[1])];
@@ -148,7 +144,6 @@ function dft(x: readonly Vec2Node[]): Vec2Node[] {
   const evenDifference = x[0].sub(x[2]).toVar();
   const odd = x[1].add(x[3]).toVar();
   const oddDifference = x[1].sub(x[3]).toVar();
-  // i·(x, y) = (−y, x)
-  const rotated = vec2(oddDifference.y.negate(), oddDifference.x);
+  const rotated = timesI(oddDifference);
   return [even.add(odd), evenDifference.add(rotated), even.sub(odd), evenDifference.sub(rotated)];
 }

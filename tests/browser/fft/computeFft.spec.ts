@@ -5,16 +5,23 @@ import { WEBGPU_BROWSER } from '../shared/webgpuBrowser';
 // localhost pages with --enable-unsafe-webgpu (../shared/BROWSER.md): its fields equal the JS FFT's
 // within 1e-5 of their RMS (issue 23), and the exact answers (a plane wave in one field, the
 // term-by-term DFT of all at small N) too, so that an error both FFTs shared would still show. Then
-// what is built on it: a cascade's fields (ComputeWaveFields) against the JS path's, and the WebGPU
-// Ocean on path 'gpu' against path 'js'.
+// what is built on it: the spectra evolved in a compute shader (ComputeSpectrumEvolution) and a
+// cascade's fields (ComputeWaveFields) against the JS path's, also a day and a month into the scene
+// (the phases from dispersion.ts' table, reduced in double precision), and the WebGPU Ocean on path
+// 'gpu' against path 'js'.
 test.use(WEBGPU_BROWSER);
 
 const SIZES = [16, 32, 64, 128, 256, 512];
 /** Sizes also checked against the term-by-term DFT (N⁴ operations per field). */
 const NAIVE_SIZES = [16, 32];
 const BOUND = 1e-5;
+/**
+ * Times (s) the evolved spectra and the fields are compared at: a day and a month in, a float32
+ * ω·t would be off by radians (ulp(2.6e6 s) = 0.25 s against periods of seconds).
+ */
+const TIMES = [0, 12.5, 86_400.3, 2_592_000.7];
 
-test('the compute FFT, and the cascade fields made with it, equal the JS path within 1e-5 of RMS at N = 16 to 512; so does the WebGPU Ocean on path gpu', async ({ page }) => {
+test('the compute FFT, the spectra evolved in a compute shader and the cascade fields made with them equal the JS path within 1e-5 of RMS at N = 16 to 512, at large times too; so does the WebGPU Ocean on path gpu', async ({ page }) => {
   const errors: string[] = [];
   page.on('pageerror', (error) => errors.push(error.message));
   await page.goto('/tests/browser/fft/computeFft.html');
@@ -30,10 +37,19 @@ test('the compute FFT, and the cascade fields made with it, equal the JS path wi
     expect(result.planeWave, `N = ${n} vs the plane wave`).toBeLessThan(BOUND);
     if (result.naive !== null) expect(result.naive, `N = ${n} vs the naive DFT`).toBeLessThan(BOUND);
   }
+  // The finest cascade in deep water at every size, and the largest in water 5 m deep at one: its
+  // long waves feel the bottom, ω = √(g·k·tanh(k·d)) (Tessendorf 2001, eq. 15), so other m per mode.
+  for (const [n, depth, cascade] of [...SIZES.map((size) => [size, Infinity, 0]), [64, 5, -1]]) {
+    const errors = await page.evaluate(([size, d, c, times]) => window.computeFft.evolvedSpectra(size, times, d, c), [n, depth, cascade, TIMES] as const);
+    console.log(`evolved spectra N = ${n}, cascade ${cascade}, depth ${depth} m: compute shader vs JS at t = ${TIMES.join(', ')} s: ${errors.map((e) => e.toExponential(2)).join(', ')} (relative RMS, worst of 4 spectra)`);
+    for (const [i, error] of errors.entries()) expect(error, `evolved spectra at N = ${n}, depth ${depth} m, t = ${TIMES[i]} s`).toBeLessThan(BOUND);
+  }
   for (const n of SIZES) {
-    const error = await page.evaluate((size) => window.computeFft.cascadeFields(size, 12.5), n);
-    console.log(`cascade fields N = ${n}: compute FFT vs JS path ${error.toExponential(2)} (relative RMS, worst of 8 fields)`);
-    expect(error, `cascade fields at N = ${n}`).toBeLessThan(BOUND);
+    for (const t of [12.5, TIMES[TIMES.length - 1]]) {
+      const error = await page.evaluate(([size, time]) => window.computeFft.cascadeFields(size, time), [n, t] as const);
+      console.log(`cascade fields N = ${n}, t = ${t} s: compute shaders vs JS path ${error.toExponential(2)} (relative RMS, worst of 8 fields)`);
+      expect(error, `cascade fields at N = ${n}, t = ${t} s`).toBeLessThan(BOUND);
+    }
   }
   const paths = await page.evaluate(() => window.computeFft.oceanPaths(3.7));
   console.log(`WebGPU Ocean, path 'gpu' vs 'js' (N = 64): picture ${paths.meanLevels.toFixed(3)} levels on average, ${paths.maxLevels} at most; heightAt ${paths.heights.toExponential(2)} m at most`);

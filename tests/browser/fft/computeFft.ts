@@ -9,6 +9,7 @@ import { Ocean } from '../../../src/webgpu/index';
 import { ComputeInverseFft2D } from '../../../src/fft/computeFft';
 import { BatchedInverseFft2D } from '../../../src/fft/fft';
 import { ComputeWaveFields } from '../../../src/fft/computeWaveFields';
+import { ComputeSpectrumEvolution } from '../../../src/fft/computeSpectrum';
 import { CpuWaveFields } from '../../../src/fft/cpuWaveFields';
 import { FIELD_TEXTURES } from '../../../src/fft/waveFieldLayout';
 import { validateParameters } from '../../../src/parameters/parameters';
@@ -124,9 +125,45 @@ function naiveTransform(n: number, input: Fields): Fields {
 const harness = {
   open,
   /**
+   * The spectra the compute shader evolves (ComputeSpectrumEvolution, read back from the FFT's
+   * buffer before any transform) against the JS path's (CpuWaveFields.spectraAt, in double
+   * precision), at each time of `times`: per time, the largest relative RMS error of the four
+   * packed spectra. Cascade `cascade` (0 the finest, −1 the largest) of a sea of resolution n in
+   * water `depth` m deep.
+   */
+  async evolvedSpectra(n: number, times: number[], depth: number, cascade: number): Promise<number[]> {
+    const spectrum = createCascadeSpectra(validateParameters({ resolution: n, windSpeed: 10, seed: 3, depth })).at(cascade)!;
+    const fft = new ComputeInverseFft2D(renderer!, n, FIELDS);
+    const evolution = new ComputeSpectrumEvolution(renderer!, spectrum, fft.fields);
+    const js = new CpuWaveFields(spectrum);
+    try {
+      const errors: number[] = [];
+      for (const t of times) {
+        evolution.run(t);
+        const evolved = Float64Array.from(new Float32Array(await renderer!.getArrayBufferAsync(fft.data)));
+        const input = js.spectraAt(t);
+        const expected = new Float64Array(evolved.length);
+        for (let f = 0; f < FIELDS; f++) {
+          for (let j = 0; j < n; j++) {
+            for (let i = 0; i < n; i++) {
+              const at = 2 * ((f * n + j) * n + i);
+              expected[at] = input.inputReal[input.inputIndex(f, i, j)];
+              expected[at + 1] = input.inputImag[input.inputIndex(f, i, j)];
+            }
+          }
+        }
+        errors.push(Math.max(...relativeRmsErrors(n, FIELDS, evolved, expected)));
+      }
+      return errors;
+    } finally {
+      evolution.dispose();
+      fft.dispose();
+    }
+  },
+  /**
    * A cascade's fields at time t from the compute FFT (ComputeWaveFields, its textures read back)
    * against the JS path's (CpuWaveFields), for each field texture and channel: the largest RMS of
-   * the difference over the RMS of the JS field. The first (largest) cascade of a sea of resolution n.
+   * the difference over the RMS of the JS field. The first (finest) cascade of a sea of resolution n.
    */
   async cascadeFields(n: number, t: number): Promise<number> {
     const [spectrum] = createCascadeSpectra(validateParameters({ resolution: n, windSpeed: 10, seed: 3 }));
