@@ -15,8 +15,9 @@
  * displaced and lit in TSL (seaNodes.ts, lightNodes.ts) as the WebGL Ocean's ocean.frag lights it:
  * the reflection of its analytic sky (skyNodes.ts, also drawn behind everything), the light from
  * under the surface, the caustics, the sun's glint and the crests' glow; and its whitecap foam,
- * the same field as the WebGL Ocean's JS path makes (src/layers/whitecapFoam.ts, in JS over the
- * largest cascade's patch, on the same clock, uploaded as a float texture), drawn as ocean.frag
+ * the same field as the WebGL Ocean's JS path makes (src/layers/whitecapFoam.ts, over the largest
+ * cascade's patch, on the same clock: in JS, uploaded as a float texture, or on path 'gpu' in a
+ * compute shader from the compute FFT's fields, computeFoam.ts), drawn as ocean.frag
  * draws it, with its streaks from force 7 and the spray from force 9 (foamNodes.ts); on its horizon rings round
  * the camera (seaRings.ts), placed before each draw. heightAt and normalAt answer from the same
  * fields and code as the WebGL Ocean's (src/layers/surfaceQuery.ts), so for the same options and
@@ -40,6 +41,7 @@ import { calibrateFoam, jacobianCovariance, type FoamCalibration, type JacobianC
 import { WhitecapFoam } from '../layers/whitecapFoam';
 import { beaufortAppearance, type BeaufortAppearance } from '../render/beaufortAppearance';
 import { FoamShading } from './foamNodes';
+import { ComputeFoam } from './computeFoam';
 import { DEFAULT_SHADING, DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ColorInput } from '../parameters/sceneOptions';
 import { sunAngles, type SunDirection } from '../render/skyEnvironment';
 import { createCascadeSpectra } from '../spectrum/initialSpectrum';
@@ -119,7 +121,7 @@ export class Ocean extends Object3D {
   /** The FFT cascades, finest first (the JS FFT's fields as float textures). */
   private cascades: FftCascade<null>[] = [];
   private currentLayers: readonly WaveLayer[] = [];
-  /** The whitecap foam over the largest cascade's patch, computed in JS (whitecapFoam.ts). */
+  /** The whitecap foam over the largest cascade's patch (whitecapFoam.ts), in JS, or on path 'gpu' in a compute shader (computeFoam.ts). */
   private foam!: WhitecapFoam;
   /** The cascades' Jacobian statistics, and the foam's calibration for them at the current choppiness and wind (foamModel.ts). */
   private covariance!: JacobianCovariance;
@@ -310,7 +312,7 @@ export class Ocean extends Object3D {
     this.currentLayers = orderLayers(this.cascades);
     this.covariance = jacobianCovariance(spectra);
     this.calibration = calibrateFoam(this.covariance, params.choppiness, params.windSpeed);
-    this.foam = new WhitecapFoam(this.currentLayers, { js: this.support });
+    this.foam = new WhitecapFoam(this.currentLayers, renderer ? { producer: (layers, frame) => new ComputeFoam(renderer, layers, frame) } : { js: this.support });
     this.look = beaufortAppearance(params.windSpeed, params.windDirection);
     this.lastTime = NaN;
   }

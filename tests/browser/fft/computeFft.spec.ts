@@ -1,4 +1,6 @@
 import { expect, test } from '@playwright/test';
+import { writeFileSync } from 'node:fs';
+import { PNG } from 'pngjs';
 import { WEBGPU_BROWSER } from '../shared/webgpuBrowser';
 
 // The compute FFT (src/fft/computeFft.ts) on SwiftShader's WebGPU adapter, which Chromium gives
@@ -7,8 +9,8 @@ import { WEBGPU_BROWSER } from '../shared/webgpuBrowser';
 // term-by-term DFT of all at small N) too, so that an error both FFTs shared would still show. Then
 // what is built on it: the spectra evolved in a compute shader (ComputeSpectrumEvolution) and a
 // cascade's fields (ComputeWaveFields) against the JS path's, also a day and a month into the scene
-// (the phases from dispersion.ts' table, reduced in double precision), and the WebGPU Ocean on path
-// 'gpu' against path 'js'.
+// (the phases from dispersion.ts' table, reduced in double precision), the whitecap foam made from
+// them in a compute shader (ComputeFoam), and the WebGPU Ocean on path 'gpu' against path 'js'.
 test.use(WEBGPU_BROWSER);
 
 const SIZES = [16, 32, 64, 128, 256, 512];
@@ -21,7 +23,7 @@ const BOUND = 1e-5;
  */
 const TIMES = [0, 12.5, 86_400.3, 2_592_000.7];
 
-test('the compute FFT, the spectra evolved in a compute shader and the cascade fields made with them equal the JS path within 1e-5 of RMS at N = 16 to 512, at large times too; so does the WebGPU Ocean on path gpu', async ({ page }) => {
+test('the compute FFT, the spectra evolved in a compute shader and the cascade fields made with them equal the JS path within 1e-5 of RMS at N = 16 to 512, at large times too', async ({ page }) => {
   const errors: string[] = [];
   page.on('pageerror', (error) => errors.push(error.message));
   await page.goto('/tests/browser/fft/computeFft.html');
@@ -51,11 +53,44 @@ test('the compute FFT, the spectra evolved in a compute shader and the cascade f
       expect(error, `cascade fields at N = ${n}, t = ${t} s`).toBeLessThan(BOUND);
     }
   }
+  // compare(), evolvedSpectra() and cascadeFields() dispose what they make: its buffers and textures are gone from the renderer.
+  expect(await page.evaluate(() => window.computeFft.gpuMemory())).toEqual(before);
+  expect(errors).toEqual([]);
+});
+
+test("the whitecap foam of path 'gpu', a compute shader over the compute FFT's fields, equals the JS path's through a warm-up and frame steps; the WebGPU Ocean draws path 'gpu' as path 'js', and runs no JS FFT per frame on it", async ({ page }) => {
+  const errors: string[] = [];
+  page.on('pageerror', (error) => errors.push(error.message));
+  await page.goto('/tests/browser/fft/computeFft.html');
+  await expect(page).toHaveTitle('ready');
+  expect(await page.evaluate(() => window.computeFft.open()), 'a WebGPU backend').toBeNull();
+  const before = await page.evaluate(() => window.computeFft.gpuMemory());
+  // As the WebGL GPU foam's test (tests/browser/simulation): 20 m/s at N = 128, coverage near 10 %.
+  // The first time is a jump (a warm-up from nothing over 3τ, twelve FFT updates), the next three
+  // are frame steps, the last a jump back in time.
+  const times = [30, 30.05, 30.1, 30.4, 12];
+  const results = await page.evaluate((t) => window.computeFft.foamPaths({ windSpeed: 20, resolution: 128, seed: 3 }, t), times);
+  for (const [i, { meanCoverage, maxDifference }] of results.entries()) {
+    console.log(`foam at t = ${times[i]} s: mean coverage ${meanCoverage.toFixed(4)} (JS), compute shader vs JS at most ${maxDifference.toExponential(2)}`);
+    expect(meanCoverage).toBeGreaterThan(0.01);
+    // Both sum float32 fields in the same order and step the same model; the fields differ by ~2e-7
+    // of their RMS (the first test). A wrong texel index, threshold or step gives differences of
+    // order the coverage. The WebGL GPU foam is held to the same bound.
+    expect(maxDifference).toBeLessThan(1e-4);
+  }
+  // Ten frames after the first update, foam on, no queries: the JS path (on this thread) runs its
+  // FFT for every cascade each frame; path 'gpu' none (its cascades and foam are compute shaders).
+  const calls = await page.evaluate(() => ({ gpu: window.computeFft.jsFftCallsPerFrames('gpu', true, 10), js: window.computeFft.jsFftCallsPerFrames('js', false, 10) }));
+  console.log(`JS FFT calls on this thread over 10 frames: path 'gpu' ${calls.gpu}, path 'js' (no worker) ${calls.js}`);
+  expect(calls.js).toBeGreaterThanOrEqual(30); // three cascades a frame: the counter counts
+  expect(calls.gpu).toBe(0);
   const paths = await page.evaluate(() => window.computeFft.oceanPaths(3.7));
-  console.log(`WebGPU Ocean, path 'gpu' vs 'js' (N = 64): picture ${paths.meanLevels.toFixed(3)} levels on average, ${paths.maxLevels} at most; heightAt ${paths.heights.toExponential(2)} m at most`);
+  const png = new PNG({ width: 160, height: 90 });
+  png.data.set(paths.picture);
+  writeFileSync(test.info().outputPath('ocean-path-gpu.png'), PNG.sync.write(png)); // to be looked at
+  console.log(`WebGPU Ocean, path 'gpu' vs 'js' (N = 64, force 7 with whitecaps): picture ${paths.meanLevels.toFixed(3)} levels on average, ${paths.maxLevels} at most; heightAt ${paths.heights.toExponential(2)} m at most`);
   expect(paths.meanLevels).toBeLessThan(0.05);
   expect(paths.heights).toBe(0); // the queries compute their own fields in JS on both paths
-  // compare(), cascadeFields() and oceanPaths() dispose what they make: its buffers and textures are gone from the renderer.
   expect(await page.evaluate(() => window.computeFft.gpuMemory())).toEqual(before);
   expect(errors).toEqual([]);
 });
