@@ -38,6 +38,7 @@
 import { StorageBufferAttribute, type ComputeNode, type Node, type StorageBufferNode, type WebGPURenderer } from 'three/webgpu';
 import { Fn, instanceIndex, storage, uint, workgroupArray, workgroupBarrier } from 'three/tsl';
 import { complexMultiply, timesI } from './complexNodes';
+import { MAX_SIZE, MIN_SIZE } from './computeSupport';
 import { ParameterError } from '../parameters/options';
 import type { Vec2Node } from '../webgpu/nodeTypes';
 
@@ -46,9 +47,6 @@ type UintNode = Node<'uint'>;
 /** A workgroup array of vec2 as the kernel uses it (@types/three leaves out its element()). */
 type Vec2Array = { element(index: UintNode): Vec2Node };
 
-/** The sizes one workgroup per line can transform under WebGPU's default limits (see above). */
-const MIN_SIZE = 16;
-const MAX_SIZE = 512;
 
 export class ComputeInverseFft2D {
   /** The fields, in and out: 2·fieldCount·N² floats, (re, im) of field f's texel (i, j) at 2·((f·N + j)·N + i). */

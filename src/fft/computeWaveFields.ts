@@ -7,7 +7,7 @@
  * cascadeQueryFields.ts, a worker of their own), as on the WebGL GPU path.
  * Owns the evolution, the FFT, the textures and the copying dispatch; dispose() frees them.
  */
-import { FloatType, LinearFilter, LinearMipmapLinearFilter, RepeatWrapping } from 'three';
+import { FloatType, LinearFilter, LinearMipmapLinearFilter, RedFormat, RepeatWrapping, RGBAFormat } from 'three';
 import { StorageTexture, type ComputeNode, type WebGPURenderer } from 'three/webgpu';
 import { Fn, instanceIndex, textureStore, uint, uvec2, vec4 } from 'three/tsl';
 import { ComputeInverseFft2D } from './computeFft';
@@ -41,7 +41,7 @@ export class ComputeWaveFields implements FftFieldSource {
     const n = spectrum.resolution;
     this.fft = new ComputeInverseFft2D(renderer, n, PACKED_SPECTRA);
     this.evolution = new ComputeSpectrumEvolution(renderer, spectrum, this.fft.fields);
-    [this.displacement, this.derivatives] = FIELD_TEXTURES.map((name) => fieldTexture(n, name));
+    [this.displacement, this.derivatives] = FIELD_TEXTURES.map((name) => periodicStorageTexture(n, name));
     const fields = this.fft.fields;
     const copy = Fn(() => {
       const texel = uvec2(instanceIndex.bitAnd(uint(n - 1)), instanceIndex.div(uint(n)));
@@ -75,10 +75,14 @@ export class ComputeWaveFields implements FftFieldSource {
   }
 }
 
-/** An RGBA32F storage texture of N×N that repeats and is sampled with mipmaps, as the JS path's field textures are. */
-function fieldTexture(n: number, name: string): StorageTexture {
+/**
+ * A float32 storage texture of N×N (RGBA, or red only) that repeats and is sampled with mipmaps, as
+ * the JS path's field and foam textures are: the compute path's fields and foam (computeFoam.ts).
+ */
+export function periodicStorageTexture(n: number, name: string, format: typeof RGBAFormat | typeof RedFormat = RGBAFormat): StorageTexture {
   const texture = new StorageTexture(n, n);
   texture.name = name;
+  texture.format = format;
   texture.type = FloatType;
   texture.wrapS = texture.wrapT = RepeatWrapping;
   texture.magFilter = LinearFilter;

@@ -15,9 +15,10 @@
  * the surface samples, mipmapped by three before it is sampled, as the fields are. Owns the buffer,
  * the texture and the kernel; dispose() frees them.
  */
-import { FloatType, LinearFilter, LinearMipmapLinearFilter, RedFormat, RepeatWrapping, type Texture } from 'three';
-import { StorageBufferAttribute, StorageTexture, type ComputeNode, type TextureNode, type WebGPURenderer } from 'three/webgpu';
+import { RedFormat, type Texture } from 'three';
+import { StorageBufferAttribute, type StorageTexture, type ComputeNode, type TextureNode, type WebGPURenderer } from 'three/webgpu';
 import { clamp, float, floor, Fn, instanceIndex, ivec2, min, storage, textureLoad, textureStore, uint, uniform, uvec2, vec3, vec4 } from 'three/tsl';
+import { periodicStorageTexture } from '../fft/computeWaveFields';
 import { foamStep, type FoamCalibration } from '../layers/foamModel';
 import type { FoamProducer } from '../layers/whitecapFoam';
 import type { LayerFrame, WaveLayer } from '../layers/waveLayer';
@@ -44,14 +45,7 @@ export class ComputeFoam implements FoamProducer {
   ) {
     const m = frame.resolution;
     this.coverage = new StorageBufferAttribute(new Float32Array(m * m), 1);
-    const texture = (this.foamTexture = new StorageTexture(m, m));
-    texture.name = 'foam';
-    texture.format = RedFormat;
-    texture.type = FloatType;
-    texture.wrapS = texture.wrapT = RepeatWrapping;
-    texture.magFilter = LinearFilter;
-    texture.minFilter = LinearMipmapLinearFilter;
-    texture.generateMipmaps = true;
+    const texture = (this.foamTexture = periodicStorageTexture(m, 'foam', RedFormat));
     this.texture = { value: texture };
     this.layerTextures = layers.map((layer) => ({
       displacement: textureLoad(layerTexture(layer, 'displacement')),

@@ -1,4 +1,4 @@
-import { expect, test } from '@playwright/test';
+import { expect, test, type Page } from '@playwright/test';
 import { writeFileSync } from 'node:fs';
 import { PNG } from 'pngjs';
 import { WEBGPU_BROWSER } from '../shared/webgpuBrowser';
@@ -23,13 +23,18 @@ const BOUND = 1e-5;
  */
 const TIMES = [0, 12.5, 86_400.3, 2_592_000.7];
 
-test('the compute FFT, the spectra evolved in a compute shader and the cascade fields made with them equal the JS path within 1e-5 of RMS at N = 16 to 512, at large times too', async ({ page }) => {
+/** Opens the test page on a WebGPU backend (failing, saying why, where there is none); the page's errors collect in the array returned. */
+async function openPage(page: Page): Promise<string[]> {
   const errors: string[] = [];
   page.on('pageerror', (error) => errors.push(error.message));
   await page.goto('/tests/browser/fft/computeFft.html');
   await expect(page).toHaveTitle('ready');
-  const noWebGPU = await page.evaluate(() => window.computeFft.open());
-  expect(noWebGPU, 'a WebGPU backend').toBeNull();
+  expect(await page.evaluate(() => window.computeFft.open()), 'a WebGPU backend').toBeNull();
+  return errors;
+}
+
+test('the compute FFT, the spectra evolved in a compute shader and the cascade fields made with them equal the JS path within 1e-5 of RMS at N = 16 to 512, at large times too', async ({ page }) => {
+  const errors = await openPage(page);
   const before = await page.evaluate(() => window.computeFft.gpuMemory());
   for (const n of SIZES) {
     const result = await page.evaluate(([size, naive]) => window.computeFft.compare(size, naive), [n, NAIVE_SIZES.includes(n)] as const);
@@ -59,11 +64,7 @@ test('the compute FFT, the spectra evolved in a compute shader and the cascade f
 });
 
 test("the whitecap foam of path 'gpu', a compute shader over the compute FFT's fields, equals the JS path's through a warm-up and frame steps; the WebGPU Ocean draws path 'gpu' as path 'js', and runs no JS FFT per frame on it", async ({ page }) => {
-  const errors: string[] = [];
-  page.on('pageerror', (error) => errors.push(error.message));
-  await page.goto('/tests/browser/fft/computeFft.html');
-  await expect(page).toHaveTitle('ready');
-  expect(await page.evaluate(() => window.computeFft.open()), 'a WebGPU backend').toBeNull();
+  const errors = await openPage(page);
   const before = await page.evaluate(() => window.computeFft.gpuMemory());
   // As the WebGL GPU foam's test (tests/browser/simulation): 20 m/s at N = 128, coverage near 10 %.
   // The first time is a jump (a warm-up from nothing over 3τ, twelve FFT updates), the next three

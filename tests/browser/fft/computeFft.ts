@@ -22,6 +22,7 @@ import { calibrateFoam, jacobianCovariance } from '../../../src/layers/foamModel
 import { ComputeFoam } from '../../../src/webgpu/computeFoam';
 import { SeededRandom } from '../../../src/spectrum/random';
 import { naiveInverseDft2D } from '../../unit/naiveDft';
+import { foamDifference } from '../shared/foamDifference';
 
 /** The four packed spectra of waveFieldLayout.ts: as many complex fields as a cascade transforms. */
 const FIELDS = 4;
@@ -52,7 +53,6 @@ async function computeTransform(fft: ComputeInverseFft2D, input: Fields): Promis
 /** The JS FFT of `input`, in double precision. */
 function jsTransform(n: number, input: Fields): Fields {
   const fft = new BatchedInverseFft2D(n, FIELDS);
-  const output = new Float64Array(input.length);
   for (let f = 0; f < FIELDS; f++) {
     for (let j = 0; j < n; j++) {
       for (let i = 0; i < n; i++) {
@@ -63,16 +63,22 @@ function jsTransform(n: number, input: Fields): Fields {
     }
   }
   fft.run();
+  return fieldsFrom(n, fft.outputReal, fft.outputImag, (f, i, j) => fft.outputIndex(f, i, j));
+}
+
+/** Complex fields held as the JS FFT holds them (real and imaginary parts, field f's texel (i, j) at `index`), in the compute FFT's layout. */
+function fieldsFrom(n: number, real: Float64Array | Float32Array, imaginary: Float64Array | Float32Array, index: (f: number, i: number, j: number) => number): Fields {
+  const fields = new Float64Array(2 * FIELDS * n * n);
   for (let f = 0; f < FIELDS; f++) {
     for (let j = 0; j < n; j++) {
       for (let i = 0; i < n; i++) {
         const at = 2 * ((f * n + j) * n + i);
-        output[at] = fft.outputReal[fft.outputIndex(f, i, j)];
-        output[at + 1] = fft.outputImag[fft.outputIndex(f, i, j)];
+        fields[at] = real[index(f, i, j)];
+        fields[at + 1] = imaginary[index(f, i, j)];
       }
     }
   }
-  return output;
+  return fields;
 }
 
 /** Per field of `count`, the RMS of (actual − expected) over the RMS of expected. */
@@ -188,16 +194,7 @@ const harness = {
       for (const t of times) {
         gpu.update(t);
         js.update(t);
-        const onGpu = await computeFoam!.readCoverage();
-        const inJs = js.foam.coverageOnCpu();
-        let maxDifference = 0;
-        let sum = 0;
-        inJs.forEach((value, i) => {
-          const difference = Math.abs(value - onGpu[i]);
-          maxDifference = Number.isNaN(difference) ? Infinity : Math.max(maxDifference, difference);
-          sum += value;
-        });
-        results.push({ meanCoverage: sum / inJs.length, maxDifference });
+        results.push(foamDifference(js.foam.coverageOnCpu(), await computeFoam!.readCoverage()));
       }
       return results;
     } finally {
@@ -238,16 +235,7 @@ const harness = {
         evolution.run(t);
         const evolved = Float64Array.from(new Float32Array(await renderer!.getArrayBufferAsync(fft.data)));
         const input = js.spectraAt(t);
-        const expected = new Float64Array(evolved.length);
-        for (let f = 0; f < FIELDS; f++) {
-          for (let j = 0; j < n; j++) {
-            for (let i = 0; i < n; i++) {
-              const at = 2 * ((f * n + j) * n + i);
-              expected[at] = input.inputReal[input.inputIndex(f, i, j)];
-              expected[at + 1] = input.inputImag[input.inputIndex(f, i, j)];
-            }
-          }
-        }
+        const expected = fieldsFrom(n, input.inputReal, input.inputImag, (f, i, j) => input.inputIndex(f, i, j));
         errors.push(Math.max(...relativeRmsErrors(n, FIELDS, evolved, expected)));
       }
       return errors;
