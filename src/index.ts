@@ -28,7 +28,7 @@ export { orderLayers, type WaveLayer, type LayerFrame, type LayerFieldsOnCpu, ty
 export { FftCascade, gpuBackend, jsBackend, type FftBackend } from './layers/fftCascade';
 export type { FftFieldSource, CpuFieldsForQueries } from './fft/fieldSource';
 export { FloatingBody, SEA_WATER_DENSITY, type FloatingBodyOptions, type WaterSurface } from './layers/floatingBody';
-export { WhitecapFoam, type FoamPath, type FoamSettings } from './layers/whitecapFoam';
+export { WhitecapFoam, type FoamPath, type FoamProducer, type FoamSettings } from './layers/whitecapFoam';
 export { calibrateFoam, jacobianCovariance, whitecapFraction, type FoamCalibration, type JacobianCovariance } from './layers/foamModel';
 export { HullFoam } from './layers/hullFoam';
 export { LocalWaves, type LocalWavesOptions, type DropOptions, type HullShape, type HullPose, type PressureSource } from './layers/localWaves';

@@ -53,7 +53,8 @@ async function start(): Promise<void> {
   container.appendChild(canvas);
   const { renderer, ocean, backend, fallback, notDrawn } = await startWebGPUOcean(canvas, asked);
   for (const { name, missing } of notDrawn) overlay.warn(name, `${name}: not drawn with renderer=webgpu yet (${missing}); left out`);
-  const fft = ocean.path === 'gpu' ? 'compute shaders' : 'JS (main thread)';
+  const { running, reason } = ocean.path;
+  const fft = running === 'gpu' ? 'compute shaders' : `JS (main thread${reason ? `; ${reason}` : ''})`;
   overlay.status.textContent = `WebGPURenderer, ${backend} backend${fallback ? ` (${fallback})` : ''} · three-fft-ocean/webgpu · FFT: ${fft}`;
 
   const scene = new Scene();

@@ -36,7 +36,9 @@
  * off by about 5e-4 of its RMS.
  */
 import { StorageBufferAttribute, type ComputeNode, type Node, type StorageBufferNode, type WebGPURenderer } from 'three/webgpu';
-import { Fn, instanceIndex, storage, uint, vec2, workgroupArray, workgroupBarrier } from 'three/tsl';
+import { Fn, instanceIndex, storage, uint, workgroupArray, workgroupBarrier } from 'three/tsl';
+import { complexMultiply, timesI } from './complexNodes';
+import { MAX_SIZE, MIN_SIZE } from './computeSupport';
 import { ParameterError } from '../parameters/options';
 import type { Vec2Node } from '../webgpu/nodeTypes';
 
@@ -45,9 +47,6 @@ type UintNode = Node<'uint'>;
 /** A workgroup array of vec2 as the kernel uses it (@types/three leaves out its element()). */
 type Vec2Array = { element(index: UintNode): Vec2Node };
 
-/** The sizes one workgroup per line can transform under WebGPU's default limits (see above). */
-const MIN_SIZE = 16;
-const MAX_SIZE = 512;
 
 export class ComputeInverseFft2D {
   /** The fields, in and out: 2·fieldCount·N² floats, (re, im) of field f's texel (i, j) at 2·((f·N + j)·N + i). */
@@ -123,7 +122,7 @@ export class ComputeInverseFft2D {
           const k = butterfly.bitAnd(uint(ns - 1));
           const x = Array.from({ length: radix }, (_, r) => read(butterfly.add(uint((r * n) / radix))).toVar());
           if (ns > 1) {
-            for (let r = 1; r < radix; r++) x[r].assign(times(x[r], twiddles.element(k.mul(uint((r * n) / (radix * ns))))));
+            for (let r = 1; r < radix; r++) x[r].assign(complexMultiply(x[r], twiddles.element(k.mul(uint((r * n) / (radix * ns))))));
           }
           const out = butterfly.sub(k).mul(uint(radix)).add(k);
           dft(x).forEach((value, q) => write(out.add(uint(q * ns)), value));
@@ -136,11 +135,6 @@ export class ComputeInverseFft2D {
   }
 }
 
-/** The complex product a·w. */
-function times(a: Vec2Node, w: Vec2Node): Vec2Node {
-  return vec2(a.x.mul(w.x).sub(a.y.mul(w.y)), a.x.mul(w.y).add(a.y.mul(w.x)));
-}
-
 /** The inverse DFT of 2 or 4 values, y_q = Σ_r x_r·e^{+2πi·r·q/R}: for R = 4, e^{iπ/2·rq} = i^{rq}. */
 function dft(x: readonly Vec2Node[]): Vec2Node[] {
   if (x.length === 2) return [x[0].add(x[1]), x[0].sub(x[1])];
@@ -148,7 +142,6 @@ function dft(x: readonly Vec2Node[]): Vec2Node[] {
   const evenDifference = x[0].sub(x[2]).toVar();
   const odd = x[1].add(x[3]).toVar();
   const oddDifference = x[1].sub(x[3]).toVar();
-  // i·(x, y) = (−y, x)
-  const rotated = vec2(oddDifference.y.negate(), oddDifference.x);
+  const rotated = timesI(oddDifference);
   return [even.add(odd), evenDifference.add(rotated), even.sub(odd), evenDifference.sub(rotated)];
 }

@@ -1,16 +1,17 @@
 /**
- * An FFT cascade's fields on WebGPURenderer's WebGPU backend, from the compute FFT
- * (computeFft.ts): the spectrum is evolved in JS (CpuWaveFields.spectraAt, the JS path's own
- * code), uploaded, transformed in compute shaders, and written by one more dispatch into the two
+ * An FFT cascade's fields on WebGPURenderer's WebGPU backend, all in compute shaders: the spectrum
+ * is evolved into the compute FFT's buffer (computeSpectrum.ts; only the 4 KiB phase table is
+ * uploaded per update), transformed (computeFft.ts), and written by one more dispatch into the two
  * field textures of waveFieldLayout.ts, RGBA32F storage textures that three mipmaps before they
- * are sampled. The fields stay on the GPU: the queries compute their own (cpuFields is null).
- * Owns the FFT, the textures and the copying dispatch; dispose() frees them.
+ * are sampled. The fields stay on the GPU: the queries compute their own (cpuFields is null;
+ * cascadeQueryFields.ts, a worker of their own), as on the WebGL GPU path.
+ * Owns the evolution, the FFT, the textures and the copying dispatch; dispose() frees them.
  */
-import { FloatType, LinearFilter, LinearMipmapLinearFilter, RepeatWrapping } from 'three';
+import { FloatType, LinearFilter, LinearMipmapLinearFilter, RedFormat, RepeatWrapping, RGBAFormat } from 'three';
 import { StorageTexture, type ComputeNode, type WebGPURenderer } from 'three/webgpu';
 import { Fn, instanceIndex, textureStore, uint, uvec2, vec4 } from 'three/tsl';
 import { ComputeInverseFft2D } from './computeFft';
-import { CpuWaveFields } from './cpuWaveFields';
+import { ComputeSpectrumEvolution } from './computeSpectrum';
 import type { FftFieldSource } from './fieldSource';
 import type { InitialSpectrum } from '../spectrum/initialSpectrum';
 import type { LayerFieldsOnCpu } from '../layers/waveLayer';
@@ -24,15 +25,13 @@ const COPY_WORKGROUP = 64;
 export class ComputeWaveFields implements FftFieldSource {
   readonly displacement: StorageTexture;
   readonly derivatives: StorageTexture;
-  /** No fragment passes: three compute dispatches (the FFT's two and the copy). */
+  /** No fragment passes: four compute dispatches (the evolution, the FFT's two and the copy). */
   readonly passCount = 0;
-  /** No worker (the spectrum is evolved on the main thread), and no fields on the CPU: the queries compute their own. */
+  /** No worker, and no fields on the CPU: the queries compute their own. */
   readonly workerFault = null;
   readonly cpuFields = null;
-  private readonly spectra: CpuWaveFields;
+  private readonly evolution: ComputeSpectrumEvolution;
   private readonly fft: ComputeInverseFft2D;
-  /** For each element of the FFT's buffer (field f, row j, column i, in that order), where it is in the spectra's input. */
-  private readonly places: Uint32Array;
   private readonly copy: ComputeNode;
 
   constructor(
@@ -40,16 +39,9 @@ export class ComputeWaveFields implements FftFieldSource {
     spectrum: InitialSpectrum,
   ) {
     const n = spectrum.resolution;
-    this.spectra = new CpuWaveFields(spectrum);
     this.fft = new ComputeInverseFft2D(renderer, n, PACKED_SPECTRA);
-    const input = this.spectra.spectraAt(0);
-    this.places = new Uint32Array(PACKED_SPECTRA * n * n);
-    for (let f = 0, p = 0; f < PACKED_SPECTRA; f++) {
-      for (let j = 0; j < n; j++) {
-        for (let i = 0; i < n; i++, p++) this.places[p] = input.inputIndex(f, i, j);
-      }
-    }
-    [this.displacement, this.derivatives] = FIELD_TEXTURES.map((name) => fieldTexture(n, name));
+    this.evolution = new ComputeSpectrumEvolution(renderer, spectrum, this.fft.fields);
+    [this.displacement, this.derivatives] = FIELD_TEXTURES.map((name) => periodicStorageTexture(n, name));
     const fields = this.fft.fields;
     const copy = Fn(() => {
       const texel = uvec2(instanceIndex.bitAnd(uint(n - 1)), instanceIndex.div(uint(n)));
@@ -67,21 +59,15 @@ export class ComputeWaveFields implements FftFieldSource {
     return null;
   }
 
+  /** Queues the fields at time t (s): the evolution, the FFT and the copy into the textures. */
   update(t: number): void {
-    const input = this.spectra.spectraAt(t);
-    const { inputReal: re, inputImag: im } = input;
-    const data = this.fft.data.array as Float32Array;
-    const places = this.places;
-    for (let p = 0; p < places.length; p++) {
-      data[2 * p] = re[places[p]];
-      data[2 * p + 1] = im[places[p]];
-    }
-    this.fft.data.needsUpdate = true;
+    this.evolution.run(t);
     this.fft.run();
     void this.renderer.compute(this.copy);
   }
 
   dispose(): void {
+    this.evolution.dispose();
     this.fft.dispose();
     this.copy.dispose();
     this.displacement.dispose();
@@ -89,10 +75,14 @@ export class ComputeWaveFields implements FftFieldSource {
   }
 }
 
-/** An RGBA32F storage texture of N×N that repeats and is sampled with mipmaps, as the JS path's field textures are. */
-function fieldTexture(n: number, name: string): StorageTexture {
+/**
+ * A float32 storage texture of N×N (RGBA, or red only) that repeats and is sampled with mipmaps, as
+ * the JS path's field and foam textures are: the compute path's fields and foam (computeFoam.ts).
+ */
+export function periodicStorageTexture(n: number, name: string, format: typeof RGBAFormat | typeof RedFormat = RGBAFormat): StorageTexture {
   const texture = new StorageTexture(n, n);
   texture.name = name;
+  texture.format = format;
   texture.type = FloatType;
   texture.wrapS = texture.wrapT = RepeatWrapping;
   texture.magFilter = LinearFilter;

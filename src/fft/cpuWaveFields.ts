@@ -32,8 +32,8 @@ const MODE_LENGTH = 8;
 export class CpuWaveFields {
   private readonly fft: BatchedInverseFft2D;
   /**
-   * The two fields, displacement then derivatives, made on first use (the compute FFT asks for the
-   * spectra only, spectraAt: 8 MB it would not read at N = 512): the FFT writes its two pairs of
+   * The two fields, displacement then derivatives, made on first use (spectraAt asks for the
+   * spectra only: 8 MB it would not read at N = 512): the FFT writes its two pairs of
    * packed fields straight into them.
    */
   private texels: readonly [Float32Array, Float32Array] | null;
@@ -129,8 +129,8 @@ export class CpuWaveFields {
 
   /**
    * The four packed spectra of waveFieldLayout.ts at time t (s), untransformed, in the JS FFT's
-   * input (at inputIndex): for an FFT that runs elsewhere (the compute FFT, computeWaveFields.ts).
-   * The fields are left as they were. Valid until the next call or update.
+   * input (at inputIndex): what the compute shader's evolution (computeSpectrum.ts) is tested
+   * against. The fields are left as they were. Valid until the next call or update.
    */
   spectraAt(t: number): Pick<BatchedInverseFft2D, 'inputReal' | 'inputImag' | 'inputIndex'> {
     fillPhaseTable(this.phaseTable, t, this.repeatPeriod);

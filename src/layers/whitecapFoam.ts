@@ -2,7 +2,9 @@
  * The whitecap foam field (model and sources: foamModel.ts): coverage in [0, 1] per texel of the
  * largest periodic layer's patch, kept from frame to frame, on the GPU
  * (shaders/foam/whitecapFoam.frag, ping-pong between two float targets) or in JS (CpuFoamField,
- * uploaded as a DataTexture), the same path as the cascades. It reads the sea's periodic layers
+ * uploaded as a DataTexture), the same path as the cascades; or by a FoamProducer given (the WebGPU
+ * Ocean's compute shader, src/webgpu/computeFoam.ts, which this module does not import: the WebGL
+ * entry point stays free of three/webgpu). It reads the sea's periodic layers
  * (waveLayer.ts), in the contract's order, whatever made them: the FFT cascades, or a user's own.
  *
  * Why in the largest patch: foam must keep its history where the water carries it, so in
@@ -41,18 +43,38 @@ export interface FoamSettings {
   persistence: number;
 }
 
+/** What computes the foam field's steps: GpuFoam, JsFoam, or one made for another device (FoamPath's `producer`). */
+export interface FoamProducer {
+  /** Coverage in the red channel (the texture may change at each step). */
+  readonly texture: { value: Texture | null };
+  /** Forgets all foam. */
+  clear(): void;
+  /**
+   * One step of dt seconds ending at `now`; with `time` (a warm-up step) the layers are first brought
+   * to that time, else they are current. `rate` is foamCreationRate's.
+   */
+  step(layers: readonly WaveLayer[], time: number | null, choppiness: number, calibration: FoamCalibration, rate: number, persistence: number, dt: number, now: number): void;
+  /** The coverage per texel, row by row. */
+  coverageOnCpu(): Float32Array;
+  dispose(): void;
+}
+
 /**
- * Where the foam is computed: in fragment passes on a WebGLRenderer at the cascades' float type, or
- * in JS, uploaded to a float texture of what the renderer's device can do with one (the WebGL
- * Ocean's JS path and the WebGPU Ocean).
+ * Where the foam is computed: in fragment passes on a WebGLRenderer at the cascades' float type; in
+ * JS, uploaded to a float texture of what the renderer's device can do with one (the WebGL Ocean's
+ * JS path and the WebGPU Ocean's); or by the producer `producer` makes for the layers and the
+ * foam's frame (the WebGPU Ocean's compute shader).
  */
-export type FoamPath = { renderer: WebGLRenderer; precision: GpuPrecision } | { js: FloatTextureSupport };
+export type FoamPath =
+  | { renderer: WebGLRenderer; precision: GpuPrecision }
+  | { js: FloatTextureSupport }
+  | { producer: (layers: readonly WaveLayer[], frame: LayerFrame) => FoamProducer };
 
 export class WhitecapFoam {
   /** Coverage in the red channel, sampled like the largest cascade's fields. */
   readonly texture: { value: Texture | null };
   readonly frame: LayerFrame;
-  private readonly producer: GpuFoam | JsFoam;
+  private readonly producer: FoamProducer;
   private lastTime = NaN;
   /** True while the field is all zero (cleared, and no foam made since). */
   private empty = true;
@@ -77,10 +99,11 @@ export class WhitecapFoam {
     }
     const largest = layers[layers.length - 1].frame;
     this.frame = { size: largest.size, origin: [0, 0], periodic: true, resolution: largest.resolution };
-    this.producer = 'js' in path ? new JsFoam(path.js, this.frame) : new GpuFoam(createGpuDevice(path.renderer), layers, this.frame, path.precision);
+    if ('producer' in path) this.producer = path.producer(layers, this.frame);
+    else this.producer = 'js' in path ? new JsFoam(path.js, this.frame) : new GpuFoam(createGpuDevice(path.renderer), layers, this.frame, path.precision);
     this.texture = this.producer.texture;
     // Removed in dispose(); guarded for canvas-like objects without listeners, as the sky is.
-    this.canvas = 'js' in path ? null : (path.renderer.domElement as EventTarget | undefined) ?? null;
+    this.canvas = 'renderer' in path ? ((path.renderer.domElement as EventTarget | undefined) ?? null) : null;
     this.canvas?.addEventListener?.('webglcontextrestored', this.onContextRestored);
   }
 
@@ -116,7 +139,7 @@ export class WhitecapFoam {
 }
 
 /** The foam passes on the GPU: ping-pong between two targets of the layers' float type. Owns its device. */
-class GpuFoam {
+class GpuFoam implements FoamProducer {
   readonly texture: { value: Texture | null };
   private readonly targets: [FieldTarget, FieldTarget];
   private readonly material: PassMaterial;
@@ -193,7 +216,7 @@ class GpuFoam {
 }
 
 /** The foam in JS (CpuFoamField) on the JS path, shown through a DataTexture. */
-class JsFoam {
+class JsFoam implements FoamProducer {
   readonly texture: { value: Texture | null };
   private readonly field: CpuFoamField;
   private readonly dataTexture: DataTexture;

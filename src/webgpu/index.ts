@@ -5,6 +5,6 @@
  * and what not yet. This file only re-exports.
  * @module three-fft-ocean/webgpu
  */
-export { Ocean, type WebGPUOceanOptions } from './ocean';
+export { Ocean, type PathPreference, type WebGPUOceanOptions, type WebGPUOceanPath } from './ocean';
 export { DisposedError, UnsupportedError } from '../parameters/options';
 export { ParameterError } from '../parameters/parameters';

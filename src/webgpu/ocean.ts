@@ -9,14 +9,16 @@
  *   renderer.setAnimationLoop((ms) => { ocean.update(ms / 1000); renderer.render(scene, camera); });
  *
  * This first slice draws the FFT cascades of the same sea as the WebGL Ocean (the same parameters,
- * spectra and seeded amplitudes, computed by the JS FFT: src/fft/cpuFieldTextures.ts, in a worker
- * by default, uploaded as float textures each frame; with path 'gpu' on the WebGPU backend, by the
- * compute FFT instead: src/fft/computeWaveFields.ts),
+ * spectra and seeded amplitudes: on the WebGPU backend, where the device can (path 'auto' or 'gpu',
+ * src/fft/computeSupport.ts), evolved and transformed in compute shaders, src/fft/computeWaveFields.ts;
+ * else by the JS FFT, src/fft/cpuFieldTextures.ts, in a worker by default, uploaded as float
+ * textures each frame),
  * displaced and lit in TSL (seaNodes.ts, lightNodes.ts) as the WebGL Ocean's ocean.frag lights it:
  * the reflection of its analytic sky (skyNodes.ts, also drawn behind everything), the light from
  * under the surface, the caustics, the sun's glint and the crests' glow; and its whitecap foam,
- * the same field as the WebGL Ocean's JS path makes (src/layers/whitecapFoam.ts, in JS over the
- * largest cascade's patch, on the same clock, uploaded as a float texture), drawn as ocean.frag
+ * the same field as the WebGL Ocean's JS path makes (src/layers/whitecapFoam.ts, over the largest
+ * cascade's patch, on the same clock: in JS, uploaded as a float texture, or on the compute path in a
+ * compute shader from the compute FFT's fields, computeFoam.ts), drawn as ocean.frag
  * draws it, with its streaks from force 7 and the spray from force 9 (foamNodes.ts); on its horizon rings round
  * the camera (seaRings.ts), placed before each draw. heightAt and normalAt answer from the same
  * fields and code as the WebGL Ocean's (src/layers/surfaceQuery.ts), so for the same options and
@@ -42,6 +44,7 @@ import { calibrateFoam, jacobianCovariance, type FoamCalibration, type JacobianC
 import { WhitecapFoam } from '../layers/whitecapFoam';
 import { beaufortAppearance, type BeaufortAppearance } from '../render/beaufortAppearance';
 import { FoamShading } from './foamNodes';
+import { ComputeFoam } from './computeFoam';
 import { DEFAULT_SHADING, DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ColorInput } from '../parameters/sceneOptions';
 import { sunAngles, type SunDirection } from '../render/skyEnvironment';
 import { createCascadeSpectra } from '../spectrum/initialSpectrum';
@@ -56,6 +59,20 @@ import { Shore } from '../layers/shore';
 import type { Seabed } from '../layers/seabed';
 import { SeaStatistics } from '../oceanStatistics';
 import { seabedMapFor, ShoreNodes } from './shoreNodes';
+import { computePathUnsupported } from '../fft/computeSupport';
+
+/** Which FFT the `path` option asks for. */
+export type PathPreference = 'auto' | 'js' | 'gpu';
+
+/**
+ * The FFT path (Ocean.path), as the WebGL Ocean's OceanPath: the preference, the one running
+ * ('gpu': compute shaders; 'js': the JS FFT) and, when 'auto' runs the JS FFT, why ('' otherwise).
+ */
+export interface WebGPUOceanPath {
+  preference: PathPreference;
+  running: 'gpu' | 'js';
+  reason: string;
+}
 
 export interface WebGPUOceanOptions extends Partial<SimulationParameters> {
   /** Refractive index of water n_w, (1, 3] (ShadingOptions.ior). @defaultValue 1.333 */
@@ -78,8 +95,12 @@ export interface WebGPUOceanOptions extends Partial<SimulationParameters> {
   cloudCover?: number;
   /** Compute the JS FFT in a Web Worker (SimulationOptions.worker). @defaultValue true where Worker exists */
   worker?: boolean;
-  /** 'auto' or 'js': the JS FFT; 'gpu': the compute FFT, on the WebGPU backend only (it throws on the WebGL2 backend). @defaultValue 'auto' */
-  path?: 'auto' | 'js' | 'gpu';
+  /**
+   * 'auto': the compute FFT where the device can run it (a WebGPU backend, resolution 16 to 512,
+   * src/fft/computeSupport.ts), else the JS FFT, saying why in `path.reason`; 'gpu': the compute FFT
+   * (an UnsupportedError where it cannot run); 'js': the JS FFT. @defaultValue 'auto'
+   */
+  path?: PathPreference;
   /** Only 'sky' (the default here): scene reflections are not drawn yet. @defaultValue 'sky' */
   reflections?: 'sky' | 'scene';
   /** Only 'sky' (the default here): objects under the water are not drawn yet. @defaultValue 'sky' */
@@ -128,7 +149,7 @@ export class Ocean extends Object3D {
   /** The FFT cascades, finest first (the JS FFT's fields as float textures). */
   private cascades: FftCascade<null>[] = [];
   private currentLayers: readonly WaveLayer[] = [];
-  /** The whitecap foam over the largest cascade's patch, computed in JS (whitecapFoam.ts). */
+  /** The whitecap foam over the largest cascade's patch (whitecapFoam.ts), in JS, or on path 'gpu' in a compute shader (computeFoam.ts). */
   private foam!: WhitecapFoam;
   /** The cascades' Jacobian statistics, and the foam's calibration for them at the current choppiness and wind (foamModel.ts). */
   private covariance!: JacobianCovariance;
@@ -140,8 +161,12 @@ export class Ocean extends Object3D {
   private parameters: SimulationParameters;
   private readonly uniforms: SeaUniforms;
   private readonly useWorker: boolean;
-  /** The renderer whose compute shaders transform the cascades (path 'gpu'), or null for the JS FFT. */
-  private readonly computeFft: WebGPURenderer | null;
+  private readonly renderer: WebGPURenderer;
+  private readonly pathPreference: PathPreference;
+  /** The renderer whose compute shaders make the cascades and the foam, or null for the JS FFT; chosen with the cascades (fftChoice). */
+  private computeFft: WebGPURenderer | null = null;
+  /** Why 'auto' runs the JS FFT, or ''. */
+  private pathReason = '';
   private readonly support: FloatTextureSupport;
   private readonly surface: Mesh<BufferGeometry, MeshBasicNodeMaterial>;
   /** The rings' uniforms of the surface's material (made with it by surfaceMaterial), placed under the camera before each draw. */
@@ -193,8 +218,9 @@ export class Ocean extends Object3D {
       sky: skyUniforms(sun.elevation, sun.azimuth, cloudCover),
     };
     this.useWorker = options.worker ?? typeof Worker !== 'undefined';
-    this.computeFft = computeFftRenderer(renderer, options.path);
-    this.buildCascades();
+    this.renderer = renderer;
+    this.pathPreference = checkPath(options.path);
+    this.buildCascades(this.fftChoice(this.parameters));
     this.cellsPerRing = cellsPerRingForViewport(renderer.getDrawingBufferSize(this.drawingBuffer).y);
     this.surface = new Mesh(createHorizonGridGeometry(this.cellsPerRing), this.surfaceMaterial());
     this.surface.name = 'OceanWebGPU surface';
@@ -220,12 +246,12 @@ export class Ocean extends Object3D {
   }
 
   /**
-   * Which FFT computes the cascades: 'gpu', the compute FFT (path 'gpu', on the WebGPU backend), or
-   * 'js', the JS FFT ('auto' and 'js'), as the WebGL Ocean's `path.running` names its own.
+   * The FFT path: the preference (the `path` option), the one running ('gpu', compute shaders, or
+   * 'js') and, when 'auto' runs the JS FFT, why (src/fft/computeSupport.ts), as the WebGL Ocean's.
    */
-  get path(): 'gpu' | 'js' {
+  get path(): WebGPUOceanPath {
     this.checkAlive('path');
-    return this.computeFft ? 'gpu' : 'js';
+    return { preference: this.pathPreference, running: this.computeFft ? 'gpu' : 'js', reason: this.pathReason };
   }
 
   /** The time (s) of the last update. */
@@ -287,6 +313,7 @@ export class Ocean extends Object3D {
   setParameters(changes: Partial<SimulationParameters>): void {
     this.checkAlive('setParameters');
     const next = validateParameters(changes, this.parameters);
+    const choice = this.fftChoice(next); // path 'gpu' at a resolution it cannot run throws here, changing nothing
     // As the WebGL Ocean's simulation: the spectra stay for the parameters only the shading and the foam read.
     const keepSpectra = (Object.keys(next) as (keyof SimulationParameters)[]).every((key) => SHADER_ONLY_PARAMETERS.includes(key) || String(next[key]) === String(this.parameters[key]));
     this.parameters = next;
@@ -296,7 +323,7 @@ export class Ocean extends Object3D {
       return;
     }
     this.disposeCascades();
-    this.buildCascades();
+    this.buildCascades(choice);
     this.replaceSurfaceMaterial();
   }
 
@@ -363,18 +390,31 @@ export class Ocean extends Object3D {
    * The cascades of the parameters and their foam: their textures ask nothing more of the renderer
    * than `support`, read once.
    */
-  private buildCascades(): void {
+  private buildCascades({ compute, reason }: { compute: boolean; reason: string }): void {
     const params = this.parameters;
-    const renderer = this.computeFft;
+    const renderer = (this.computeFft = compute ? this.renderer : null);
+    this.pathReason = reason;
     const backend: FftBackend<null> = renderer ? (_none, spectrum) => new ComputeWaveFields(renderer, spectrum) : (_none, spectrum) => new CpuFieldTextures(this.support, spectrum, this.useWorker);
     const spectra = createCascadeSpectra(params);
     this.cascades = spectra.map((spectrum, cascade) => new FftCascade(null, spectrum, { params, cascade }, backend, this.useWorker));
     this.currentLayers = orderLayers(this.cascades);
     this.covariance = jacobianCovariance(spectra);
     this.calibration = calibrateFoam(this.covariance, params.choppiness, params.windSpeed);
-    this.foam = new WhitecapFoam(this.currentLayers, { js: this.support });
+    this.foam = new WhitecapFoam(this.currentLayers, renderer ? { producer: (layers, frame) => new ComputeFoam(renderer, layers, frame) } : { js: this.support });
     this.look = beaufortAppearance(params.windSpeed, params.windDirection);
     this.lastTime = NaN;
+  }
+
+  /**
+   * Whether the cascades of `params` run on the compute path and, when 'auto' cannot, why: 'js'
+   * never; 'auto' where computePathUnsupported finds nothing missing; 'gpu' there too, else it throws.
+   */
+  private fftChoice(params: SimulationParameters): { compute: boolean; reason: string } {
+    if (this.pathPreference === 'js') return { compute: false, reason: '' };
+    const unsupported = computePathUnsupported(this.renderer, params.resolution);
+    if (unsupported === null) return { compute: true, reason: '' };
+    if (this.pathPreference === 'gpu') throw new UnsupportedError('path', `the compute FFT (path 'gpu') cannot run here: ${unsupported}; 'auto' or 'js' runs the JS FFT`);
+    return { compute: false, reason: unsupported };
   }
 
   private disposeCascades(): void {
@@ -405,10 +445,11 @@ function floatTextureSupport(renderer: WebGPURenderer): FloatTextureSupport {
   return { filterable, renderable: false };
 }
 
-/** `renderer` where `path` asks for the compute FFT ('gpu'; notDrawnYet refuses it on the WebGL2 backend), else null. */
-function computeFftRenderer(renderer: WebGPURenderer, path: WebGPUOceanOptions['path']): WebGPURenderer | null {
-  if (path !== undefined && path !== 'auto' && path !== 'js' && path !== 'gpu') throw new ParameterError('path', path, "'auto', 'js' or 'gpu'");
-  return path === 'gpu' ? renderer : null;
+/** The `path` option, checked ('auto' when left out). */
+function checkPath(path: unknown): PathPreference {
+  if (path === undefined) return 'auto';
+  if (path !== 'auto' && path !== 'js' && path !== 'gpu') throw new ParameterError('path', path, "'auto', 'js' or 'gpu'");
+  return path;
 }
 
 function isWebGPUBackend(renderer: WebGPURenderer): boolean {

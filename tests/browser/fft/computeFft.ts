@@ -9,12 +9,20 @@ import { Ocean } from '../../../src/webgpu/index';
 import { ComputeInverseFft2D } from '../../../src/fft/computeFft';
 import { BatchedInverseFft2D } from '../../../src/fft/fft';
 import { ComputeWaveFields } from '../../../src/fft/computeWaveFields';
+import { ComputeSpectrumEvolution } from '../../../src/fft/computeSpectrum';
 import { CpuWaveFields } from '../../../src/fft/cpuWaveFields';
 import { FIELD_TEXTURES } from '../../../src/fft/waveFieldLayout';
 import { validateParameters } from '../../../src/parameters/parameters';
 import { createCascadeSpectra } from '../../../src/spectrum/initialSpectrum';
+import { CpuFieldTextures } from '../../../src/fft/cpuFieldTextures';
+import { FftCascade, type FftBackend } from '../../../src/layers/fftCascade';
+import { orderLayers } from '../../../src/layers/waveLayer';
+import { WhitecapFoam } from '../../../src/layers/whitecapFoam';
+import { calibrateFoam, jacobianCovariance } from '../../../src/layers/foamModel';
+import { ComputeFoam } from '../../../src/webgpu/computeFoam';
 import { SeededRandom } from '../../../src/spectrum/random';
 import { naiveInverseDft2D } from '../../unit/naiveDft';
+import { foamDifference } from '../shared/foamDifference';
 
 /** The four packed spectra of waveFieldLayout.ts: as many complex fields as a cascade transforms. */
 const FIELDS = 4;
@@ -45,7 +53,6 @@ async function computeTransform(fft: ComputeInverseFft2D, input: Fields): Promis
 /** The JS FFT of `input`, in double precision. */
 function jsTransform(n: number, input: Fields): Fields {
   const fft = new BatchedInverseFft2D(n, FIELDS);
-  const output = new Float64Array(input.length);
   for (let f = 0; f < FIELDS; f++) {
     for (let j = 0; j < n; j++) {
       for (let i = 0; i < n; i++) {
@@ -56,16 +63,22 @@ function jsTransform(n: number, input: Fields): Fields {
     }
   }
   fft.run();
+  return fieldsFrom(n, fft.outputReal, fft.outputImag, (f, i, j) => fft.outputIndex(f, i, j));
+}
+
+/** Complex fields held as the JS FFT holds them (real and imaginary parts, field f's texel (i, j) at `index`), in the compute FFT's layout. */
+function fieldsFrom(n: number, real: Float64Array | Float32Array, imaginary: Float64Array | Float32Array, index: (f: number, i: number, j: number) => number): Fields {
+  const fields = new Float64Array(2 * FIELDS * n * n);
   for (let f = 0; f < FIELDS; f++) {
     for (let j = 0; j < n; j++) {
       for (let i = 0; i < n; i++) {
         const at = 2 * ((f * n + j) * n + i);
-        output[at] = fft.outputReal[fft.outputIndex(f, i, j)];
-        output[at + 1] = fft.outputImag[fft.outputIndex(f, i, j)];
+        fields[at] = real[index(f, i, j)];
+        fields[at + 1] = imaginary[index(f, i, j)];
       }
     }
   }
-  return output;
+  return fields;
 }
 
 /** Per field of `count`, the RMS of (actual − expected) over the RMS of expected. */
@@ -121,12 +134,120 @@ function naiveTransform(n: number, input: Fields): Fields {
   return output;
 }
 
+/** A sea's cascades on one backend and their whitecap foam, stepped together as the WebGPU Ocean steps them. */
+function foamedSea(params: ReturnType<typeof validateParameters>, backend: FftBackend<null>, foamPath: ConstructorParameters<typeof WhitecapFoam>[1]) {
+  const spectra = createCascadeSpectra(params);
+  const cascades = spectra.map((spectrum, cascade) => new FftCascade(null, spectrum, { params, cascade }, backend, false));
+  const foam = new WhitecapFoam(orderLayers(cascades), foamPath);
+  const settings = { choppiness: params.choppiness, calibration: calibrateFoam(jacobianCovariance(spectra), params.choppiness, params.windSpeed), amount: params.foamAmount, persistence: params.foamPersistence };
+  let last = NaN;
+  return {
+    foam,
+    update(t: number): void {
+      for (const cascade of cascades) cascade.update(t, Number.isNaN(last) ? 0 : t - last);
+      foam.update(t, settings);
+      last = t;
+    },
+    dispose(): void {
+      for (const cascade of cascades) cascade.dispose();
+      foam.dispose();
+    },
+  };
+}
+
+/** Calls of the JS FFT (BatchedInverseFft2D's run and runToTexels) on this thread while `during` runs. */
+function jsFftCalls(during: () => void): number {
+  const prototype = BatchedInverseFft2D.prototype;
+  const { run, runToTexels } = prototype;
+  let calls = 0;
+  prototype.run = function (this: BatchedInverseFft2D) {
+    calls++;
+    run.call(this);
+  };
+  prototype.runToTexels = function (this: BatchedInverseFft2D, texels: readonly Float32Array[]) {
+    calls++;
+    runToTexels.call(this, texels);
+  };
+  try {
+    during();
+  } finally {
+    Object.assign(prototype, { run, runToTexels });
+  }
+  return calls;
+}
+
 const harness = {
   open,
   /**
+   * The whitecap foam of path 'gpu' (ComputeFoam, from the compute FFT's fields) against the JS
+   * path's (JsFoam, from the JS FFT's fields) after each time in turn (the first a jump, so a
+   * warm-up): the mean JS coverage and the largest difference of any texel. `changes`: the sea.
+   */
+  async foamPaths(changes: Record<string, number>, times: number[]): Promise<{ meanCoverage: number; maxDifference: number }[]> {
+    const params = validateParameters(changes);
+    let computeFoam: ComputeFoam | null = null;
+    const gpu = foamedSea(params, (_none, spectrum) => new ComputeWaveFields(renderer!, spectrum), { producer: (layers, frame) => (computeFoam = new ComputeFoam(renderer!, layers, frame)) });
+    const support = { filterable: true, renderable: false };
+    const js = foamedSea(params, (_none, spectrum) => new CpuFieldTextures(support, spectrum, false), { js: support });
+    try {
+      const results: { meanCoverage: number; maxDifference: number }[] = [];
+      for (const t of times) {
+        gpu.update(t);
+        js.update(t);
+        results.push(foamDifference(js.foam.coverageOnCpu(), await computeFoam!.readCoverage()));
+      }
+      return results;
+    } finally {
+      gpu.dispose();
+      js.dispose();
+    }
+  },
+  /**
+   * Calls of the JS FFT on this thread over `frames` frame steps of the WebGPU Ocean (windSpeed 20,
+   * whitecaps on, N = 64) after its first update, on `path`, with `worker` as given; no queries.
+   */
+  jsFftCallsPerFrames(path: 'gpu' | 'js', worker: boolean, frames: number): number {
+    const ocean = new Ocean(renderer!, { resolution: 64, windSpeed: 20, seed: 3, worker, path });
+    try {
+      ocean.update(10);
+      return jsFftCalls(() => {
+        for (let frame = 1; frame <= frames; frame++) ocean.update(10 + frame / 60);
+      });
+    } finally {
+      ocean.dispose();
+    }
+  },
+  /**
+   * The spectra the compute shader evolves (ComputeSpectrumEvolution, read back from the FFT's
+   * buffer before any transform) against the JS path's (CpuWaveFields.spectraAt, in double
+   * precision), at each time of `times`: per time, the largest relative RMS error of the four
+   * packed spectra. Cascade `cascade` (0 the finest, −1 the largest) of a sea of resolution n in
+   * water `depth` m deep.
+   */
+  async evolvedSpectra(n: number, times: number[], depth: number, cascade: number): Promise<number[]> {
+    const spectrum = createCascadeSpectra(validateParameters({ resolution: n, windSpeed: 10, seed: 3, depth })).at(cascade)!;
+    const fft = new ComputeInverseFft2D(renderer!, n, FIELDS);
+    const evolution = new ComputeSpectrumEvolution(renderer!, spectrum, fft.fields);
+    const js = new CpuWaveFields(spectrum);
+    try {
+      const errors: number[] = [];
+      for (const t of times) {
+        evolution.run(t);
+        const evolved = Float64Array.from(new Float32Array(await renderer!.getArrayBufferAsync(fft.data)));
+        const input = js.spectraAt(t);
+        const expected = fieldsFrom(n, input.inputReal, input.inputImag, (f, i, j) => input.inputIndex(f, i, j));
+        errors.push(Math.max(...relativeRmsErrors(n, FIELDS, evolved, expected)));
+      }
+      return errors;
+    } finally {
+      evolution.dispose();
+      fft.dispose();
+    }
+  },
+  /**
    * A cascade's fields at time t from the compute FFT (ComputeWaveFields, its textures read back)
    * against the JS path's (CpuWaveFields), for each field texture and channel: the largest RMS of
-   * the difference over the RMS of the JS field. The first (largest) cascade of a sea of resolution n.
+   * the difference over the RMS of the JS field. The first (finest) cascade of a sea of resolution n.
    */
   async cascadeFields(n: number, t: number): Promise<number> {
     const [spectrum] = createCascadeSpectra(validateParameters({ resolution: n, windSpeed: 10, seed: 3 }));
@@ -155,11 +276,12 @@ const harness = {
     }
   },
   /**
-   * The WebGPU Ocean with path 'gpu' against path 'js' (the same small sea, N = 64, at time t): the
-   * mean difference of their pictures (160×90, 8-bit, in levels, over RGB), the largest in any
-   * channel, and the largest difference of heightAt at a few points (m).
+   * The WebGPU Ocean with path 'gpu' against path 'js' (the same small force 7 sea with its
+   * whitecaps, N = 64, at time t): the mean difference of their pictures (160×90, 8-bit, in levels,
+   * over RGB), the largest in any channel, the largest difference of heightAt at a few points (m),
+   * and path 'gpu''s picture (RGBA rows, top first).
    */
-  async oceanPaths(t: number): Promise<{ meanLevels: number; maxLevels: number; heights: number }> {
+  async oceanPaths(t: number): Promise<{ meanLevels: number; maxLevels: number; heights: number; picture: number[] }> {
     const camera = new PerspectiveCamera(60, 16 / 9, 0.5, 30_000);
     camera.position.set(0, 4, 0);
     camera.lookAt(0, 1, -40);
@@ -169,7 +291,7 @@ const harness = {
     const heights: number[][] = [];
     for (const path of ['js', 'gpu'] as const) {
       const scene = new Scene();
-      const ocean = new Ocean(renderer!, { resolution: 64, windSpeed: 10, seed: 3, foamAmount: 0, worker: false, path });
+      const ocean = new Ocean(renderer!, { resolution: 64, windSpeed: 15, seed: 3, worker: false, path });
       scene.add(ocean);
       ocean.update(t);
       renderer!.setRenderTarget(target);
@@ -188,7 +310,7 @@ const harness = {
       sum += difference;
       max = Math.max(max, difference);
     }
-    return { meanLevels: sum / ((3 / 4) * pictures[0].length), maxLevels: max, heights: Math.max(...heights[0].map((h, i) => Math.abs(h - heights[1][i]))) };
+    return { meanLevels: sum / ((3 / 4) * pictures[0].length), maxLevels: max, heights: Math.max(...heights[0].map((h, i) => Math.abs(h - heights[1][i]))), picture: Array.from(pictures[1]) };
   },
   /** The storage buffers and textures the renderer holds, and their bytes (three's renderer.info). */
   gpuMemory(): { storageBuffers: number; storageBytes: number; textures: number; textureBytes: number } {

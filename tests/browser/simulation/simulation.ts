@@ -11,6 +11,7 @@ import { OceanSimulation } from '../../../src/layers/oceanSimulation';
 import { createSeabedMap } from '../../../src/layers/seabed';
 import { validateParameters, type SimulationParameters } from '../../../src/parameters/parameters';
 import { createCascadeSpectra } from '../../../src/spectrum/initialSpectrum';
+import { foamDifference } from '../shared/foamDifference';
 
 const renderer = new WebGLRenderer({ canvas: document.createElement('canvas') });
 
@@ -123,15 +124,7 @@ const harness = {
     const results = times.map((t) => {
       gpu.update(t);
       js.update(t);
-      const [onGpu, inJs] = [gpu.foam.coverageOnCpu(), js.foam.coverageOnCpu()];
-      let maxDifference = 0;
-      let sum = 0;
-      inJs.forEach((value, i) => {
-        const difference = Math.abs(value - onGpu[i]);
-        maxDifference = Number.isNaN(difference) ? Infinity : Math.max(maxDifference, difference);
-        sum += value;
-      });
-      return { meanCoverage: sum / inJs.length, maxDifference };
+      return foamDifference(js.foam.coverageOnCpu(), gpu.foam.coverageOnCpu());
     });
     gpu.dispose();
     js.dispose();

@@ -239,7 +239,7 @@ test('the app with ?renderer=webgpu and no WebGPU draws the sea on the WebGL2 ba
     notices: [...document.querySelectorAll('.notice')].map((notice) => (notice as HTMLElement).dataset.parameter),
   }));
   expect(app.backend).toBe('WebGL2');
-  expect(app.status).toBe('WebGPURenderer, WebGL2 backend (this browser has no WebGPU (navigator.gpu is undefined)) · three-fft-ocean/webgpu · FFT: JS (main thread)');
+  expect(app.status).toBe("WebGPURenderer, WebGL2 backend (this browser has no WebGPU (navigator.gpu is undefined)) · three-fft-ocean/webgpu · FFT: JS (main thread; WebGPURenderer's WebGL2 backend runs no compute shaders)");
   expect(app.notDrawn).toEqual(['shadingMode']);
   expect(app.notices).toEqual(['buoys', 'shadingMode']);
   await page.screenshot({ path: '.tmp/shells-app-webgl2-backend.png' });
@@ -251,6 +251,6 @@ test('the app with ?renderer=webgpu opens on the WebGPU backend without page err
   const log = await open(page, '/?renderer=webgpu&resolution=64');
   await page.waitForFunction(() => (window.oceanAppWebGPU?.framesDrawn ?? 0) >= 1, undefined, { timeout: 60_000 });
   const app = await page.evaluate(() => ({ backend: window.oceanAppWebGPU.backend, notDrawn: window.oceanAppWebGPU.notDrawn, status: document.querySelector('.status-line')!.textContent }));
-  expect(app).toEqual({ backend: 'WebGPU', notDrawn: [], status: 'WebGPURenderer, WebGPU backend · three-fft-ocean/webgpu · FFT: JS (main thread)' });
+  expect(app).toEqual({ backend: 'WebGPU', notDrawn: [], status: 'WebGPURenderer, WebGPU backend · three-fft-ocean/webgpu · FFT: compute shaders' });
   expect(log.errors).toEqual([]);
 });

@@ -196,9 +196,24 @@ function backendTests(backend: 'webgl' | 'webgpu'): void {
       expect(control).toBeGreaterThan(10 * rms(difference));
     });
 
-    test('ocean.path names the FFT that runs', async () => {
+    test("ocean.path names the FFT that runs: 'auto' the compute FFT where the device runs it, else the JS FFT and why", async () => {
       const paths = await page.evaluate(() => window.webgpuOcean.paths());
-      expect(paths).toEqual(backend === 'webgpu' ? { auto: 'js', js: 'js', gpu: 'gpu' } : { auto: 'js', js: 'js' });
+      const js = (preference: string, reason = '') => ({ preference, running: 'js', reason });
+      const beyond512 = 'resolution 1024: the compute FFT transforms lines of 16 to 512 in one workgroup';
+      if (backend === 'webgpu') {
+        expect(paths.at64).toEqual({ auto: { preference: 'auto', running: 'gpu', reason: '' }, js: js('js'), gpu: { preference: 'gpu', running: 'gpu', reason: '' } });
+        expect(paths.at1024).toEqual(js('auto', beyond512));
+        expect(paths.autoTo1024).toEqual(js('auto', beyond512));
+        // Path 'gpu' refuses the resolution it cannot run, and keeps its sea and path.
+        const { thrown, ...after } = paths.gpuTo1024!;
+        expect(thrown).toMatch(/^UnsupportedError: .*path 'gpu'.*resolution 1024: the compute FFT/);
+        expect(after).toEqual({ resolution: 64, path: { preference: 'gpu', running: 'gpu', reason: '' } });
+      } else {
+        const noCompute = "WebGPURenderer's WebGL2 backend runs no compute shaders";
+        expect(paths.at64).toEqual({ auto: js('auto', noCompute), js: js('js') });
+        expect(paths.at1024).toEqual(js('auto', noCompute));
+        expect(paths.gpuTo1024).toBeNull();
+      }
     });
 
     test('dispose returns renderer.info.memory to its baseline', async () => {

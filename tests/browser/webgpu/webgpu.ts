@@ -5,7 +5,7 @@
 import { FloatType, NoToneMapping, OrthographicCamera, PerspectiveCamera, RenderTarget, Scene, SRGBColorSpace, type Mesh } from 'three';
 import { MeshBasicNodeMaterial, WebGPURenderer } from 'three/webgpu';
 import { positionWorld, vec4 } from 'three/tsl';
-import { Ocean, type WebGPUOceanOptions } from '../../../src/webgpu/index';
+import { Ocean, type WebGPUOceanOptions, type WebGPUOceanPath } from '../../../src/webgpu/index';
 import { Ocean as WebGLOcean } from '../../../src/ocean';
 import { finestTexel } from '../../../src/render/horizonGrid';
 import { WebGLRenderer, WebGLRenderTarget } from 'three';
@@ -242,18 +242,39 @@ async function memoryCycle(): Promise<{ before: Record<string, number>; during: 
   return { before, during, after: memory() };
 }
 
-/** ocean.path for each `path` option the backend takes ('gpu' on the WebGPU backend only). */
-function paths(): Record<string, string> {
+/**
+ * ocean.path for each `path` option the backend takes ('gpu' on the WebGPU backend only), at
+ * N = 64; then at N = 1024, beyond the compute FFT's 512: 'auto' made so, and 'auto' and 'gpu'
+ * after setParameters asks for it (with what 'gpu' threw, and its resolution after).
+ */
+function paths(): { at64: Record<string, WebGPUOceanPath>; at1024: WebGPUOceanPath; autoTo1024: WebGPUOceanPath; gpuTo1024: { thrown: string; resolution: number; path: WebGPUOceanPath } | null } {
   const isWebGPUBackend = (renderer!.backend as { isWebGPUBackend?: boolean }).isWebGPUBackend === true;
   const asked = isWebGPUBackend ? (['auto', 'js', 'gpu'] as const) : (['auto', 'js'] as const);
-  return Object.fromEntries(
-    asked.map((path) => {
-      const ocean = new Ocean(renderer!, { ...SEA, path });
-      const running = ocean.path;
-      ocean.dispose();
-      return [path, running];
-    }),
-  );
+  const pathOf = (options: WebGPUOceanOptions, change?: Partial<WebGPUOceanOptions>): WebGPUOceanPath => {
+    const ocean = new Ocean(renderer!, { ...SEA, ...options });
+    if (change) ocean.setParameters(change);
+    const { path } = ocean;
+    ocean.dispose();
+    return path;
+  };
+  let gpuTo1024 = null;
+  if (isWebGPUBackend) {
+    const ocean = new Ocean(renderer!, { ...SEA, path: 'gpu' });
+    let thrown = '';
+    try {
+      ocean.setParameters({ resolution: 1024 });
+    } catch (error) {
+      thrown = `${(error as Error).name}: ${(error as Error).message}`;
+    }
+    gpuTo1024 = { thrown, resolution: ocean.waveLayers[0].frame.resolution, path: ocean.path };
+    ocean.dispose();
+  }
+  return {
+    at64: Object.fromEntries(asked.map((path) => [path, pathOf({ path })])),
+    at1024: pathOf({ resolution: 1024 }),
+    autoTo1024: pathOf({}, { resolution: 1024 }),
+    gpuTo1024,
+  };
 }
 
 /** What each bad input throws: [name, message]. */
