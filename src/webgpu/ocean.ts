@@ -17,7 +17,8 @@
  * under the surface, the caustics, the sun's glint and the crests' glow; and its whitecap foam,
  * the same field as the WebGL Ocean's JS path makes (src/layers/whitecapFoam.ts, in JS over the
  * largest cascade's patch, on the same clock, uploaded as a float texture), drawn as ocean.frag
- * draws it, with its streaks from force 7 and the spray from force 9 (foamNodes.ts); on its horizon rings round
+ * draws it, with its streaks from force 7 and the spray from force 9 (foamNodes.ts); the scene's
+ * objects reflected in it and seen through it (reflections and refractions 'scene', sceneLightNodes.ts); on its horizon rings round
  * the camera (seaRings.ts), placed before each draw. heightAt and normalAt answer from the same
  * fields and code as the WebGL Ocean's (src/layers/surfaceQuery.ts), so for the same options and
  * time they return the same numbers.
@@ -50,6 +51,9 @@ import { skyUniforms } from './skyNodes';
 import { seaLightingValues } from '../render/seaLighting';
 import { checkCoordinates } from '../oceanQueries';
 import { checkRenderer } from '../device/deviceFor';
+import { SceneLight } from './sceneLightNodes';
+import { addSea, removeSea } from '../render/sceneCapture';
+import type { ReflectionLayers } from '../render/sceneReflection';
 
 export interface WebGPUOceanOptions extends Partial<SimulationParameters> {
   /** Refractive index of water n_w, (1, 3] (ShadingOptions.ior). @defaultValue 1.333 */
@@ -74,9 +78,9 @@ export interface WebGPUOceanOptions extends Partial<SimulationParameters> {
   worker?: boolean;
   /** 'auto' or 'js': the JS FFT; 'gpu': the compute FFT, on the WebGPU backend only (it throws on the WebGL2 backend). @defaultValue 'auto' */
   path?: 'auto' | 'js' | 'gpu';
-  /** Only 'sky' (the default here): scene reflections are not drawn yet. @defaultValue 'sky' */
+  /** 'scene': the scene's objects (reflectionLayers) reflected in the sea in front of its sky; 'sky': the sky alone (ShadingOptions.reflections). @defaultValue 'scene' */
   reflections?: 'sky' | 'scene';
-  /** Only 'sky' (the default here): objects under the water are not drawn yet. @defaultValue 'sky' */
+  /** 'scene': what lies under the surface seen through it; 'sky': the sky through the water alone (ShadingOptions.refractions). @defaultValue 'scene' */
   refractions?: 'sky' | 'scene';
   /** Only false (the default here): local waves are not drawn yet. @defaultValue false */
   localWaves?: boolean | object;
@@ -86,8 +90,6 @@ export interface WebGPUOceanOptions extends Partial<SimulationParameters> {
 
 /** Options the WebGL Ocean has and this one does not yet: the value it draws, and what is missing. */
 const NOT_YET: Record<string, { drawn: unknown; missing: string }> = {
-  reflections: { drawn: 'sky', missing: "scene reflections (reflections: 'scene'): the sea reflects its sky" },
-  refractions: { drawn: 'sky', missing: "objects seen under the water (refractions: 'scene')" },
   localWaves: { drawn: false, missing: 'local waves (stones, hulls)' },
   seabed: { drawn: null, missing: 'a seabed (shoaling, breaking, the shore)' },
   shadingMode: { drawn: 'full', missing: "the debug shading modes (shadingMode other than 'full')" },
@@ -113,7 +115,7 @@ export function notDrawnYet(options: object, renderer: WebGPURenderer): { name: 
 }
 
 const SIMULATION_KEYS = Object.keys(SIMULATION_OPTIONS) as (keyof SimulationParameters)[];
-const OPTION_KEYS: readonly string[] = [...SIMULATION_KEYS, 'ior', 'scatterColor', 'absorption', 'causticPower', 'causticColor', 'worker', ...Object.keys(SUN_OPTIONS), 'sunDirection', 'path', ...Object.keys(NOT_YET)];
+const OPTION_KEYS: readonly string[] = [...SIMULATION_KEYS, 'ior', 'scatterColor', 'absorption', 'causticPower', 'causticColor', 'worker', ...Object.keys(SUN_OPTIONS), 'sunDirection', 'path', 'reflections', 'refractions', ...Object.keys(NOT_YET)];
 
 export class Ocean extends Object3D {
   /** The FFT cascades, finest first (the JS FFT's fields as float textures). */
@@ -141,6 +143,8 @@ export class Ocean extends Object3D {
   private cellsPerRing: number;
   private readonly drawingBuffer = new Vector2();
   private readonly skyMesh: Mesh<SphereGeometry, MeshBasicNodeMaterial>;
+  /** The scene reflected in the sea and seen through it, and their captures (sceneLightNodes.ts). */
+  private readonly sceneLight: SceneLight;
   private currentTime = 0;
   private lastTime = NaN;
   private disposed = false;
@@ -177,6 +181,9 @@ export class Ocean extends Object3D {
     };
     this.useWorker = options.worker ?? typeof Worker !== 'undefined';
     this.computeFft = computeFftRenderer(renderer, options.path);
+    const reflections = checkOption(SHADING_OPTIONS, 'reflections', options.reflections ?? DEFAULT_SHADING.reflections).value;
+    const refractions = checkOption(SHADING_OPTIONS, 'refractions', options.refractions ?? DEFAULT_SHADING.refractions).value;
+    this.sceneLight = new SceneLight(renderer, { reflections: reflections === 'scene', refractions: refractions === 'scene' });
     this.buildCascades();
     this.cellsPerRing = cellsPerRingForViewport(renderer.getDrawingBufferSize(this.drawingBuffer).y);
     this.surface = new Mesh(createHorizonGridGeometry(this.cellsPerRing), this.surfaceMaterial());
@@ -192,7 +199,22 @@ export class Ocean extends Object3D {
     this.skyMesh.name = 'OceanWebGPU sky';
     this.skyMesh.frustumCulled = false;
     this.skyMesh.renderOrder = -Infinity; // first, under everything
+    // The captures of the scene the sea shows (sceneLightNodes.ts), before the sky: first in the
+    // render, before any object of it is drawn.
+    this.skyMesh.onBeforeRender = (drawing, scene, camera) => this.sceneLight.capture(drawing as unknown as WebGPURenderer, scene, camera);
     this.add(this.skyMesh, this.surface);
+    // Every capture (this sea's and any other's) leaves this sea and its sky out (sceneCapture.ts).
+    addSea(this, [this]);
+  }
+
+  /**
+   * Which objects the sea reflects with reflections 'scene' (the WebGL Ocean's reflectionLayers): a
+   * three.js Layers, all layers at first; an object is reflected where its layers meet these and the
+   * camera's. Change it in place (reflectionLayers.disable(1)).
+   */
+  get reflectionLayers(): ReflectionLayers {
+    this.checkAlive('reflectionLayers');
+    return this.sceneLight.reflection.layers;
   }
 
   /** Every wave layer (the cascades), in the order the surface and the queries sum them. */
@@ -270,6 +292,8 @@ export class Ocean extends Object3D {
     this.cascades = [];
     this.currentLayers = [];
     this.foamShading.dispose();
+    this.sceneLight.dispose();
+    removeSea(this);
     this.surface.geometry.dispose();
     this.surface.material.dispose();
     this.skyMesh.geometry.dispose();
@@ -282,7 +306,10 @@ export class Ocean extends Object3D {
   private surfaceMaterial(): MeshBasicNodeMaterial {
     this.rings = new SeaRings(this.currentLayers);
     const foam = { coverage: this.foam.texture.value as Texture, shading: this.foamShading, look: this.look };
-    return seaMaterial(this.currentLayers, this.uniforms, seaLightingValues(this.currentLayers, this.parameters.windSpeed), this.rings, foam);
+    const lighting = seaLightingValues(this.currentLayers, this.parameters.windSpeed);
+    // The mirror render keeps the scene down to the troughs (sceneReflection.ts), as the WebGL Ocean's: its RMS height.
+    this.sceneLight.reflection.troughDepth = lighting.heightRms;
+    return seaMaterial(this.currentLayers, this.uniforms, lighting, this.rings, foam, this.sceneLight);
   }
 
   /**
