@@ -3,6 +3,7 @@ import { writeFileSync } from 'node:fs';
 import { PNG } from 'pngjs';
 import type { Vec3, View } from './reflections';
 import { onePageForFile } from '../shared/sharedPages';
+import { bounds, redderPixels as redder } from '../shared/sceneProofs';
 
 // The scene's objects reflected in the sea (src/render/sceneReflection.ts,
 // shaders/surface/sceneReflection.glsl), drawn at 960×540 in real WebGL2 and read back.
@@ -38,21 +39,7 @@ function save(info: TestInfo, name: string, pixels: Pixels): void {
 
 /** Pixels whose red rose against the other render by more than `threshold` over their green and blue. */
 function redderPixels(scene: Pixels, sky: Pixels, threshold: number): [number, number][] {
-  const found: [number, number][] = [];
-  for (let y = 0; y < H; y++) {
-    for (let x = 0; x < W; x++) {
-      const a = rgb(scene, x, y);
-      const b = rgb(sky, x, y);
-      if (a[0] - b[0] - Math.max(a[1] - b[1], a[2] - b[2], 0) > threshold) found.push([x, y]);
-    }
-  }
-  return found;
-}
-
-function bounds(points: [number, number][]): { left: number; right: number; top: number; bottom: number } {
-  const xs = points.map((p) => p[0]);
-  const ys = points.map((p) => p[1]);
-  return { left: Math.min(...xs), right: Math.max(...xs), top: Math.min(...ys), bottom: Math.max(...ys) };
+  return redder((x, y) => rgb(scene, x, y), (x, y) => rgb(sky, x, y), W, H, threshold);
 }
 
 // No wind: a level sea (the spectrum is 0), the plane mirror of the law of reflection.

@@ -3,6 +3,7 @@ import { mkdirSync, writeFileSync } from 'node:fs';
 import { PNG } from 'pngjs';
 import { WEBGPU_BROWSER } from '../shared/webgpuBrowser';
 import type { Vec3, View } from './sceneLight';
+import { bounds, fresnelReflectance, redderPixels as redder } from '../shared/sceneProofs';
 
 // The scene in the WebGPU Ocean's sea (reflections and refractions 'scene', src/webgpu/sceneLightNodes.ts)
 // on both of WebGPURenderer's backends, by the methods of the WebGL Ocean's proofs
@@ -50,21 +51,7 @@ function save(name: string, pixels: Pixels): void {
 
 /** Pixels whose red rose against the other picture by more than `threshold` over their green and blue (reflections.spec.ts's measure). */
 function redderPixels(scene: Pixels, sky: Pixels, threshold: number): [number, number][] {
-  const found: [number, number][] = [];
-  for (let y = 0; y < H; y++) {
-    for (let x = 0; x < W; x++) {
-      const a = rgb(scene, x, y);
-      const b = rgb(sky, x, y);
-      if (a[0] - b[0] - Math.max(a[1] - b[1], a[2] - b[2], 0) > threshold) found.push([x, y]);
-    }
-  }
-  return found;
-}
-
-function bounds(points: [number, number][]): { left: number; right: number; top: number; bottom: number } {
-  const xs = points.map((p) => p[0]);
-  const ys = points.map((p) => p[1]);
-  return { left: Math.min(...xs), right: Math.max(...xs), top: Math.min(...ys), bottom: Math.max(...ys) };
+  return redder((x, y) => rgb(scene, x, y), (x, y) => rgb(sky, x, y), W, H, threshold);
 }
 
 /** Mean |Δ| of the RGB levels and the share of pixels whose every channel is within 8 levels. */
@@ -98,19 +85,8 @@ const PLATE_PIXELS: [number, number][] = [
 ];
 
 /**
- * Unpolarized Fresnel reflectance from air into water at incidence cos θi (Hecht, "Optics", 5th ed.,
- * §4.6.2, eqs. 4.42–4.43, with Snell's law n_a·sin θi = n_w·sin θt): R = (r_s² + r_p²)/2.
- */
-function fresnelReflectance(cosI: number, n: number): number {
-  const cosT = Math.sqrt(1 - (1 - cosI * cosI) / (n * n));
-  const rs = (cosI - n * cosT) / (cosI + n * cosT);
-  const rp = (n * cosI - cosT) / (n * cosI + cosT);
-  return (rs * rs + rp * rp) / 2;
-}
-
-/**
  * What a plate of radiance 1 more than another (white against black) adds to a pixel over flat
- * water `depth` metres above it, seen along `ray`: the transmitted fraction T = 1 − R of its light
+ * water `depth` metres above it, seen along `ray`: the transmitted fraction T = 1 − R of its light (R: Fresnel, ../shared/sceneProofs.ts)
  * after the refracted path L = depth/cos θt (Snell: sin θt = sin θi/n), which Beer–Lambert dims by
  * e^{−σL} per channel (Mobley, "Light and Water", 1994, §3.2). The sky's reflection, the water's
  * in-scattered light and the glint are the same over both plates and cancel.
