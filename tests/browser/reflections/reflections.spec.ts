@@ -3,7 +3,7 @@ import { writeFileSync } from 'node:fs';
 import { PNG } from 'pngjs';
 import type { Vec3, View } from './reflections';
 import { onePageForFile } from '../shared/sharedPages';
-import { bounds, redderPixels as redder } from '../shared/sceneProofs';
+import { bounds, rayMeetsBox, redderPixels as redder } from '../shared/sceneProofs';
 
 // The scene's objects reflected in the sea (src/render/sceneReflection.ts,
 // shaders/surface/sceneReflection.glsl), drawn at 960×540 in real WebGL2 and read back.
@@ -82,25 +82,6 @@ test('a red box above calm water is reflected at its mirror image with scene, no
   // Over an empty scene 'scene' draws exactly what 'sky' draws: the mirror render is transparent.
   expect(Buffer.compare(await render({ ...CALM, hideBox: true }), skyWithoutBox)).toBe(0);
 });
-
-/** The box's faces' planes hit by the ray o + t·d (t > 0), with the box grown by `margin` metres. */
-function rayMeetsBox(o: Vec3, d: Vec3, centre: Vec3, size: Vec3, margin: number): boolean {
-  let near = 0;
-  let far = Infinity;
-  for (let a = 0; a < 3; a++) {
-    const low = centre[a] - size[a] / 2 - margin;
-    const high = centre[a] + size[a] / 2 + margin;
-    if (Math.abs(d[a]) < 1e-12) {
-      if (o[a] < low || o[a] > high) return false;
-      continue;
-    }
-    const t1 = (low - o[a]) / d[a];
-    const t2 = (high - o[a]) / d[a];
-    near = Math.max(near, Math.min(t1, t2));
-    far = Math.min(far, Math.max(t1, t2));
-  }
-  return near <= far;
-}
 
 /** A 4 m box at the waterline of a 20 m/s sea, 30 m ahead of an eye 9 m up. */
 async function roughSea(): Promise<View> {

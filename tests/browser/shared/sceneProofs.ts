@@ -1,7 +1,7 @@
 /**
  * Measures the proofs of the scene in the sea share (the WebGL Ocean's tests/browser/reflections and
  * refractions, the WebGPU Ocean's tests/browser/webgpu/sceneLight.spec.ts): the pixels a reflection
- * made redder, their bounds, and Fresnel's reflectance of water.
+ * made redder, their bounds, whether a ray meets a box, and Fresnel's reflectance of water.
  */
 
 export type Vec3 = [number, number, number];
@@ -38,4 +38,23 @@ export function fresnelReflectance(cosI: number, n: number): number {
   const rs = (cosI - n * cosT) / (cosI + n * cosT);
   const rp = (n * cosI - cosT) / (n * cosI + cosT);
   return (rs * rs + rp * rp) / 2;
+}
+
+/** Whether the ray o + t·d (t > 0) meets the box grown by `margin` metres (the slab method). */
+export function rayMeetsBox(o: Vec3, d: Vec3, centre: Vec3, size: Vec3, margin: number): boolean {
+  let near = 0;
+  let far = Infinity;
+  for (let a = 0; a < 3; a++) {
+    const low = centre[a] - size[a] / 2 - margin;
+    const high = centre[a] + size[a] / 2 + margin;
+    if (Math.abs(d[a]) < 1e-12) {
+      if (o[a] < low || o[a] > high) return false;
+      continue;
+    }
+    const t1 = (low - o[a]) / d[a];
+    const t2 = (high - o[a]) / d[a];
+    near = Math.max(near, Math.min(t1, t2));
+    far = Math.min(far, Math.max(t1, t2));
+  }
+  return near <= far;
 }

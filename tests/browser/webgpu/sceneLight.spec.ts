@@ -3,7 +3,7 @@ import { mkdirSync, writeFileSync } from 'node:fs';
 import { PNG } from 'pngjs';
 import { WEBGPU_BROWSER } from '../shared/webgpuBrowser';
 import type { Vec3, View } from './sceneLight';
-import { bounds, fresnelReflectance, redderPixels as redder } from '../shared/sceneProofs';
+import { bounds, fresnelReflectance, rayMeetsBox, redderPixels as redder } from '../shared/sceneProofs';
 
 // The scene in the WebGPU Ocean's sea (reflections and refractions 'scene', src/webgpu/sceneLightNodes.ts)
 // on both of WebGPURenderer's backends, by the methods of the WebGL Ocean's proofs
@@ -144,7 +144,7 @@ function backendTests(backend: 'webgl' | 'webgpu'): void {
       expect(Buffer.compare(await render({ ...CALM, box: undefined }), skyWithoutBox)).toBe(0);
     });
 
-    test('on a 20 m/s sea no reflection pixel lies above the drawn surface', async () => {
+    test('on a 20 m/s sea no reflection pixel lies above the drawn surface, and each shows the box along its reflected ray', async () => {
       const rough: View = { windSpeed: 20, reflections: 'scene', refractions: 'sky', eye: [0, 9, 0], target: [0, 0, -40], fov: 40, t: 7 };
       const waterline = await page.evaluate((v) => window.sceneLight.heightAt(v, 0, -30), rough);
       rough.box = { centre: [0, waterline, -30], size: [4, 4, 4] };
@@ -157,9 +157,25 @@ function backendTests(backend: 'webgl' | 'webgpu'): void {
       const noBox = await render({ ...rough, reflections: 'sky', box: undefined });
       const differs = (a: Pixels, b: Pixels, [x, y]: [number, number]) => rgb(a, x, y).some((v, c) => v !== rgb(b, x, y)[c]);
       const offSea = reflection.filter((p) => !differs(sky, noSurface, p) || differs(sky, noBox, p));
-      console.log(`${backend}: 20 m/s, ${reflection.length} reflection pixels, ${offSea.length} off the drawn sea`);
+      // Each reflection pixel shows the box along the ray the law of reflection sends from the drawn
+      // surface point (r = d − 2(d·n)n, Hecht §4.3; mirrored upwards as ocean.frag does), the point
+      // where the pixel's view ray meets Ocean.heightAt's surface and its normal from Ocean.normalAt:
+      // the reflection rides on the displaced surface (reflections.spec.ts's method, with the surface
+      // found by the queries, as the WebGPU Ocean has no height shading mode). Within half a metre
+      // of the box, as there: the drawn normal is filtered over its texels.
+      const sample = reflection.filter((_, i) => i % Math.ceil(reflection.length / 400) === 0);
+      const surface = await page.evaluate(([v, p]) => window.sceneLight.surfacePoints(v, p), [rough, sample] as const);
+      const hits = surface.filter((found) => {
+        if (found === null) return false;
+        const { point, normal: n, ray: d } = found;
+        const dn = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
+        const reflected: Vec3 = [d[0] - 2 * dn * n[0], Math.abs(d[1] - 2 * dn * n[1]), d[2] - 2 * dn * n[2]];
+        return rayMeetsBox(point, reflected, rough.box!.centre, rough.box!.size, 0.5);
+      });
+      console.log(`${backend}: 20 m/s, ${reflection.length} reflection pixels, ${offSea.length} off the drawn sea; ${hits.length} of ${sample.length} sampled meet the box`);
       expect(reflection.length).toBeGreaterThan(50);
       expect(offSea).toEqual([]);
+      expect(hits.length / sample.length).toBeGreaterThan(0.8);
     });
 
     test('a white plate 1 m and 4 m under calm water: each channel follows Fresnel transmittance × e^{−σL} over the refracted path', async () => {

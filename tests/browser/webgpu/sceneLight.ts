@@ -189,6 +189,33 @@ function heightAt(view: View, x: number, z: number): number {
   return ocean.heightAt(x, z);
 }
 
+/**
+ * Where the view ray of each pixel ([x, y] from the top left) meets the sea at the view's time, by
+ * Ocean.heightAt along it (steps of 0.25 m, then halved 20 times where it passes under the
+ * surface), and the sea's normal there (Ocean.normalAt); null where it meets none within 300 m.
+ */
+function surfacePoints(view: View, pixels: [number, number][]): ({ point: Vec3; normal: Vec3; ray: Vec3 } | null)[] {
+  const ocean = oceanFor(view);
+  ocean.update(view.t);
+  const [ex, ey, ez] = view.eye;
+  const below = (ray: Vec3, s: number) => ey + s * ray[1] < ocean.heightAt(ex + s * ray[0], ez + s * ray[2]);
+  return pixels.map(([x, y]) => {
+    const ray = pixelRay(view, x, y);
+    let s = 0;
+    while (s < 300 && !below(ray, s + 0.25)) s += 0.25;
+    if (s >= 300) return null;
+    let [above, under] = [s, s + 0.25];
+    for (let i = 0; i < 20; i++) {
+      const middle = (above + under) / 2;
+      if (below(ray, middle)) under = middle;
+      else above = middle;
+    }
+    const point: Vec3 = [ex + above * ray[0], ey + above * ray[1], ez + above * ray[2]];
+    const n = ocean.normalAt(point[0], point[2]);
+    return { point, normal: [n.x, n.y, n.z], ray };
+  });
+}
+
 /** renderer.info.memory before the Oceans of `views` (each drawn twice), while they live, and after their dispose and a frame. */
 async function memoryCycle(views: View[]): Promise<{ before: Record<string, number>; during: Record<string, number>; after: Record<string, number> }> {
   const disposeAll = () => {
@@ -228,7 +255,7 @@ function construct(options: Record<string, unknown>): [string, string] {
   }
 }
 
-const harness = { WIDTH, HEIGHT, open, render, linearPixels, renderWebGL, project, pixelRay, heightAt, memoryCycle, construct };
+const harness = { WIDTH, HEIGHT, open, render, linearPixels, renderWebGL, project, pixelRay, heightAt, surfacePoints, memoryCycle, construct };
 declare global {
   interface Window {
     sceneLight: typeof harness;
