@@ -78,6 +78,7 @@ export type { LocalWaveGrid } from './layers/localWaveModel';
 export type { SkyBackground } from './render/skyBackground';
 export type { SceneOutput } from './render/sceneOutput';
 export type { SceneRefraction } from './render/sceneRefraction';
+export type { CaptureRenderer } from './render/sceneCapture';
 export { farPlaneFor, fitFarPlane } from './runtime/farPlane';
 export type { AdaptiveQuality, QualityLevel, QualitySetting, QualityStep } from './runtime/adaptiveQuality';
 export type { SeaStateSummary, WritableNumbers } from './ocean';

@@ -5,7 +5,7 @@
  * and the time (its clock, time scale and pause) of the WebGL app.
  *
  * The WebGPU Ocean is a first slice: what the URL asks for that it does not draw yet (the sun, the
- * analytic sky, caustics, scene reflections, …: its notDrawnYet) and the app's parts built on the
+ * analytic sky, caustics, local waves, …: its notDrawnYet) and the app's parts built on the
  * WebGL Ocean (the panel, the inspector, buoys, the boat, the island, wireframe, a skybox, the
  * quality levels, stones) are turned off, each with a notice, rather than refused. The status line
  * says which renderer and backend draw, and why not WebGPU where it falls back.
@@ -42,7 +42,7 @@ for (const [key, part] of Object.entries(WEBGL_ONLY)) {
 
 // The simulation's options all go (the grid and cascades of the starting quality level); of the
 // others only what the URL asks for beyond the defaults: the defaults of options the WebGPU Ocean
-// does not draw yet (scene reflections, say) would otherwise each be named as left out.
+// does not draw yet (local waves, say) would otherwise each be named as left out.
 const options = appOceanOptions(state) as Record<string, unknown>;
 const defaults = appOceanOptions(DEFAULT_STATE) as Record<string, unknown>;
 const asked = Object.fromEntries(Object.entries(options).filter(([name, value]) => Object.hasOwn(SIMULATION_OPTIONS, name) || JSON.stringify(value) !== JSON.stringify(defaults[name])));

@@ -7,7 +7,37 @@
  * instead. Everything the render changes on the renderer and the scene is put back, so it may run
  * inside another render (an object's onBeforeRender).
  */
-import { Box3, Color, type BufferGeometry, type Camera, type Layers, type Material, type Mesh, type Object3D, type Scene, type WebGLRenderer, type WebGLRenderTarget } from 'three';
+import { Box3, Color, type BufferGeometry, type Camera, type ColorRepresentation, type Layers, type Material, type Mesh, type Object3D, type RenderTarget, type Scene, type Vector2, type Vector4, type WebGLRenderTarget } from 'three';
+
+/**
+ * What a capture asks of a renderer: three's WebGLRenderer satisfies it, and so does its
+ * WebGPURenderer (three-fft-ocean/webgpu's captures, src/webgpu/sceneLightNodes.ts), which has
+ * no GL state, extensions or capabilities and says how it stores depth itself.
+ */
+export interface CaptureRenderer {
+  getRenderTarget(): RenderTarget | null;
+  getActiveCubeFace(): number;
+  getActiveMipmapLevel(): number;
+  /** Given what getRenderTarget returned, or a capture's target (a WebGLRenderTarget, which WebGPURenderer draws into as any RenderTarget). */
+  setRenderTarget(target: WebGLRenderTarget | null, activeCubeFace?: number, activeMipmapLevel?: number): void;
+  getClearColor(target: Color): Color;
+  getClearAlpha(): number;
+  setClearColor(color: ColorRepresentation, alpha?: number): void;
+  clear(color?: boolean, depth?: boolean, stencil?: boolean): unknown;
+  render(scene: Object3D, camera: Camera): unknown;
+  getDrawingBufferSize(target: Vector2): Vector2;
+  autoClear: boolean;
+  xr: { enabled: boolean };
+  shadowMap: { autoUpdate: boolean };
+  /** WebGLRenderer's: its GL state (the depth mask), extensions and capabilities, and its current viewport. */
+  state?: { buffers: { depth: { setMask(mask: boolean): void; getReversed?(): boolean } } };
+  extensions?: { has(name: string): boolean };
+  capabilities?: { logarithmicDepthBuffer: boolean };
+  getCurrentViewport?(target: Vector4): Vector4;
+  /** WebGPURenderer's: whether its depth buffer is logarithmic or reversed. */
+  logarithmicDepthBuffer?: boolean;
+  reversedDepthBuffer?: boolean;
+}
 
 const savedClearColor = new Color();
 /** The seas' objects' visibility during a capture, kept between captures so that none makes an array. */
@@ -140,12 +170,12 @@ function plainMaterial(material: Material): boolean {
  * Restores the renderer's target, clear colour and alpha, autoClear, XR and shadow-map updates, the
  * scene's background, the camera's layers, the seas' visibility and the meshes' own geometries.
  */
-export function renderSceneWithoutSea(renderer: WebGLRenderer, scene: Scene, camera: Camera, target: WebGLRenderTarget, layers: Layers, nearPlaneHeight?: number): void {
+export function renderSceneWithoutSea(renderer: CaptureRenderer, scene: Scene, camera: Camera, target: WebGLRenderTarget, layers: Layers, nearPlaneHeight?: number): void {
   const sea = hiddenSeaObjects().list;
   underWater.length = 0;
   stoodIn.length = 0;
   captureChanges(scene, nearPlaneHeight, underWater, stoodIn);
-  const previousTarget = renderer.getRenderTarget();
+  const previousTarget = renderer.getRenderTarget() as WebGLRenderTarget | null;
   const previousFace = renderer.getActiveCubeFace();
   const previousMipmap = renderer.getActiveMipmapLevel();
   renderer.getClearColor(savedClearColor);
@@ -172,8 +202,9 @@ export function renderSceneWithoutSea(renderer: WebGLRenderer, scene: Scene, cam
     renderer.shadowMap.autoUpdate = false;
     renderer.setRenderTarget(target);
     renderer.setClearColor(0x000000, 0);
-    // A material drawn last may have left depth writes off, and clear() would then keep the old depth.
-    renderer.state.buffers.depth.setMask(true);
+    // A material drawn last may have left depth writes off, and clear() would then keep the old
+    // depth (WebGLRenderer; WebGPURenderer's clear turns them on itself).
+    renderer.state?.buffers.depth.setMask(true);
     renderer.clear(true, true, true);
     renderer.autoClear = false;
     renderer.render(scene, camera);

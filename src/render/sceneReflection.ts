@@ -31,11 +31,11 @@ import {
   Vector3,
   Vector4,
   WebGLRenderTarget,
+  WebGPUCoordinateSystem,
   type Scene,
   type Texture,
-  type WebGLRenderer,
 } from 'three';
-import { holdsOnlySeas, isCapturing, renderSceneWithoutSea } from './sceneCapture';
+import { holdsOnlySeas, isCapturing, renderSceneWithoutSea, type CaptureRenderer } from './sceneCapture';
 
 /** Reflection in y = 0: (x, y, z) → (x, −y, z). */
 const MIRROR = new Matrix4().makeScale(1, -1, 1);
@@ -108,7 +108,7 @@ export class SceneReflection {
    * shows its sky; and where there is nothing but seas to reflect (sceneCapture.ts, holdsOnlySeas),
    * nothing is rendered. Every sea's objects are hidden in it (sceneCapture.ts).
    */
-  render(renderer: WebGLRenderer, scene: Scene, camera: Camera): void {
+  render(renderer: CaptureRenderer, scene: Scene, camera: Camera): void {
     if (isCapturing()) {
       this.uniforms.sceneReflectionShown.value = false;
       return;
@@ -157,10 +157,14 @@ export class SceneReflection {
    * The mirror camera of `camera`: its frame M·C·F (M the mirror, F the x flip), its projection
    * F·P·F, then the near plane made oblique on the plane y = `nearPlaneHeight` (Lengyel 2005,
    * "Oblique view frustum depth projection and clipping", J. Game Dev. 1(2): the third row of P
-   * replaced so that the near plane is that one), which clips everything below it.
+   * replaced so that the near plane is that one), which clips everything below it. In WebGPU's
+   * clip space (depth 0 to 1, not −1 to 1) the near plane is z_clip = 0, not z_clip = −w: the row
+   * is C·(M4·Q)/(C·Q), not C·2(M4·Q)/(C·Q) − M4 (the same derivation, M4·Q = 1 here).
    */
   private placeCamera(camera: Camera, nearPlaneHeight: number): void {
     const mirror = this.camera;
+    mirror.coordinateSystem = camera.coordinateSystem;
+    const zeroToOne = camera.coordinateSystem === WebGPUCoordinateSystem;
     mirror.matrixWorld.multiplyMatrices(MIRROR, camera.matrixWorld).multiply(FLIP_X);
     mirror.matrixWorldInverse.copy(mirror.matrixWorld).invert();
     const p = mirror.projectionMatrix.copy(camera.projectionMatrix).premultiply(FLIP_X).multiply(FLIP_X).elements;
@@ -169,23 +173,24 @@ export class SceneReflection {
     const c = this.clipPlane.set(plane.normal.x, plane.normal.y, plane.normal.z, plane.constant);
     // The frustum's corner opposite the plane, in view space (Lengyel's Q = P⁻¹·(sgn cx, sgn cy, 1, 1)).
     const q = this.corner.set((Math.sign(c.x) + p[8]) / p[0], (Math.sign(c.y) + p[9]) / p[5], -1, (1 + p[10]) / p[14]);
-    c.multiplyScalar(2 / c.dot(q));
+    c.multiplyScalar((zeroToOne ? 1 : 2) / c.dot(q));
     p[2] = c.x;
     p[6] = c.y;
-    p[10] = c.z + 1;
+    p[10] = zeroToOne ? c.z : c.z + 1;
     p[14] = c.w;
     mirror.projectionMatrixInverse.copy(mirror.projectionMatrix).invert();
   }
 
   /** The render target at `scale` times the drawing buffer, with a depth texture; made or resized as needed. */
-  private targetFor(renderer: WebGLRenderer): WebGLRenderTarget {
+  private targetFor(renderer: CaptureRenderer): WebGLRenderTarget {
     renderer.getDrawingBufferSize(this.size);
     const width = Math.max(1, Math.round(this.size.x * this.scale));
     const height = Math.max(1, Math.round(this.size.y * this.scale));
     if (this.target === null) {
       // Half floats keep the scene's HDR radiance (a sunlit white is above 1); 8 bits where the
-      // GPU cannot render into them.
-      const halfFloat = renderer.extensions.has('EXT_color_buffer_half_float') || renderer.extensions.has('EXT_color_buffer_float');
+      // GPU cannot render into them (WebGPU, and WebGL2 under WebGPURenderer, always can).
+      const extensions = renderer.extensions;
+      const halfFloat = extensions === undefined || extensions.has('EXT_color_buffer_half_float') || extensions.has('EXT_color_buffer_float');
       this.target = new WebGLRenderTarget(width, height, {
         type: halfFloat ? HalfFloatType : UnsignedByteType,
         depthTexture: new DepthTexture(width, height),
@@ -204,7 +209,8 @@ function isPerspective(camera: Camera): boolean {
 }
 
 /** Whether `renderer` writes depths as a plain perspective projection does (not logarithmic, not reversed). */
-function plainDepth(renderer: WebGLRenderer): boolean {
-  const depth = renderer.state.buffers.depth as { getReversed?: () => boolean };
-  return !renderer.capabilities.logarithmicDepthBuffer && depth.getReversed?.() !== true;
+export function plainDepth(renderer: CaptureRenderer): boolean {
+  const logarithmic = renderer.capabilities?.logarithmicDepthBuffer ?? renderer.logarithmicDepthBuffer;
+  const reversed = renderer.state?.buffers.depth.getReversed?.() ?? renderer.reversedDepthBuffer;
+  return logarithmic !== true && reversed !== true;
 }

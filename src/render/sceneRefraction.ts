@@ -15,15 +15,15 @@ import {
   Layers,
   Matrix4,
   NearestFilter,
+  Vector2,
   Vector4,
   WebGLRenderTarget,
   type Camera,
   type Scene,
   type Texture,
-  type WebGLRenderer,
 } from 'three';
 import { ParameterError } from '../parameters/options';
-import { holdsOnlySeas, isCapturing, renderSceneWithoutSea } from './sceneCapture';
+import { holdsOnlySeas, isCapturing, renderSceneWithoutSea, type CaptureRenderer } from './sceneCapture';
 
 /** How the depth buffer stores depth (SCENE_DEPTH_* in sceneRefraction.glsl). */
 const DEPTH_MODE = { standard: 0, reversed: 1, logarithmic: 2 } as const;
@@ -73,7 +73,7 @@ export class SceneRefraction {
    * shader shows over it exactly what it shows without one), only tells the shader there is none
    * (and frees the target when the scale is 0; otherwise keeps it for the next capture).
    */
-  capture(renderer: WebGLRenderer, scene: Scene, camera: Camera): void {
+  capture(renderer: CaptureRenderer, scene: Scene, camera: Camera): void {
     const u = this.uniforms;
     u.sceneCaptured.value = false;
     if (this.resolutionScale === 0) {
@@ -81,7 +81,7 @@ export class SceneRefraction {
       return;
     }
     if (isCapturing() || holdsOnlySeas(scene)) return;
-    renderer.getCurrentViewport(this.viewport);
+    currentViewport(renderer, this.viewport);
     const width = Math.max(1, Math.round(this.viewport.z * this.resolutionScale));
     const height = Math.max(1, Math.round(this.viewport.w * this.resolutionScale));
     const target = this.targetOfSize(width, height);
@@ -94,7 +94,7 @@ export class SceneRefraction {
     u.sceneProjectionInverse.value.copy(camera.projectionMatrixInverse);
     u.sceneViewport.value.set(this.viewport.x, this.viewport.y, 1 / this.viewport.z, 1 / this.viewport.w);
     const far = (camera as { far?: number }).far ?? 1;
-    if (renderer.capabilities.logarithmicDepthBuffer) {
+    if (renderer.capabilities?.logarithmicDepthBuffer ?? renderer.logarithmicDepthBuffer) {
       u.sceneDepthMode.value = DEPTH_MODE.logarithmic;
       u.sceneLogDepthRange.value = Math.log2(far + 1);
     } else {
@@ -133,4 +133,16 @@ export class SceneRefraction {
     this.uniforms.sceneColour.value = null;
     this.uniforms.sceneDepth.value = null;
   }
+}
+
+/**
+ * The viewport the sea is being drawn into, in pixels: WebGLRenderer's current one; for
+ * WebGPURenderer (which keeps none while rendering), the whole of its render target or drawing buffer.
+ */
+function currentViewport(renderer: CaptureRenderer, viewport: Vector4): Vector4 {
+  if (renderer.getCurrentViewport) return renderer.getCurrentViewport(viewport);
+  const target = renderer.getRenderTarget();
+  if (target !== null) return viewport.set(0, 0, target.width, target.height);
+  const size = renderer.getDrawingBufferSize(new Vector2());
+  return viewport.set(0, 0, size.x, size.y);
 }

@@ -86,7 +86,7 @@ export function facingEye(view: Vec3Node, normal: Vec3Node): Vec3Node {
  * incidence and across it, and its weight (the 5-point Gauss–Hermite rule along, Abramowitz &
  * Stegun 25.4.46, its node 0 split across; the GLSL says why).
  */
-const SLOPE_TAPS: readonly (readonly [number, number, number])[] = [
+export const SLOPE_TAPS: readonly (readonly [number, number, number])[] = [
   [1.3556262, 0, 0.2220759],
   [-1.3556262, 0, 0.2220759],
   [2.85697, 0, 0.0112574],
@@ -147,12 +147,17 @@ export function crestGlow(view: Vec3Node, normal: Vec3Node, sun: Vec3Node, heigh
 }
 
 /**
- * absorption.glsl's throughWater: what the refracted ray sees, the environment along it through
- * viewDepth metres of water (Beer–Lambert), c = c_light·e^{−σL} + c_scatter·(1 − e^{−σL}).
+ * absorption.glsl's alongWaterPath: light across `path` metres of water (Beer–Lambert per channel),
+ * c = c_light·e^{−σL} + c_scatter·(1 − e^{−σL}).
  */
+export function alongWaterPath(light: Vec3Node, path: FloatNode, absorption: Vec3Node, scatter: Vec3Node): Vec3Node {
+  const transmittance = exp(absorption.mul(path).negate());
+  return light.mul(transmittance).add(scatter.mul(float(1).sub(transmittance)));
+}
+
+/** absorption.glsl's throughWater: what the refracted ray sees, the environment along it through viewDepth metres of water (alongWaterPath). */
 export function throughWater(environment: Vec3Node, refracted: Vec3Node, absorption: Vec3Node, scatter: Vec3Node, viewDepth: number): Vec3Node {
-  const transmittance = exp(absorption.mul(float(viewDepth).div(max(refracted.y.negate(), 0.05))).negate());
-  return environment.mul(transmittance).add(scatter.mul(float(1).sub(transmittance)));
+  return alongWaterPath(environment, float(viewDepth).div(max(refracted.y.negate(), 0.05)), absorption, scatter);
 }
 
 /** caustics.glsl's causticBrightness (Guardado & Sánchez-Crespo, GPU Gems ch. 2): K = (t·l)^p; `eta` is n_w/n_a. */

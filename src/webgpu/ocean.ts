@@ -19,7 +19,8 @@
  * the same field as the WebGL Ocean's JS path makes (src/layers/whitecapFoam.ts, over the largest
  * cascade's patch, on the same clock: in JS, uploaded as a float texture, or on the compute path in a
  * compute shader from the compute FFT's fields, computeFoam.ts), drawn as ocean.frag
- * draws it, with its streaks from force 7 and the spray from force 9 (foamNodes.ts); on its horizon rings round
+ * draws it, with its streaks from force 7 and the spray from force 9 (foamNodes.ts); the scene's
+ * objects reflected in it and seen through it (reflections and refractions 'scene', sceneLightNodes.ts); on its horizon rings round
  * the camera (seaRings.ts), placed before each draw. heightAt and normalAt answer from the same
  * fields and code as the WebGL Ocean's (src/layers/surfaceQuery.ts), so for the same options and
  * time they return the same numbers. Over a seabed (the `seabed` option, setSeabed) the waves
@@ -73,6 +74,9 @@ export interface WebGPUOceanPath {
   running: 'gpu' | 'js';
   reason: string;
 }
+import { SceneLight } from './sceneLightNodes';
+import { addSea, removeSea } from '../render/sceneCapture';
+import type { ReflectionLayers } from '../render/sceneReflection';
 
 export interface WebGPUOceanOptions extends Partial<SimulationParameters> {
   /** Refractive index of water n_w, (1, 3] (ShadingOptions.ior). @defaultValue 1.333 */
@@ -101,9 +105,9 @@ export interface WebGPUOceanOptions extends Partial<SimulationParameters> {
    * (an UnsupportedError where it cannot run); 'js': the JS FFT. @defaultValue 'auto'
    */
   path?: PathPreference;
-  /** Only 'sky' (the default here): scene reflections are not drawn yet. @defaultValue 'sky' */
+  /** 'scene': the scene's objects (reflectionLayers) reflected in the sea in front of its sky; 'sky': the sky alone (ShadingOptions.reflections). @defaultValue 'scene' */
   reflections?: 'sky' | 'scene';
-  /** Only 'sky' (the default here): objects under the water are not drawn yet. @defaultValue 'sky' */
+  /** 'scene': what lies under the surface seen through it; 'sky': the sky through the water alone (ShadingOptions.refractions). @defaultValue 'scene' */
   refractions?: 'sky' | 'scene';
   /** Only false (the default here): local waves are not drawn yet. @defaultValue false */
   localWaves?: boolean | object;
@@ -117,8 +121,6 @@ export interface WebGPUOceanOptions extends Partial<SimulationParameters> {
 
 /** Options the WebGL Ocean has and this one does not yet: the value it draws, and what is missing. */
 const NOT_YET: Record<string, { drawn: unknown; missing: string }> = {
-  reflections: { drawn: 'sky', missing: "scene reflections (reflections: 'scene'): the sea reflects its sky" },
-  refractions: { drawn: 'sky', missing: "objects seen under the water (refractions: 'scene')" },
   localWaves: { drawn: false, missing: 'local waves (stones, hulls)' },
   shadingMode: { drawn: 'full', missing: "the debug shading modes (shadingMode other than 'full')" },
 };
@@ -143,7 +145,7 @@ export function notDrawnYet(options: object, renderer: WebGPURenderer): { name: 
 }
 
 const SIMULATION_KEYS = Object.keys(SIMULATION_OPTIONS) as (keyof SimulationParameters)[];
-const OPTION_KEYS: readonly string[] = [...SIMULATION_KEYS, 'ior', 'scatterColor', 'absorption', 'causticPower', 'causticColor', 'worker', ...Object.keys(SUN_OPTIONS), 'sunDirection', 'path', 'seabed', ...Object.keys(NOT_YET)];
+const OPTION_KEYS: readonly string[] = [...SIMULATION_KEYS, 'ior', 'scatterColor', 'absorption', 'causticPower', 'causticColor', 'worker', ...Object.keys(SUN_OPTIONS), 'sunDirection', 'path', 'seabed', 'reflections', 'refractions', ...Object.keys(NOT_YET)];
 
 export class Ocean extends Object3D {
   /** The FFT cascades, finest first (the JS FFT's fields as float textures). */
@@ -181,6 +183,8 @@ export class Ocean extends Object3D {
   private shoreNodes: ShoreNodes | null = null;
   /** The sea's Hs and peak period, for the swash (the WebGL Ocean's statistics). */
   private readonly statistics = new SeaStatistics(() => ({ cascades: this.cascades, parameters: this.parameters }));
+  /** The scene reflected in the sea and seen through it, and their captures (sceneLightNodes.ts). */
+  private readonly sceneLight: SceneLight;
   private currentTime = 0;
   private lastTime = NaN;
   private disposed = false;
@@ -220,6 +224,9 @@ export class Ocean extends Object3D {
     this.useWorker = options.worker ?? typeof Worker !== 'undefined';
     this.renderer = renderer;
     this.pathPreference = checkPath(options.path);
+    const reflections = checkOption(SHADING_OPTIONS, 'reflections', options.reflections ?? DEFAULT_SHADING.reflections).value;
+    const refractions = checkOption(SHADING_OPTIONS, 'refractions', options.refractions ?? DEFAULT_SHADING.refractions).value;
+    this.sceneLight = new SceneLight(renderer, { reflections: reflections === 'scene', refractions: refractions === 'scene' });
     this.buildCascades(this.fftChoice(this.parameters));
     this.cellsPerRing = cellsPerRingForViewport(renderer.getDrawingBufferSize(this.drawingBuffer).y);
     this.surface = new Mesh(createHorizonGridGeometry(this.cellsPerRing), this.surfaceMaterial());
@@ -236,7 +243,22 @@ export class Ocean extends Object3D {
     this.skyMesh.name = 'OceanWebGPU sky';
     this.skyMesh.frustumCulled = false;
     this.skyMesh.renderOrder = -Infinity; // first, under everything
+    // The captures of the scene the sea shows (sceneLightNodes.ts), before the sky: first in the
+    // render, before any object of it is drawn.
+    this.skyMesh.onBeforeRender = (drawing, scene, camera) => this.sceneLight.capture(drawing as unknown as WebGPURenderer, scene, camera);
     this.add(this.skyMesh, this.surface);
+    // Every capture (this sea's and any other's) leaves this sea and its sky out (sceneCapture.ts).
+    addSea(this, [this]);
+  }
+
+  /**
+   * Which objects the sea reflects with reflections 'scene' (the WebGL Ocean's reflectionLayers): a
+   * three.js Layers, all layers at first; an object is reflected where its layers meet these and the
+   * camera's. Change it in place (reflectionLayers.disable(1)).
+   */
+  get reflectionLayers(): ReflectionLayers {
+    this.checkAlive('reflectionLayers');
+    return this.sceneLight.reflection.layers;
   }
 
   /** Every wave layer (the cascades), in the order the surface and the queries sum them. */
@@ -334,6 +356,8 @@ export class Ocean extends Object3D {
     this.cascades = [];
     this.currentLayers = [];
     this.foamShading.dispose();
+    this.sceneLight.dispose();
+    removeSea(this);
     this.surface.geometry.dispose();
     this.surface.material.dispose();
     this.skyMesh.geometry.dispose();
@@ -350,7 +374,10 @@ export class Ocean extends Object3D {
     const foam = { coverage: this.foam.texture.value as Texture, shading: this.foamShading, look: this.look };
     const shore = this.preparedShore();
     this.shoreNodes = shore ? new ShoreNodes(shore) : null;
-    return seaMaterial(this.currentLayers, this.uniforms, seaLightingValues(this.currentLayers, this.parameters.windSpeed), this.rings, foam, this.shoreNodes);
+    const lighting = seaLightingValues(this.currentLayers, this.parameters.windSpeed);
+    // The mirror render keeps the scene down to the troughs (sceneReflection.ts), as the WebGL Ocean's: its RMS height.
+    this.sceneLight.reflection.troughDepth = lighting.heightRms;
+    return seaMaterial(this.currentLayers, this.uniforms, lighting, this.rings, foam, this.shoreNodes, this.sceneLight);
   }
 
   /** Makes the surface's material again (new layers, a new seabed) and frees the one before. */

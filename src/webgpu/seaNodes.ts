@@ -36,6 +36,7 @@ import {
   normalize,
   positionGeometry,
   positionWorld,
+  reflect,
   refract,
   select,
   sin,
@@ -53,6 +54,7 @@ import { SEA_SUN_COLOR, VIEW_DEPTH, type SeaLightingValues } from '../render/sea
 import { analyticSkyRadiance, type SkyUniforms } from './skyNodes';
 import { causticBrightness, crestGlow, facingEye, filteredSkyReflection, footprintLevel, subPixelSlopeVariance, sunGlint, throughWater } from './lightNodes';
 import type { FloatNode, Vec2Node, Vec3Node, Vec4Node } from './nodeTypes';
+import type { SceneLight } from './sceneLightNodes';
 import type { BeaufortAppearance } from '../render/beaufortAppearance';
 import type { ShoreNodes } from './shoreNodes';
 import {
@@ -118,9 +120,10 @@ function blendWeights(rings: SeaRings, fromEye: Vec2Node): Vec4Node {
 /**
  * The surface's material over `layers` (the periodic FFT cascades, the largest last as
  * orderLayers gives them, with the textures they hold now), on the grid `rings` places; over the
- * seabed of `shore` when given (shoreNodes.ts: ocean.vert's and ocean.frag's SEABED blocks).
+ * seabed of `shore` when given (shoreNodes.ts: ocean.vert's and ocean.frag's SEABED blocks); with
+ * `sceneLight`, the scene's objects reflected in it and seen through it (sceneLightNodes.ts).
  */
-export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms, lighting: SeaLightingValues, rings: SeaRings, foam: SeaFoam, shore: ShoreNodes | null = null): MeshBasicNodeMaterial {
+export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms, lighting: SeaLightingValues, rings: SeaRings, foam: SeaFoam, shore: ShoreNodes | null = null, sceneLight: SceneLight | null = null): MeshBasicNodeMaterial {
   const material = new MeshBasicNodeMaterial();
   material.name = 'OceanWebGPU';
   const point = rings.point();
@@ -207,23 +210,28 @@ export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms,
     const [air, water] = [float(1), uniforms.ior];
     const sky = uniforms.sky;
     const skyRadiance = (direction: Vec3Node) => analyticSkyRadiance(sky, direction);
-    // ocean.frag's full shading, without what is not drawn here yet (scene reflections and refractions).
+    // ocean.frag's full shading.
     const reflection = filteredSkyReflection(view, normal, slopeVariance, air, water, skyRadiance);
     const reflectance = reflection.reflectance.toVar();
     const refracted = refract(view, normal, air.div(water));
     const deepWater = uniforms.scatterColor.mul(sky.daylight);
     const below = throughWater(skyRadiance(refracted), refracted, uniforms.absorption, deepWater, VIEW_DEPTH);
+    // The scene's objects in front of the sky and under the surface, and the foam where they meet the water (sceneLightNodes.ts).
+    const surfaceFromEye = positionWorld.sub(cameraPosition);
+    const reflectedRay = reflect(view, normal);
+    const skyAndScene = sceneLight ? sceneLight.reflectedRadiance(surfaceFromEye, vec3(reflectedRay.x, reflectedRay.y.abs(), reflectedRay.z), reflection.radiance, slopeVariance) : reflection.radiance;
+    const underSurface = sceneLight ? sceneLight.throughWater(surfaceFromEye, refracted, below, uniforms.absorption, deepWater) : { radiance: below, edgeFoam: float(0) };
     const caustic = causticBrightness(normal, sky.sunDirection, water.div(air), uniforms.causticPower);
     const sunLight = vec3(...SEA_SUN_COLOR).mul(sky.sunVisibility);
     const glint = sunLight.mul(sunGlint(view, normal, sky.sunDirection, slopeVariance, air, water));
     const crest = crestGlow(view, normal, sky.sunDirection, positionWorld.y, lighting.heightRms, reflectance, sunLight, uniforms.scatterColor);
-    const colour = reflection.radiance.mul(reflectance).add(below.mul(float(1).sub(reflectance))).add(uniforms.causticColor.mul(caustic.mul(sky.sunVisibility))).add(glint).add(crest);
+    const colour = skyAndScene.mul(reflectance).add(underSurface.radiance.mul(float(1).sub(reflectance))).add(uniforms.causticColor.mul(caustic.mul(sky.sunVisibility))).add(glint).add(crest);
     // The foam coverage (ocean.frag): where its pattern shows, read for each pixel; farther, the vertex stage's.
     const foamShown = foamPatternShown(restFootprint(restPerPixelX, restPerPixelY)).toVar();
     const largestUv = uvs[largest];
     const whitecaps = blendedFoam(blendAtFragment, texture(foam.coverage, largestUv).r, texture(foam.coverage, largestUv.add(copyOffset)).r);
     const pixelFoam = onShore ? min(whitecaps.add(onShore.foam), 1) : whitecaps;
-    const foamCoverage = mix(streakedMeanFoam(foamAtVertex, look), streakedFoam(foam.coverage, largestUv, copyOffset, blendAtFragment, largestSize, pixelFoam, look), foamShown).toVar();
+    const foamCoverage = max(mix(streakedMeanFoam(foamAtVertex, look), streakedFoam(foam.coverage, largestUv, copyOffset, blendAtFragment, largestSize, pixelFoam, look), foamShown), underSurface.edgeFoam).toVar();
     // Where the pattern does not show, whole white cells with the coverage's share (foamCells.glsl).
     const far = select(foamShown.lessThan(1), foamCellOpacity(foamCoverage, foamRestPoint, restPerPixelX, restPerPixelY, FOAM_MEAN_BUBBLES), float(0));
     const opacity = select(foamCoverage.greaterThan(FOAM_VISIBLE), foamOpacity(foamCoverage, foamDetail, foamDetailPerPixel, foamShown, far), float(0));

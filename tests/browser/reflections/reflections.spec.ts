@@ -3,6 +3,7 @@ import { writeFileSync } from 'node:fs';
 import { PNG } from 'pngjs';
 import type { Vec3, View } from './reflections';
 import { onePageForFile } from '../shared/sharedPages';
+import { bounds, rayMeetsBox, redderPixels as redder } from '../shared/sceneProofs';
 
 // The scene's objects reflected in the sea (src/render/sceneReflection.ts,
 // shaders/surface/sceneReflection.glsl), drawn at 960×540 in real WebGL2 and read back.
@@ -38,21 +39,7 @@ function save(info: TestInfo, name: string, pixels: Pixels): void {
 
 /** Pixels whose red rose against the other render by more than `threshold` over their green and blue. */
 function redderPixels(scene: Pixels, sky: Pixels, threshold: number): [number, number][] {
-  const found: [number, number][] = [];
-  for (let y = 0; y < H; y++) {
-    for (let x = 0; x < W; x++) {
-      const a = rgb(scene, x, y);
-      const b = rgb(sky, x, y);
-      if (a[0] - b[0] - Math.max(a[1] - b[1], a[2] - b[2], 0) > threshold) found.push([x, y]);
-    }
-  }
-  return found;
-}
-
-function bounds(points: [number, number][]): { left: number; right: number; top: number; bottom: number } {
-  const xs = points.map((p) => p[0]);
-  const ys = points.map((p) => p[1]);
-  return { left: Math.min(...xs), right: Math.max(...xs), top: Math.min(...ys), bottom: Math.max(...ys) };
+  return redder((x, y) => rgb(scene, x, y), (x, y) => rgb(sky, x, y), W, H, threshold);
 }
 
 // No wind: a level sea (the spectrum is 0), the plane mirror of the law of reflection.
@@ -95,25 +82,6 @@ test('a red box above calm water is reflected at its mirror image with scene, no
   // Over an empty scene 'scene' draws exactly what 'sky' draws: the mirror render is transparent.
   expect(Buffer.compare(await render({ ...CALM, hideBox: true }), skyWithoutBox)).toBe(0);
 });
-
-/** The box's faces' planes hit by the ray o + t·d (t > 0), with the box grown by `margin` metres. */
-function rayMeetsBox(o: Vec3, d: Vec3, centre: Vec3, size: Vec3, margin: number): boolean {
-  let near = 0;
-  let far = Infinity;
-  for (let a = 0; a < 3; a++) {
-    const low = centre[a] - size[a] / 2 - margin;
-    const high = centre[a] + size[a] / 2 + margin;
-    if (Math.abs(d[a]) < 1e-12) {
-      if (o[a] < low || o[a] > high) return false;
-      continue;
-    }
-    const t1 = (low - o[a]) / d[a];
-    const t2 = (high - o[a]) / d[a];
-    near = Math.max(near, Math.min(t1, t2));
-    far = Math.min(far, Math.max(t1, t2));
-  }
-  return near <= far;
-}
 
 /** A 4 m box at the waterline of a 20 m/s sea, 30 m ahead of an eye 9 m up. */
 async function roughSea(): Promise<View> {

@@ -4,6 +4,7 @@ import { PNG } from 'pngjs';
 import type { SetupOptions, Vec3 } from './refractions';
 import { ALSO_ON_OLDEST_THREE } from '../shared/threeRange';
 import { onePageForFile } from '../shared/sharedPages';
+import { fresnelReflectance } from '../shared/sceneProofs';
 
 // The scene seen through the water (refractions: 'scene'): a white plate under calm water, drawn
 // without tone mapping in linear RGB, against the optics it should follow. One page and one Ocean
@@ -26,19 +27,6 @@ const SKY_GREY = 200; // the sky's faces, sRGB
  * c ≤ 0.04045 ? c/12.92 : ((c + 0.055)/1.055)^2.4).
  */
 const skyRadiance = ((c) => (c <= 0.04045 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4))(SKY_GREY / 255);
-
-/**
- * Unpolarized Fresnel reflectance from air into water at incidence cos θi (Fresnel equations,
- * Hecht, "Optics", 5th ed., §4.6.2, eqs. 4.42–4.43, with Snell's law n_a·sin θi = n_w·sin θt):
- *   r_s = (cos θi − n·cos θt)/(cos θi + n·cos θt),  r_p = (n·cos θi − cos θt)/(n·cos θi + cos θt),
- *   R = (r_s² + r_p²)/2.
- */
-function fresnelReflectance(cosI: number, n: number): number {
-  const cosT = Math.sqrt(1 - (1 - cosI * cosI) / (n * n));
-  const rs = (cosI - n * cosT) / (cosI + n * cosT);
-  const rp = (n * cosI - cosT) / (n * cosI + cosT);
-  return (rs * rs + rp * rp) / 2;
-}
 
 /**
  * What a pixel over flat water shows with a white plate (radiance 1) `depth` metres under it, seen

@@ -246,8 +246,8 @@ test.describe('three-fft-ocean/webgpu', () => {
     const thrown = await page.evaluate(() => window.webgpuOcean.badInputs());
     expect(thrown[0][0]).toBe('UnsupportedError');
     expect(thrown[0][1]).toContain('WebGPURenderer');
-    expect(thrown[1][0]).toBe('UnsupportedError');
-    expect(thrown[1][1]).toContain('scene reflections');
+    expect(thrown[1][0]).toBe('ParameterError');
+    expect(thrown[1][1]).toContain('reflections');
     expect(thrown[2][0]).toBe('UnsupportedError');
     expect(thrown[2][1]).toContain('GPU FFT');
     expect(thrown[3][0]).toBe('ParameterError');

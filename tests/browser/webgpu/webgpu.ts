@@ -94,7 +94,7 @@ async function drawView(t: number, width = 320, height = 180, { at = [0, 0], alt
 /**
  * The same view of the same sea under the same sun drawn by the WebGL Ocean on a WebGLRenderer, its
  * foam from its JS path as the WebGPU Ocean's, without what the WebGPU Ocean does not draw yet
- * (scene reflections and refractions, which show the sky here anyway; local waves), no tone
+ * (local waves; scene reflections and refractions show the sky here, with no object), no tone
  * mapping as in open(). Only while no WebGPU device lives in the page (see the spec).
  */
 function drawWebGLView(t: number, width: number, height: number, { at = [0, 0], altitude, ...view }: ViewOptions = {}): { width: number; height: number; data: number[] } {
@@ -282,7 +282,7 @@ function badInputs(): [string, string][] {
   const gl = new WebGLRenderer();
   const attempts: (() => unknown)[] = [
     () => new Ocean(gl as never),
-    () => new Ocean(renderer!, { reflections: 'scene' }),
+    () => new Ocean(renderer!, { reflections: 'mirror' as never }),
     () => new Ocean(renderer!, { path: 'gpu' }),
     () => new Ocean(renderer!, { windSpeed: -1 }),
     () => new Ocean(renderer!, { sunElevation: 100 }),
