@@ -2,9 +2,9 @@
  * What an <fft-ocean renderer="webgpu"> holds while it is near the screen: its canvas, a
  * WebGPURenderer (on its WebGL2 backend where the browser has no WebGPU adapter), scene, camera
  * and the Ocean of three-fft-ocean/webgpu, started by src/runtime/webgpuStart.ts (which loads
- * three/webgpu only now). The WebGPU Ocean draws the FFT cascades under a two-colour sky; what it
- * does not draw yet (the options webgpuStart leaves out, and the element's boat, stones, MSAA and
- * the quality levels' grid and cascades) is named in `notDrawn`.
+ * three/webgpu only now). The quality levels apply as with WebGL (applyQuality.ts), but MSAA;
+ * what the WebGPU Ocean does not draw yet (the options webgpuStart leaves out, and the element's
+ * boat and stones) is named in `notDrawn`.
  */
 import { ACESFilmicToneMapping, PerspectiveCamera, Scene } from 'three';
 import type { WebGPURenderer } from 'three/webgpu';
