@@ -16,6 +16,7 @@ import { Scene } from 'three';
 import { FrameLoop } from '../runtime/frameLoop';
 import { AdaptiveQuality } from '../runtime/adaptiveQuality';
 import { applyWebGPUQualityStep } from '../runtime/applyQuality';
+import { fitFarPlane } from '../runtime/farPlane';
 import { startWebGPUOcean, type WebGPUStart } from '../runtime/webgpuStart';
 import { SIMULATION_OPTIONS } from '../parameters/parameters';
 import { appOceanOptions, createAppCamera } from './appView';
@@ -59,7 +60,6 @@ async function start(): Promise<void> {
   const scene = new Scene();
   scene.add(ocean);
   const camera = createAppCamera();
-  camera.far = 1e4; // the WebGPU Ocean's grid ends 20 km out; its sky is drawn at the far plane
   const [x, y, z, yaw, pitch] = state.cam;
   const controls = new FlyControls(camera, canvas, { position: [x, y, z], yaw, pitch });
   const loop = new FrameLoop(new AdaptiveQuality(state.quality, state.targetFps), state);
@@ -88,6 +88,7 @@ async function start(): Promise<void> {
     if (loop.advance(now, state.paused ? 0 : state.timeScale)) applyQuality();
     controls.update(loop.clock.realStep);
     ocean.update(state.t);
+    fitFarPlane(camera, ocean); // out to the grid's far edge (its sky is drawn at the far plane, whatever it is)
     renderer.render(scene, camera);
     framesDrawn++;
     overlay.time.textContent = `t = ${state.t.toFixed(2)} s${state.paused ? ' (paused)' : ''}`;
