@@ -21,11 +21,12 @@ import { OceanSimulation, type PathPreference, type SimulationOptions, type Simu
 import type { LocalWaves } from './layers/localWaves';
 import type { WaveLayer } from './layers/waveLayer';
 import { checkThreeRelease } from './threeRelease';
+import { readSunPosition } from './render/sunPosition';
 import { checkRenderer } from './device/deviceFor';
 import { heightAt, normalAt, velocityAt } from './layers/surfaceQuery';
 import { checkCoordinates, surfaceHeightAt, surfaceHeightsAt, surfaceNormalAt, surfaceVectorsAt, surfaceVelocityAt, warmUpQueries } from './oceanQueries';
 import { SeaStatistics } from './oceanStatistics';
-import { checkOption, checkOptionNames, DisposedError, isOptionsObject, optionAliases } from './parameters/options';
+import { checkOptionNames, DisposedError, isOptionsObject, optionAliases } from './parameters/options';
 import { ParameterError, SIMULATION_OPTIONS, type SimulationParameters } from './parameters/parameters';
 import { DEFAULT_SUN, SHADING_OPTIONS, SUN_OPTIONS, type ShadingChanges, type ShadingOptions } from './parameters/sceneOptions';
 import { createSeabedMap, type Seabed } from './layers/seabed';
@@ -83,7 +84,6 @@ const OCEAN_OPTION_KEYS: readonly string[] = [
   'localWaves',
   'seabed',
 ];
-const SUN_POSITION_KEYS: readonly string[] = ['elevation', 'azimuth', 'direction', 'cloudCover'];
 
 /** What the batch queries write into. */
 export type WritableNumbers = { length: number; [index: number]: number };
@@ -376,12 +376,8 @@ export class Ocean extends Object3D<OceanEventMap> {
   setSun(sun: SunPosition): void;
   setSun(sunOrElevation: SunPosition | number, azimuth?: number): void {
     this.checkAlive('setSun');
-    const current = { elevation: this.sky.sunElevation, azimuth: this.sky.sunAzimuth };
-    const sun = typeof sunOrElevation === 'number' ? { elevation: sunOrElevation, azimuth } : sunOrElevation;
-    checkOptionNames(sun, SUN_POSITION_KEYS, 'setSun', { allowed: '{ elevation, azimuth } (degrees), { direction } or (elevation, azimuth)' });
-    const { elevation, azimuth: angle } = sunAngles(sun, current, 'direction');
-    if (sun.cloudCover !== undefined) checkOption(SUN_OPTIONS, 'cloudCover', sun.cloudCover); // before anything moves
-    this.sky.setSun(elevation, angle);
+    const sun = readSunPosition(sunOrElevation, azimuth, { elevation: this.sky.sunElevation, azimuth: this.sky.sunAzimuth });
+    this.sky.setSun(sun.elevation, sun.azimuth);
     if (sun.cloudCover !== undefined) this.sky.setCloudCover(sun.cloudCover);
   }
 

@@ -1,7 +1,7 @@
 /**
- * The Ocean's queries of the surface (src/layers/surfaceQuery.ts sums the layers): one point, or
+ * The Oceans' queries of the surface (src/layers/surfaceQuery.ts sums the layers): one point, or
  * many points at once into arrays without allocating, with the checks of what is asked; and the
- * once-per-page warm-up of their code. Ocean's methods (src/ocean.ts) call these.
+ * once-per-page warm-up of their code. Ocean's methods (src/ocean.ts, and src/webgpu/ocean.ts's) call these.
  */
 import { Vector3 } from 'three';
 import type { Ocean, WritableNumbers } from './ocean';
@@ -20,6 +20,9 @@ const MAX_COORDINATE = 1e12;
 /** MAX_COORDINATE as the errors say it. */
 const WITHIN_RANGE = 'in metres, at most 1e12 in size';
 
+/** What the queries read of a sea: its layers and parameters (an OceanSimulation, or the WebGPU Ocean's own). */
+export type QueriedSea = Pick<OceanSimulation, 'layers' | 'parameters'>;
+
 /** The batch queries' one vector, reused (nothing is allocated per point). */
 const scratch = { x: 0, y: 0, z: 0 };
 
@@ -30,25 +33,25 @@ let queryCodeWarm = false;
  * Height of the surface at (x, z) at time t (s), shoaled over `shore`'s seabed (null: none); a
  * ParameterError naming `method` for bad coordinates.
  */
-export function surfaceHeightAt(method: string, { layers, parameters }: OceanSimulation, shore: Shore | null, t: number, x: number, z: number): number {
+export function surfaceHeightAt(method: string, { layers, parameters }: QueriedSea, shore: Shore | null, t: number, x: number, z: number): number {
   checkCoordinates(`${method}(x, z)`, x, z);
   return heightAt(layers, parameters.choppiness, t, x, z, shore);
 }
 
 /** Upward unit normal of the surface over (x, z) at time t, in `target`. */
-export function surfaceNormalAt(method: string, { layers, parameters }: OceanSimulation, shore: Shore | null, t: number, x: number, z: number, target: Vector3): Vector3 {
+export function surfaceNormalAt(method: string, { layers, parameters }: QueriedSea, shore: Shore | null, t: number, x: number, z: number, target: Vector3): Vector3 {
   checkCoordinates(`${method}(x, z)`, x, z);
   return normalAt(layers, parameters.choppiness, t, x, z, target, shore);
 }
 
 /** Velocity (m/s) of the surface over (x, z) at time t, in `target`. */
-export function surfaceVelocityAt(method: string, { layers, parameters }: OceanSimulation, shore: Shore | null, t: number, x: number, z: number, target: Vector3): Vector3 {
+export function surfaceVelocityAt(method: string, { layers, parameters }: QueriedSea, shore: Shore | null, t: number, x: number, z: number, target: Vector3): Vector3 {
   checkCoordinates(`${method}(x, z)`, x, z);
   return velocityAt(layers, parameters.choppiness, t, x, z, target, shore);
 }
 
 /** Heights at the points x0, z0, x1, z1, … of `xz`, one per point into `out` (returned). */
-export function surfaceHeightsAt<T extends WritableNumbers>(method: string, { layers, parameters }: OceanSimulation, shore: Shore | null, t: number, xz: ArrayLike<number>, out: T): T {
+export function surfaceHeightsAt<T extends WritableNumbers>(method: string, { layers, parameters }: QueriedSea, shore: Shore | null, t: number, xz: ArrayLike<number>, out: T): T {
   const count = checkBatch(method, xz, out, 1);
   for (let p = 0; p < count; p++) out[p] = heightAt(layers, parameters.choppiness, t, xz[2 * p], xz[2 * p + 1], shore);
   return out;
@@ -58,7 +61,7 @@ export function surfaceHeightsAt<T extends WritableNumbers>(method: string, { la
 export function surfaceVectorsAt<T extends WritableNumbers>(
   method: string,
   query: typeof normalAt,
-  { layers, parameters }: OceanSimulation,
+  { layers, parameters }: QueriedSea,
   shore: Shore | null,
   t: number,
   xz: ArrayLike<number>,

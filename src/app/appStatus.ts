@@ -3,11 +3,11 @@
  * path and why, the frame's CPU times averaged over half a second, the time, the fly speed and the
  * quality level; refreshed at most every 250 ms.
  */
-import type { Ocean } from '../ocean';
+import type { Ocean, OceanPath } from '../ocean';
 import type { SceneOutput } from '../render/sceneOutput';
 import type { FrameLoop } from '../runtime/frameLoop';
 import type { FlyControls } from './flyControls';
-import { describeSeaState, TimingAverager, type StatusOverlay } from './statusOverlay';
+import { describeSeaState, PATH_LABELS, TimingAverager, type StatusOverlay } from './statusOverlay';
 import type { AppState } from './urlState';
 
 export class AppStatus {
@@ -40,4 +40,15 @@ export class AppStatus {
     this.overlay.show(describeSeaState(ocean), ocean.simulation.path, this.averager.latest, time, controls.speed, pathPreference === 'js' ? '' : pathReason, qualityStatus);
     this.lastStatus = rendered;
   }
+}
+
+/**
+ * The status line of the app on WebGPURenderer (appWebGPU.ts): the renderer and its backend (and
+ * why not WebGPU), the FFT that runs (the compute FFT, or the JS FFT in workers or on the main
+ * thread: ocean.path.running) and why not a better one, and the quality level.
+ */
+export function webgpuStatusLine(backend: string, fallback: string | null, path: OceanPath, quality: { level: string; auto: boolean }): string {
+  const fft = path.running.startsWith('gpu') ? 'compute shaders' : path.running === 'js' ? 'JS (main thread)' : PATH_LABELS[path.running];
+  const why = path.reason && path.preference !== 'js' ? ` (${path.reason})` : '';
+  return `WebGPURenderer, ${backend} backend${fallback ? ` (${fallback})` : ''} · three-fft-ocean/webgpu · FFT: ${fft}${why} · quality ${quality.level}${quality.auto ? ' (auto)' : ''}`;
 }

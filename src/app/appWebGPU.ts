@@ -7,19 +7,23 @@
  * The WebGPU Ocean is a first slice: what the URL asks for that it does not draw yet (the sun, the
  * analytic sky, caustics, local waves, …: its notDrawnYet) and the app's parts built on the
  * WebGL Ocean (the panel, the inspector, buoys, the boat, the island, wireframe, a skybox, the
- * quality levels, stones) are turned off, each with a notice, rather than refused. The status line
- * says which renderer and backend draw, and why not WebGPU where it falls back.
+ * stones) are turned off, each with a notice, rather than refused. The quality levels apply as in
+ * the WebGL app (applyQuality.ts), but MSAA. The status line says which renderer and backend draw,
+ * and why not WebGPU where it falls back, which FFT runs (ocean.path) and the quality level.
  */
 import type { PerspectiveCamera } from 'three';
 import { Scene } from 'three';
 import { FrameLoop } from '../runtime/frameLoop';
 import { AdaptiveQuality } from '../runtime/adaptiveQuality';
+import { applyWebGPUQualityStep } from '../runtime/applyQuality';
+import { fitFarPlane } from '../runtime/farPlane';
 import { startWebGPUOcean, type WebGPUStart } from '../runtime/webgpuStart';
 import { SIMULATION_OPTIONS } from '../parameters/parameters';
 import { appOceanOptions, createAppCamera } from './appView';
 import { CONTROLS_HELP, FlyControls } from './flyControls';
 import { StatusOverlay } from './statusOverlay';
-import { DEFAULT_STATE, parseState, type AppState } from './urlState';
+import { webgpuStatusLine } from './appStatus';
+import { DEFAULT_STATE, parseState, simulationParameters, type AppState } from './urlState';
 
 /** The app's parts built on the WebGL Ocean, by the state key that turns each on, and what it is. */
 const WEBGL_ONLY: Partial<Record<keyof AppState, string>> = {
@@ -29,7 +33,6 @@ const WEBGL_ONLY: Partial<Record<keyof AppState, string>> = {
   scene: 'the island',
   wireframe: 'wireframe',
   skybox: 'a skybox',
-  quality: 'the quality levels (the grid and cascades stay at their starting level)',
 };
 
 const container = document.querySelector<HTMLElement>('#app')!;
@@ -53,18 +56,23 @@ async function start(): Promise<void> {
   container.appendChild(canvas);
   const { renderer, ocean, backend, fallback, notDrawn } = await startWebGPUOcean(canvas, asked);
   for (const { name, missing } of notDrawn) overlay.warn(name, `${name}: not drawn with renderer=webgpu yet (${missing}); left out`);
-  const { running, reason } = ocean.path;
-  const fft = running === 'gpu' ? 'compute shaders' : `JS (main thread${reason ? `; ${reason}` : ''})`;
-  overlay.status.textContent = `WebGPURenderer, ${backend} backend${fallback ? ` (${fallback})` : ''} · three-fft-ocean/webgpu · FFT: ${fft}`;
 
   const scene = new Scene();
   scene.add(ocean);
   const camera = createAppCamera();
-  camera.far = 1e4; // the WebGPU Ocean's grid ends 20 km out; its sky is drawn at the far plane
-  renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
   const [x, y, z, yaw, pitch] = state.cam;
   const controls = new FlyControls(camera, canvas, { position: [x, y, z], yaw, pitch });
-  const loop = new FrameLoop(new AdaptiveQuality('high', state.targetFps), state);
+  const loop = new FrameLoop(new AdaptiveQuality(state.quality, state.targetFps), state);
+  const showStatus = (): void => {
+    overlay.status.textContent = webgpuStatusLine(backend, fallback, ocean.path, { level: loop.quality.level, auto: loop.quality.setting === 'auto' });
+  };
+  /** Puts the quality level in force (applyQuality.ts): the pixel ratio, the grid, and the grid and cascades the ocean runs. */
+  const applyQuality = (): void => {
+    applyWebGPUQualityStep({ renderer, ocean, pixelRatio: Math.min(window.devicePixelRatio, 2) }, simulationParameters(state), loop.quality.step);
+    showStatus();
+  };
+  applyQuality();
+  ocean.addEventListener('pathchange', showStatus);
 
   const resize = (): void => {
     renderer.setSize(window.innerWidth, window.innerHeight);
@@ -77,9 +85,10 @@ async function start(): Promise<void> {
 
   let framesDrawn = 0;
   renderer.setAnimationLoop((now: number) => {
-    loop.advance(now, state.paused ? 0 : state.timeScale, false);
+    if (loop.advance(now, state.paused ? 0 : state.timeScale)) applyQuality();
     controls.update(loop.clock.realStep);
     ocean.update(state.t);
+    fitFarPlane(camera, ocean); // out to the grid's far edge (its sky is drawn at the far plane, whatever it is)
     renderer.render(scene, camera);
     framesDrawn++;
     overlay.time.textContent = `t = ${state.t.toFixed(2)} s${state.paused ? ' (paused)' : ''}`;

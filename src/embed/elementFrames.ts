@@ -7,7 +7,7 @@
  */
 import { Vector2 } from 'three';
 import { AdaptiveQuality } from '../runtime/adaptiveQuality';
-import { applyQualityStep } from '../runtime/applyQuality';
+import { applyQualityStep, applyWebGPUQualityStep } from '../runtime/applyQuality';
 import { FrameLoop } from '../runtime/frameLoop';
 import { validateParameters, type SimulationParameters } from '../parameters/parameters';
 import { ELEMENT_DEFAULTS, sunAzimuthOf, type Settings } from './elementAttributes';
@@ -71,12 +71,11 @@ export class ElementFrames {
 
   /**
    * Puts the quality level in force for the simulation `asked`: pixel ratio, MSAA, grid and
-   * cascades (applyQuality.ts); with the WebGPU Ocean, which has no quality levels yet, the
-   * pixel ratio (render scale) alone.
+   * cascades (applyQuality.ts); with the WebGPU Ocean the same but MSAA.
    */
   applyQuality(live: Live | WebGPULive, asked: Readonly<SimulationParameters> = validateParameters(this.host.settings.simulation)): void {
     if (live.kind === 'webgl') applyQualityStep(live, asked, this.loop.quality.step);
-    else live.renderer.setPixelRatio(live.pixelRatio * this.loop.quality.step.renderScale);
+    else applyWebGPUQualityStep(live, asked, this.loop.quality.step);
   }
 
   /** Fits the camera and the drawing buffer to the element's box. */

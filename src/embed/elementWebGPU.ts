@@ -2,9 +2,9 @@
  * What an <fft-ocean renderer="webgpu"> holds while it is near the screen: its canvas, a
  * WebGPURenderer (on its WebGL2 backend where the browser has no WebGPU adapter), scene, camera
  * and the Ocean of three-fft-ocean/webgpu, started by src/runtime/webgpuStart.ts (which loads
- * three/webgpu only now). The WebGPU Ocean draws the FFT cascades under a two-colour sky; what it
- * does not draw yet (the options webgpuStart leaves out, and the element's boat, stones, MSAA and
- * the quality levels' grid and cascades) is named in `notDrawn`.
+ * three/webgpu only now). The quality levels apply as with WebGL (applyQuality.ts), but MSAA;
+ * what the WebGPU Ocean does not draw yet (the options webgpuStart leaves out, and the element's
+ * boat and stones) is named in `notDrawn`.
  */
 import { ACESFilmicToneMapping, PerspectiveCamera, Scene } from 'three';
 import type { WebGPURenderer } from 'three/webgpu';
@@ -12,6 +12,7 @@ import type { Ocean as WebGPUOcean } from '../webgpu/ocean';
 import { startWebGPUOcean, type WebGPUStart } from '../runtime/webgpuStart';
 import type { OceanOptions } from '../ocean';
 import { elementCanvas } from './elementScene';
+import { fitFarPlane } from '../runtime/farPlane';
 
 export interface WebGPULive {
   kind: 'webgpu';
@@ -77,13 +78,13 @@ export function disposeWebGPULive(live: WebGPULive): void {
 }
 
 /**
- * Draws time `t` for the camera `placeCamera` puts: the WebGPU Ocean updated to it, the render.
- * (The WebGL element's frame loop also wraps very long times and fits the far plane to the
- * horizon; the WebGPU Ocean has no repeat period or horizon to fit yet, and the camera's far plane
- * stays at 10 km, where its grid, 20 km across, is cut.)
+ * Draws time `t` for the camera `placeCamera` puts: the WebGPU Ocean updated to it, the far plane
+ * out to its horizon (farPlane.ts), the render. (The WebGL element's frame loop also wraps very
+ * long times by the repeat period; not done here yet.)
  */
 export function drawWebGPU(live: WebGPULive, t: number, placeCamera: (t: number) => void): void {
   placeCamera(t);
   live.ocean.update(t);
+  fitFarPlane(live.camera, live.ocean);
   live.renderer.render(live.scene, live.camera);
 }

@@ -1,6 +1,7 @@
 /**
  * The camera's far plane, out to the horizon the sea reaches: the one rule the app, <fft-ocean>,
- * the shot CLI and the examples use (the first three through the frame loop, frameLoop.ts).
+ * the shot CLI and the examples use (the first three through the frame loop, frameLoop.ts), and
+ * the WebGPU app and element.
  */
 import type { PerspectiveCamera } from 'three';
 import type { Ocean } from '../ocean';
@@ -12,9 +13,9 @@ const FAR_MARGIN = 1.5;
 
 /**
  * The far plane for a camera `cameraHeight` metres above the sea: 1.5 × ocean.horizonDistanceFor
- * that height, at least 10 km.
+ * that height, at least 10 km (`ocean`: the WebGL Ocean or the WebGPU one, src/webgpu/ocean.ts).
  */
-export function farPlaneFor(ocean: Ocean, cameraHeight: number): number {
+export function farPlaneFor(ocean: Pick<Ocean, 'horizonDistanceFor'>, cameraHeight: number): number {
   return Math.max(MIN_FAR, FAR_MARGIN * ocean.horizonDistanceFor(cameraHeight));
 }
 
@@ -22,7 +23,7 @@ export function farPlaneFor(ocean: Ocean, cameraHeight: number): number {
  * Moves `camera`'s far plane out to the horizon the sea reaches from its height (farPlaneFor), and
  * updates its projection. Call it after the camera moved, before the render.
  */
-export function fitFarPlane(camera: PerspectiveCamera, ocean: Ocean): void {
+export function fitFarPlane(camera: PerspectiveCamera, ocean: Pick<Ocean, 'horizonDistanceFor'>): void {
   camera.far = farPlaneFor(ocean, camera.position.y);
   camera.updateProjectionMatrix();
 }

@@ -5,6 +5,8 @@
  * and what not yet. This file only re-exports.
  * @module three-fft-ocean/webgpu
  */
-export { Ocean, type PathPreference, type WebGPUOceanOptions, type WebGPUOceanPath } from './ocean';
+export { Ocean, type WebGPUOceanOptions } from './ocean';
+export type { OceanPath } from '../ocean';
+export type { PathPreference } from '../layers/oceanSimulation';
 export { DisposedError, UnsupportedError } from '../parameters/options';
 export { ParameterError } from '../parameters/parameters';

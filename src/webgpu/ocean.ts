@@ -58,25 +58,23 @@ import { checkCoordinates } from '../oceanQueries';
 import { checkRenderer } from '../device/deviceFor';
 import { Shore } from '../layers/shore';
 import type { Seabed } from '../layers/seabed';
-import { SeaStatistics } from '../oceanStatistics';
 import { seabedMapFor, ShoreNodes } from './shoreNodes';
 import { computePathUnsupported } from '../fft/computeSupport';
 
-/** Which FFT the `path` option asks for. */
-export type PathPreference = 'auto' | 'js' | 'gpu';
-
-/**
- * The FFT path (Ocean.path), as the WebGL Ocean's OceanPath: the preference, the one running
- * ('gpu': compute shaders; 'js': the JS FFT) and, when 'auto' runs the JS FFT, why ('' otherwise).
- */
-export interface WebGPUOceanPath {
-  preference: PathPreference;
-  running: 'gpu' | 'js';
-  reason: string;
-}
 import { SceneLight } from './sceneLightNodes';
 import { addSea, removeSea } from '../render/sceneCapture';
 import type { ReflectionLayers } from '../render/sceneReflection';
+import type { OceanEventMap, OceanPath, SeaStateSummary, SunPosition, WritableNumbers } from '../ocean';
+import type { PathPreference } from '../layers/oceanSimulation';
+import { velocityAt } from '../layers/surfaceQuery';
+import { surfaceHeightsAt, surfaceVectorsAt, surfaceVelocityAt, type QueriedSea } from '../oceanQueries';
+import { SeaStatistics, type StatisticsSource } from '../oceanStatistics';
+import { isOptionsObject } from '../parameters/options';
+import type { ShadingChanges, ShadingOptions } from '../parameters/sceneOptions';
+import { readSunPosition } from '../render/sunPosition';
+import { farEdgeDistance, FEWEST_CELLS_PER_RING } from '../render/horizonGrid';
+import { setSkySun } from './skyNodes';
+import { shadingOf, shadingWith, writeShading } from './seaShading';
 
 export interface WebGPUOceanOptions extends Partial<SimulationParameters> {
   /** Refractive index of water n_w, (1, 3] (ShadingOptions.ior). @defaultValue 1.333 */
@@ -132,22 +130,33 @@ const NOT_YET: Record<string, { drawn: unknown; missing: string }> = {
  * WebGPU backend only.
  */
 export function notDrawnYet(options: object, renderer: WebGPURenderer): { name: string; missing: string }[] {
-  const notDrawn = Object.entries(NOT_YET)
-    .filter(([name, { drawn }]) => {
-      const value = (options as Record<string, unknown>)[name];
-      return value !== undefined && value !== drawn;
-    })
-    .map(([name, { missing }]) => ({ name, missing }));
+  const notDrawn = optionsNotDrawnYet(options);
   if ((options as WebGPUOceanOptions).path === 'gpu' && !isWebGPUBackend(renderer)) {
     notDrawn.push({ name: 'path', missing: "the GPU FFT (path 'gpu') on WebGPURenderer's WebGL2 backend: there the fields come from the JS FFT ('auto' or 'js')" });
   }
   return notDrawn;
 }
 
+/** The options in `options` that ask for what NOT_YET names (notDrawnYet without the renderer's part). */
+function optionsNotDrawnYet(options: object): { name: string; missing: string }[] {
+  return Object.entries(NOT_YET)
+    .filter(([name, { drawn }]) => {
+      const value = (options as Record<string, unknown>)[name];
+      return value !== undefined && value !== drawn;
+    })
+    .map(([name, { missing }]) => ({ name, missing }));
+}
+
+/** Refuses the first of `notDrawn` (notDrawnYet's) with an UnsupportedError naming it. */
+function refuseNotDrawn(notDrawn: { name: string; missing: string }[]): void {
+  const [first] = notDrawn;
+  if (first) throw new UnsupportedError(first.name, `three-fft-ocean/webgpu does not draw ${first.missing} yet; use the WebGL Ocean (three-fft-ocean) for it`);
+}
+
 const SIMULATION_KEYS = Object.keys(SIMULATION_OPTIONS) as (keyof SimulationParameters)[];
 const OPTION_KEYS: readonly string[] = [...SIMULATION_KEYS, 'ior', 'scatterColor', 'absorption', 'causticPower', 'causticColor', 'worker', ...Object.keys(SUN_OPTIONS), 'sunDirection', 'path', 'seabed', 'reflections', 'refractions', ...Object.keys(NOT_YET)];
 
-export class Ocean extends Object3D {
+export class Ocean extends Object3D<OceanEventMap> {
   /** The FFT cascades, finest first (the JS FFT's fields as float textures). */
   private cascades: FftCascade<null>[] = [];
   private currentLayers: readonly WaveLayer[] = [];
@@ -160,7 +169,7 @@ export class Ocean extends Object3D {
   private readonly foamShading = new FoamShading();
   /** The streaks' and spray's values for the current wind (beaufortAppearance.ts). */
   private look!: BeaufortAppearance;
-  private parameters: SimulationParameters;
+  private simulationParameters: SimulationParameters;
   private readonly uniforms: SeaUniforms;
   private readonly useWorker: boolean;
   private readonly renderer: WebGPURenderer;
@@ -181,8 +190,6 @@ export class Ocean extends Object3D {
   private readonly shore = new Shore();
   /** The surface material's shore nodes over the shore's textures of now (shoreNodes.ts); null without a seabed. */
   private shoreNodes: ShoreNodes | null = null;
-  /** The sea's Hs and peak period, for the swash (the WebGL Ocean's statistics). */
-  private readonly statistics = new SeaStatistics(() => ({ cascades: this.cascades, parameters: this.parameters }));
   /** The scene reflected in the sea and seen through it, and their captures (sceneLightNodes.ts). */
   private readonly sceneLight: SceneLight;
   private currentTime = 0;
@@ -194,11 +201,10 @@ export class Ocean extends Object3D {
     this.name = 'OceanWebGPU';
     this.support = floatTextureSupport(renderer);
     checkOptionNames(options, OPTION_KEYS, 'options', { allowed: 'an object of options, such as { windSpeed: 12 }' });
-    const [first] = notDrawnYet(options, renderer);
-    if (first) throw new UnsupportedError(first.name, `three-fft-ocean/webgpu does not draw ${first.missing} yet; use the WebGL Ocean (three-fft-ocean) for it`);
+    refuseNotDrawn(notDrawnYet(options, renderer));
     const simulation: Partial<SimulationParameters> = {};
     for (const key of SIMULATION_KEYS) if (options[key] !== undefined) (simulation as Record<string, unknown>)[key] = options[key];
-    this.parameters = validateParameters(simulation);
+    this.simulationParameters = validateParameters(simulation);
     // Checked before anything is allocated: a bad seabed throws with nothing to free.
     this.shore.setMap(options.seabed === undefined || options.seabed === null ? null : seabedMapFor(options.seabed));
     const ior = options.ior ?? DEFAULT_SHADING.ior;
@@ -228,7 +234,7 @@ export class Ocean extends Object3D {
     const refractions = checkOption(SHADING_OPTIONS, 'refractions', options.refractions ?? DEFAULT_SHADING.refractions).value;
     this.sceneLight = new SceneLight(renderer, { reflections: reflections === 'scene', refractions: refractions === 'scene' });
     this.buildCascades(this.fftChoice(this.parameters));
-    this.cellsPerRing = cellsPerRingForViewport(renderer.getDrawingBufferSize(this.drawingBuffer).y);
+    this.cellsPerRing = cellsPerRingForViewport(renderer.getDrawingBufferSize(this.drawingBuffer).y, this.fewestCellsPerRing);
     this.surface = new Mesh(createHorizonGridGeometry(this.cellsPerRing), this.surfaceMaterial());
     this.surface.name = 'OceanWebGPU surface';
     this.surface.frustumCulled = false; // the grid follows the camera and moves up and down by the waves
@@ -268,12 +274,17 @@ export class Ocean extends Object3D {
   }
 
   /**
-   * The FFT path: the preference (the `path` option), the one running ('gpu', compute shaders, or
-   * 'js') and, when 'auto' runs the JS FFT, why (src/fft/computeSupport.ts), as the WebGL Ocean's.
+   * The FFT path, as the WebGL Ocean's: the preference (the `path` option), the one running and,
+   * when it is not the best the preference asks for, why ('' when it is). Running: 'gpu-rgba32f',
+   * the compute FFT into RGBA32F fields (src/fft/computeSupport.ts says where it runs); 'js-worker',
+   * the JS FFT in Web Workers; 'js', the JS FFT on the main thread (worker: false, or a worker
+   * failed for good: the reason says why).
    */
-  get path(): WebGPUOceanPath {
+  get path(): OceanPath {
     this.checkAlive('path');
-    return { preference: this.pathPreference, running: this.computeFft ? 'gpu' : 'js', reason: this.pathReason };
+    const workerFault = this.cascades.map((cascade) => cascade.workerFault).find((fault) => fault !== null) ?? null;
+    const running = this.computeFft ? 'gpu-rgba32f' : this.useWorker && workerFault === null ? 'js-worker' : 'js';
+    return { preference: this.pathPreference, running, reason: workerFault ?? this.pathReason };
   }
 
   /** The time (s) of the last update. */
@@ -291,6 +302,8 @@ export class Ocean extends Object3D {
     const { choppiness, foamAmount, foamPersistence } = this.parameters;
     this.foam.update(t, { choppiness, calibration: this.calibration, amount: foamAmount, persistence: foamPersistence });
     this.currentTime = this.lastTime = t;
+    this.fitGrid(this.renderer); // as the WebGL Ocean fits its grid at update: a new size or quality level is drawn from this frame
+    this.notePathChange();
   }
 
   /**
@@ -331,6 +344,135 @@ export class Ocean extends Object3D {
     return this.shore.active ? this.shore.depthAt(x, z) : this.parameters.depth;
   }
 
+  // ---- The WebGL Ocean's API (src/ocean.ts), each method documented there; the same shared code answers. ----
+
+  /** The fewest cells a side of each ring of the grid (the WebGL Ocean's surface.fewestCellsPerRing): the quality levels lower it. */
+  fewestCellsPerRing = FEWEST_CELLS_PER_RING;
+  /** The running path at the last update, to tell when it changes (the pathchange event). */
+  private runningPath: OceanPath['running'] | null = null;
+  /** What the shared queries and statistics read: the cascades, their layers and the parameters now. */
+  private readonly sea: QueriedSea & StatisticsSource = ((ocean: Ocean) => ({
+    get layers() {
+      return ocean.currentLayers;
+    },
+    get cascades() {
+      return ocean.cascades;
+    },
+    get parameters() {
+      return ocean.simulationParameters;
+    },
+  }))(this);
+  /** The sea's statistics (the WebGL Ocean's): Hs and the peak period for the swash, heightRms and seaState. */
+  private readonly statistics = new SeaStatistics(() => this.sea);
+
+  /** The simulation parameters in force (Ocean.parameters). */
+  get parameters(): Readonly<SimulationParameters> {
+    this.checkAlive('parameters');
+    return this.simulationParameters;
+  }
+
+  /** RMS of the sea's height over time, m, from the spectra (Ocean.heightRms, oceanStatistics.ts). */
+  get heightRms(): number {
+    this.checkAlive('heightRms');
+    return this.statistics.heightRms;
+  }
+
+  /** Significant wave height and peak period of the parameters' sea (Ocean.seaState). */
+  get seaState(): SeaStateSummary {
+    this.checkAlive('seaState');
+    return this.statistics.seaState;
+  }
+
+  /** Seconds after which the sea repeats exactly (Ocean.repeatPeriod). */
+  get repeatPeriod(): number {
+    this.checkAlive('repeatPeriod');
+    return this.statistics.repeatPeriod;
+  }
+
+  /**
+   * Distance (m) from a camera `cameraHeight` m up to the far edge of the surface drawn into the
+   * renderer's drawing buffer at its current size (Ocean.horizonDistanceFor): the camera's far plane must reach it.
+   */
+  horizonDistanceFor(cameraHeight: number): number {
+    this.checkAlive('horizonDistanceFor');
+    if (typeof cameraHeight !== 'number' || !Number.isFinite(cameraHeight)) throw new ParameterError('cameraHeight', cameraHeight, 'a finite height in metres above the sea');
+    const cells = cellsPerRingForViewport(this.renderer.getDrawingBufferSize(this.drawingBuffer).y, this.fewestCellsPerRing);
+    return farEdgeDistance(cameraHeight, this.currentLayers, cells);
+  }
+
+  /** horizonDistanceFor the camera of the last render (sea level before the first, and after a rebuild until the next render). */
+  get horizonDistance(): number {
+    return this.horizonDistanceFor(this.rings.eyeHeight);
+  }
+
+  /** Velocity (m/s) of the water surface over (x, z) at the last update's time, in `target` (Ocean.velocityAt). */
+  velocityAt(x: number, z: number, target = new Vector3()): Vector3 {
+    this.checkAlive('velocityAt');
+    return surfaceVelocityAt('velocityAt', this.sea, null, this.currentTime, x, z, target);
+  }
+
+  /** heightAt for the points x0, z0, x1, z1, … of `xz`, one per point into `out` (Ocean.heightsAt). Allocates nothing. */
+  heightsAt<T extends WritableNumbers>(xz: ArrayLike<number>, out: T): T {
+    this.checkAlive('heightsAt');
+    return surfaceHeightsAt('heightsAt', this.sea, null, this.currentTime, xz, out);
+  }
+
+  /** normalAt for many points: three numbers per point of `xz` in `out` (Ocean.normalsAt). */
+  normalsAt<T extends WritableNumbers>(xz: ArrayLike<number>, out: T): T {
+    this.checkAlive('normalsAt');
+    return surfaceVectorsAt('normalsAt', normalAt, this.sea, null, this.currentTime, xz, out);
+  }
+
+  /** velocityAt for many points: three numbers (m/s) per point of `xz` in `out` (Ocean.velocitiesAt). */
+  velocitiesAt<T extends WritableNumbers>(xz: ArrayLike<number>, out: T): T {
+    this.checkAlive('velocitiesAt');
+    return surfaceVectorsAt('velocitiesAt', velocityAt, this.sea, null, this.currentTime, xz, out);
+  }
+
+  /** The shading options in use, colours as linear [r, g, b] (Ocean.shading). */
+  get shading(): ShadingOptions {
+    this.checkAlive('shading');
+    return shadingOf(this.uniforms, this.sceneLight.options);
+  }
+
+  /**
+   * Changes shading options as Ocean.setShading does: a bad one throws a ParameterError, a mode not
+   * drawn here yet an UnsupportedError (as the constructor), and nothing changes.
+   */
+  setShading(changes: ShadingChanges): void {
+    this.checkAlive('setShading');
+    if (!isOptionsObject(changes)) throw new ParameterError('setShading', changes, 'an object of shading options, such as { ior: 1.34 }');
+    const drawn = this.sceneLight.options;
+    const next = shadingWith(this.uniforms, drawn, changes);
+    refuseNotDrawn(optionsNotDrawnYet(next));
+    // The captures are made with the Ocean (sceneLightNodes.ts): here they are chosen by the constructor only.
+    for (const name of ['reflections', 'refractions'] as const) {
+      if ((next[name] === 'scene') !== drawn[name]) throw new UnsupportedError(name, `three-fft-ocean/webgpu sets ${name} when the Ocean is made, not by setShading: make a new Ocean with { ${name}: '${next[name]}' }`);
+    }
+    writeShading(this.uniforms, next);
+  }
+
+  /** Moves the sun, or clouds the sky over, as Ocean.setSun: the sky, glint, caustics and foam's light follow. */
+  setSun(elevation: number, azimuth: number): void;
+  setSun(sun: SunPosition): void;
+  setSun(sunOrElevation: SunPosition | number, azimuth?: number): void {
+    this.checkAlive('setSun');
+    const sky = this.uniforms.sky;
+    const sun = readSunPosition(sunOrElevation, azimuth, sky.angles);
+    setSkySun(sky, sun.elevation, sun.azimuth, sun.cloudCover ?? sky.cloudCover.value);
+  }
+
+  /** Dispatches pathchange when the running path changed since the last update (not at the first). */
+  private notePathChange(): void {
+    const { running } = this.path;
+    if (running === this.runningPath) return;
+    const first = this.runningPath === null;
+    this.runningPath = running;
+    if (!first) this.dispatchEvent({ type: 'pathchange', path: this.path });
+  }
+
+  // ---- (end of the WebGL Ocean's API) ----
+
   /** Changes some simulation parameters (a ParameterError names the first bad one and changes nothing). */
   setParameters(changes: Partial<SimulationParameters>): void {
     this.checkAlive('setParameters');
@@ -338,7 +480,7 @@ export class Ocean extends Object3D {
     const choice = this.fftChoice(next); // path 'gpu' at a resolution it cannot run throws here, changing nothing
     // As the WebGL Ocean's simulation: the spectra stay for the parameters only the shading and the foam read.
     const keepSpectra = (Object.keys(next) as (keyof SimulationParameters)[]).every((key) => SHADER_ONLY_PARAMETERS.includes(key) || String(next[key]) === String(this.parameters[key]));
-    this.parameters = next;
+    this.simulationParameters = next;
     this.uniforms.choppiness.value = next.choppiness;
     if (keepSpectra) {
       this.calibration = calibrateFoam(this.covariance, next.choppiness, next.windSpeed);
@@ -406,7 +548,7 @@ export class Ocean extends Object3D {
    * mesh's geometry before its onBeforeRender, so a grid replaced there is drawn from the next frame.
    */
   private fitGrid(renderer: WebGPURenderer): void {
-    const cells = cellsPerRingForViewport(renderer.getDrawingBufferSize(this.drawingBuffer).y);
+    const cells = cellsPerRingForViewport(renderer.getDrawingBufferSize(this.drawingBuffer).y, this.fewestCellsPerRing);
     if (cells === this.cellsPerRing) return;
     this.surface.geometry.dispose();
     this.surface.geometry = createHorizonGridGeometry(cells);

@@ -248,7 +248,8 @@ export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms,
  * Ocean's SkyBackground (background.frag, skyNodes.ts).
  */
 export function skyMaterial(uniforms: SeaUniforms): MeshBasicNodeMaterial {
-  const material = new MeshBasicNodeMaterial({ side: BackSide, depthTest: false, depthWrite: false });
+  // No scene.fog, as the WebGL Ocean's SkyBackground: the fog is the sea's (its material's fog: true, the default).
+  const material = new MeshBasicNodeMaterial({ side: BackSide, depthTest: false, depthWrite: false, fog: false });
   material.name = 'OceanWebGPUSky';
   const direction = positionGeometry;
   material.vertexNode = Fn(() => {

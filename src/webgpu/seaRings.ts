@@ -50,6 +50,11 @@ export class SeaRings {
     this.uvOrigins = uniformArray(Array.from({ length: (RING_COUNT + 1) * layers.length }, () => new Vector2()), 'vec2');
   }
 
+  /** Height of the eye of the last place (0 before the first): the WebGPU Ocean's horizonDistance. */
+  get eyeHeight(): number {
+    return this.eye.y;
+  }
+
   /** Centres the rings under `camera` for a grid of `cellsPerRing` cells a side (before every draw). */
   place(camera: Camera, cellsPerRing: number): void {
     const e = camera.matrixWorld.elements;

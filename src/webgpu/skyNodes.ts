@@ -8,7 +8,7 @@ import { Vector3 } from 'three';
 import type { UniformNode } from 'three/webgpu';
 import { asin, clamp, cos, degrees, distance, exp, float, Fn, log, max, min, mix, pow, select, smoothstep, sqrt, uniform, vec3 } from 'three/tsl';
 import { skyLight } from '../render/daylight';
-import { SKY_DEEP_WATER, SKY_SUN_INTENSITY, sunDirectionFromAngles } from '../render/skyEnvironment';
+import { SKY_DEEP_WATER, SKY_SUN_INTENSITY, sunDirectionFromAngles, type SunAngles } from '../render/skyEnvironment';
 import type { FloatNode, Vec3Node } from './nodeTypes';
 
 /** The analytic sky's uniforms (analyticSky.glsl's sky… uniforms), and the sun's visibility the sea's light needs. */
@@ -25,19 +25,35 @@ export interface SkyUniforms {
   overcastZenith: UniformNode<'float'>;
   /** The direct sunlight the clouds let through (skyCloudSun). */
   cloudSun: UniformNode<'float'>;
+  /** The sun's elevation and azimuth in degrees as last set (setSun keeps the one it is not given). */
+  angles: SunAngles;
 }
 
 /** The uniforms for a sun at these angles (degrees) under this cloud cover, as SkyEnvironment.applySun sets them. */
 export function skyUniforms(elevation: number, azimuth: number, cloudCover: number): SkyUniforms {
-  const light = skyLight(elevation, cloudCover);
-  return {
-    sunDirection: uniform(sunDirectionFromAngles(elevation, azimuth, new Vector3())),
-    daylight: uniform(light.daylight),
-    sunVisibility: uniform(light.sunVisibility),
-    cloudCover: uniform(cloudCover),
-    overcastZenith: uniform(light.overcastZenith),
-    cloudSun: uniform(light.cloudSun),
+  const sky: SkyUniforms = {
+    sunDirection: uniform(new Vector3()),
+    daylight: uniform(0),
+    sunVisibility: uniform(0),
+    cloudCover: uniform(0),
+    overcastZenith: uniform(0),
+    cloudSun: uniform(0),
+    angles: { elevation, azimuth },
   };
+  setSkySun(sky, elevation, azimuth, cloudCover);
+  return sky;
+}
+
+/** Moves `sky`'s sun to these angles (degrees) under this cloud cover (checked by the caller), as SkyEnvironment.applySun does. */
+export function setSkySun(sky: SkyUniforms, elevation: number, azimuth: number, cloudCover: number): void {
+  const light = skyLight(elevation, cloudCover);
+  sunDirectionFromAngles(elevation, azimuth, sky.sunDirection.value);
+  sky.daylight.value = light.daylight;
+  sky.sunVisibility.value = light.sunVisibility;
+  sky.cloudCover.value = cloudCover;
+  sky.overcastZenith.value = light.overcastZenith;
+  sky.cloudSun.value = light.cloudSun;
+  sky.angles = { elevation, azimuth };
 }
 
 // analyticSky.glsl's constants (it cites their sources).

@@ -161,7 +161,13 @@ test('<fft-ocean renderer="webgpu"> holds WebGPURenderer on its WebGPU backend a
 test('without WebGPU, <fft-ocean renderer="webgpu"> draws on the WebGL2 backend and says so; what it does not draw yet is left out with a warning', async ({ page }) => {
   const log = await open(page, '/tests/browser/embed/embed.html', true);
   await expect(page).toHaveTitle('ready');
-  const view = await webgpuElement(page, { 'shading-mode': 'height', boat: '', 'wind-speed': '14' });
+  const view = await webgpuElement(page, { 'shading-mode': 'height', boat: '', 'wind-speed': '14', quality: 'low' });
+  // QUALITY_STEPS.low on the WebGPU Ocean: N at most 64 (asked 64), the two largest cascades, render scale 0.5.
+  const quality = await page.evaluate(() => {
+    const el = document.querySelector('fft-ocean')!;
+    return { cascades: el.webgpuOcean!.parameters.patchSizes.length, pixelRatio: el.webgpuRenderer!.getPixelRatio() / Math.min(devicePixelRatio || 1, 2) };
+  });
+  expect(quality).toEqual({ cascades: 2, pixelRatio: 0.5 });
   expect(view.status.renderer).toBe('webgpu');
   expect(view.status.backend).toBe('WebGL2');
   expect(view.status.fallback).toBe('this browser has no WebGPU (navigator.gpu is undefined)');
@@ -228,18 +234,29 @@ test('a changed renderer attribute makes the renderer again: WebGL to WebGPURend
   expect(log.errors).toEqual([]);
 });
 
-test('the app with ?renderer=webgpu and no WebGPU draws the sea on the WebGL2 backend, says so, and turns off what it cannot draw yet', async ({ page }) => {
+test('the app with ?renderer=webgpu and no WebGPU draws the sea on the WebGL2 backend, says so, turns off what it cannot draw yet, and holds the quality level', async ({ page }) => {
   await page.setViewportSize({ width: 640, height: 360 });
-  const log = await open(page, '/?renderer=webgpu&resolution=64&mode=height&buoys=1&paused=1&t=3', true);
+  const log = await open(page, '/?renderer=webgpu&resolution=64&mode=height&buoys=1&paused=1&t=3&quality=lowest', true);
   await page.waitForFunction(() => (window.oceanAppWebGPU?.framesDrawn ?? 0) >= 2, undefined, { timeout: 60_000 });
   const app = await page.evaluate(() => ({
     backend: window.oceanAppWebGPU.backend,
     notDrawn: window.oceanAppWebGPU.notDrawn.map(({ name }) => name),
     status: document.querySelector('.status-line')!.textContent,
     notices: [...document.querySelectorAll('.notice')].map((notice) => (notice as HTMLElement).dataset.parameter),
+    // QUALITY_STEPS.lowest: render scale 0.3, N at most 32, the two largest cascades, rings of 16 cells at least.
+    quality: {
+      pixelRatio: window.oceanAppWebGPU.renderer.getPixelRatio() / Math.min(devicePixelRatio, 2),
+      resolution: window.oceanAppWebGPU.ocean.parameters.resolution,
+      cascades: window.oceanAppWebGPU.ocean.parameters.patchSizes.length,
+      fewestCellsPerRing: window.oceanAppWebGPU.ocean.fewestCellsPerRing,
+    },
   }));
+  expect(app.quality).toEqual({ pixelRatio: 0.3, resolution: 32, cascades: 2, fewestCellsPerRing: 16 });
   expect(app.backend).toBe('WebGL2');
-  expect(app.status).toBe("WebGPURenderer, WebGL2 backend (this browser has no WebGPU (navigator.gpu is undefined)) · three-fft-ocean/webgpu · FFT: JS (main thread; WebGPURenderer's WebGL2 backend runs no compute shaders)");
+  // The app's JS FFT runs in workers (its worker option's default).
+  expect(app.status).toBe(
+    "WebGPURenderer, WebGL2 backend (this browser has no WebGPU (navigator.gpu is undefined)) · three-fft-ocean/webgpu · FFT: JS in a worker (WebGPURenderer's WebGL2 backend runs no compute shaders) · quality lowest",
+  );
   expect(app.notDrawn).toEqual(['shadingMode']);
   expect(app.notices).toEqual(['buoys', 'shadingMode']);
   await page.screenshot({ path: '.tmp/shells-app-webgl2-backend.png' });
@@ -251,6 +268,8 @@ test('the app with ?renderer=webgpu opens on the WebGPU backend without page err
   const log = await open(page, '/?renderer=webgpu&resolution=64');
   await page.waitForFunction(() => (window.oceanAppWebGPU?.framesDrawn ?? 0) >= 1, undefined, { timeout: 60_000 });
   const app = await page.evaluate(() => ({ backend: window.oceanAppWebGPU.backend, notDrawn: window.oceanAppWebGPU.notDrawn, status: document.querySelector('.status-line')!.textContent }));
-  expect(app).toEqual({ backend: 'WebGPU', notDrawn: [], status: 'WebGPURenderer, WebGPU backend · three-fft-ocean/webgpu · FFT: compute shaders' });
+  // The quality level is 'auto''s, whichever it holds now.
+  expect(app).toMatchObject({ backend: 'WebGPU', notDrawn: [] });
+  expect(app.status).toMatch(/^WebGPURenderer, WebGPU backend · three-fft-ocean\/webgpu · FFT: compute shaders · quality (high|medium|low|lowest) \(auto\)$/);
   expect(log.errors).toEqual([]);
 });

@@ -2,20 +2,42 @@
  * Test page for three-fft-ocean/webgpu: the WebGPU Ocean on a real WebGPURenderer, on its WebGL2
  * backend (forceWebGL) or its WebGPU backend, driven by tests/browser/webgpu/webgpu.spec.ts.
  */
-import { FloatType, NoToneMapping, OrthographicCamera, PerspectiveCamera, RenderTarget, Scene, SRGBColorSpace, type Mesh } from 'three';
+import { Fog, FloatType, NoToneMapping, Vector2, OrthographicCamera, PerspectiveCamera, RenderTarget, Scene, SRGBColorSpace, type Mesh } from 'three';
 import { MeshBasicNodeMaterial, WebGPURenderer } from 'three/webgpu';
 import { positionWorld, vec4 } from 'three/tsl';
-import { Ocean, type WebGPUOceanOptions, type WebGPUOceanPath } from '../../../src/webgpu/index';
-import { Ocean as WebGLOcean } from '../../../src/ocean';
+import { Ocean, type WebGPUOceanOptions } from '../../../src/webgpu/index';
+import { Ocean as WebGLOcean, type OceanPath } from '../../../src/ocean';
 import { finestTexel } from '../../../src/render/horizonGrid';
 import { WebGLRenderer, WebGLRenderTarget } from 'three';
+import { FloatingBody } from '../../../src/layers/floatingBody';
+import { QUALITY_STEPS, type QualityLevel } from '../../../src/runtime/adaptiveQuality';
+import { applyQualityStep, applyWebGPUQualityStep } from '../../../src/runtime/applyQuality';
+import { SceneOutput } from '../../../src/render/sceneOutput';
 
 /** A small sea for quick tests: N = 64, the JS FFT on this thread (the fields are there at once), whitecaps on (the default). */
 const SEA_PARAMETERS = { resolution: 64, windSpeed: 10, seed: 3 };
 const SEA: WebGPUOceanOptions = { ...SEA_PARAMETERS, worker: false };
 
 /** A compared view: where the sun is, the wind, the foam and the seabed (the default's where left out), and the camera's (x, z) (the origin's) and altitude (4 m). */
-type ViewOptions = Pick<WebGPUOceanOptions, 'sunElevation' | 'sunAzimuth' | 'cloudCover' | 'windSpeed' | 'foamAmount' | 'seabed'> & { at?: [number, number]; altitude?: number };
+type ViewOptions = Pick<WebGPUOceanOptions, 'sunElevation' | 'sunAzimuth' | 'cloudCover' | 'windSpeed' | 'foamAmount' | 'resolution' | 'seabed'> & {
+  at?: [number, number];
+  altitude?: number;
+  /** A quality level put in force on the renderer and the ocean (applyQuality.ts): the picture is then the drawing buffer's size. */
+  quality?: QualityLevel;
+  /** three's scene.fog: a linear Fog of this colour (hex), near and far (m). */
+  fog?: [number, number, number];
+};
+
+/**
+ * Puts `quality` in force by `apply` (applyQualityStep or applyWebGPUQualityStep at pixel ratio 1)
+ * on a renderer of width × height: the size of its drawing buffer then, which the picture takes.
+ */
+function sizeAtQuality(target: { setSize(w: number, h: number, style?: boolean): void; getDrawingBufferSize(v: Vector2): Vector2 }, width: number, height: number, apply: () => void): [number, number] {
+  target.setSize(width, height, false);
+  apply();
+  const size = target.getDrawingBufferSize(new Vector2());
+  return [size.x, size.y];
+}
 
 let renderer: WebGPURenderer | null = null;
 
@@ -75,10 +97,14 @@ function pictureTarget<T extends RenderTarget | WebGLRenderTarget>(Target: new (
  * SwiftShader WebGPU lost its device after presenting one frame to a canvas, even of an empty
  * scene, "A valid external Instance reference no longer exists".)
  */
-async function drawView(t: number, width = 320, height = 180, { at = [0, 0], altitude, ...view }: ViewOptions = {}): Promise<{ width: number; height: number; data: number[] }> {
+async function drawView(t: number, pictureWidth = 320, pictureHeight = 180, { at = [0, 0], altitude, quality, fog, ...view }: ViewOptions = {}): Promise<{ width: number; height: number; data: number[] }> {
   const scene = new Scene();
   const ocean = new Ocean(renderer!, { ...SEA, ...view });
   scene.add(ocean);
+  if (fog) scene.fog = new Fog(...fog);
+  const [width, height] = quality
+    ? sizeAtQuality(renderer!, pictureWidth, pictureHeight, () => applyWebGPUQualityStep({ renderer: renderer!, ocean, pixelRatio: 1 }, ocean.parameters, QUALITY_STEPS[quality]))
+    : [pictureWidth, pictureHeight];
   const target = pictureTarget(RenderTarget, width, height);
   ocean.update(t);
   renderer!.setRenderTarget(target);
@@ -87,6 +113,8 @@ async function drawView(t: number, width = 320, height = 180, { at = [0, 0], alt
   const pixels = (await renderer!.readRenderTargetPixelsAsync(target, 0, 0, width, height)) as Uint8Array;
   target.dispose();
   ocean.dispose();
+  renderer!.setPixelRatio(1);
+  renderer!.setSize(320, 180, false);
   const bottomFirst = !(renderer!.backend as { isWebGPUBackend?: boolean }).isWebGPUBackend;
   return { width, height, data: topFirst(pixels, width, height, bottomFirst) };
 }
@@ -97,14 +125,20 @@ async function drawView(t: number, width = 320, height = 180, { at = [0, 0], alt
  * (local waves; scene reflections and refractions show the sky here, with no object), no tone
  * mapping as in open(). Only while no WebGPU device lives in the page (see the spec).
  */
-function drawWebGLView(t: number, width: number, height: number, { at = [0, 0], altitude, ...view }: ViewOptions = {}): { width: number; height: number; data: number[] } {
+function drawWebGLView(t: number, pictureWidth: number, pictureHeight: number, { at = [0, 0], altitude, quality, fog, ...view }: ViewOptions = {}): { width: number; height: number; data: number[] } {
   const gl = new WebGLRenderer({ antialias: false });
   gl.toneMapping = NoToneMapping;
   gl.setPixelRatio(1);
-  gl.setSize(width, height);
+  gl.setSize(pictureWidth, pictureHeight);
   const ocean = new WebGLOcean(gl, { ...SEA_PARAMETERS, path: 'js', worker: false, localWaves: false, reflections: 'sky', refractions: 'sky', ...view });
   const scene = new Scene();
   scene.add(ocean);
+  if (fog) scene.fog = new Fog(...fog);
+  // The level's MSAA is the output's, which this picture does not go through (nor the WebGPU Ocean's: see applyWebGPUQualityStep).
+  const output = new SceneOutput(gl);
+  const [width, height] = quality
+    ? sizeAtQuality(gl, pictureWidth, pictureHeight, () => applyQualityStep({ renderer: gl, output, ocean, pixelRatio: 1 }, ocean.parameters, QUALITY_STEPS[quality]))
+    : [pictureWidth, pictureHeight];
   const camera = viewCamera(...at, altitude);
   const target = pictureTarget(WebGLRenderTarget, width, height);
   ocean.update(t, camera);
@@ -115,6 +149,7 @@ function drawWebGLView(t: number, width: number, height: number, { at = [0, 0], 
   gl.setRenderTarget(null);
   target.dispose();
   ocean.dispose();
+  output.dispose();
   gl.dispose();
   return { width, height, data: topFirst(pixels, width, height, true) };
 }
@@ -222,6 +257,80 @@ function sameQueriesAsWebGL(points: [number, number][], t: number): { webgpu: nu
   return result;
 }
 
+/**
+ * The WebGL Ocean's API asked of both Oceans for the same options and time (the JS path, no local
+ * waves, the sky reflected and refracted), each answer as numbers or words: the parameters, the statistics, the horizon, the
+ * queries one point and many at once, the shading after setShading, the sun after setSun (its
+ * direction in the TSL uniform), what bad calls throw, and the heights of a FloatingBody stepped
+ * on each sea for 4 s from the same start.
+ */
+function sameApiAsWebGL(t: number): { webgpu: Record<string, unknown>; webgl: Record<string, unknown>; events: string[] } {
+  // Reflections and refractions of the sky on both (no scene to capture here): the shading then reads the same.
+  const ocean = new Ocean(renderer!, { ...SEA, reflections: 'sky', refractions: 'sky' });
+  const gl = new WebGLRenderer();
+  gl.setSize(320, 180);
+  const reference = new WebGLOcean(gl, { ...SEA_PARAMETERS, path: 'js', localWaves: false, worker: false, reflections: 'sky', refractions: 'sky' });
+  const events: string[] = [];
+  ocean.addEventListener('pathchange', ({ path }) => events.push(path.running));
+  const xz = [0, 0, 3.3, -7.1, -120, 45.5];
+  const thrown = (call: () => unknown): string => {
+    try {
+      call();
+      return 'none';
+    } catch (error) {
+      return `${(error as Error).name}: ${(error as Error).message}`;
+    }
+  };
+  const answers = (sea: Ocean | WebGLOcean, sunDirection: () => number[]) => {
+    sea.update(t);
+    const body = new FloatingBody({ mass: 800, size: [2, 1, 1.5] });
+    body.position.set(4, 0, -3);
+    body.settle(sea);
+    const heave: number[] = [];
+    for (let step = 1; step <= 240; step++) {
+      sea.update(t + step / 60);
+      body.step(1 / 60, sea);
+      if (step % 30 === 0) heave.push(body.position.y);
+    }
+    sea.update(t);
+    const result = {
+      parameters: sea.parameters,
+      heightRms: sea.heightRms,
+      seaState: sea.seaState,
+      repeatPeriod: sea.repeatPeriod,
+      horizon: [sea.horizonDistanceFor(10), sea.horizonDistanceFor(300), sea.horizonDistance],
+      velocityAt: sea.velocityAt(3.3, -7.1).toArray(),
+      heightsAt: sea.heightsAt(xz, new Float64Array(3)),
+      normalsAt: sea.normalsAt(xz, new Float64Array(9)),
+      velocitiesAt: sea.velocitiesAt(xz, new Float64Array(9)),
+      heave,
+      badCalls: [
+        thrown(() => sea.setShading({ ior: 5 })),
+        thrown(() => sea.setSun({ elevation: 95 })),
+        thrown(() => sea.setSun({ direction: [0, 0, 0] })),
+        thrown(() => sea.setSun({ cloudCover: 2 })),
+        thrown(() => sea.setSun({ elevation: 10, azimuth: 20, direction: [1, 1, 0] })),
+        thrown(() => sea.velocityAt(NaN, 0)),
+        thrown(() => sea.horizonDistanceFor(Infinity)),
+      ],
+      shadingKept: sea.shading,
+    };
+    sea.setShading({ scatterColour: '#0a3040', ior: 1.34, causticPower: 20 });
+    sea.setSun({ elevation: 15 });
+    const afterElevation = sunDirection();
+    sea.setSun(25, -60);
+    sea.setSun({ direction: [1, 2, 3], cloudCover: 0.4 });
+    return { ...result, shading: sea.shading, sun: [...afterElevation, ...sunDirection()] };
+  };
+  const webgpuSky = (ocean as unknown as { uniforms: { sky: { sunDirection: { value: { toArray(): number[] } } } } }).uniforms.sky;
+  const webgpu = answers(ocean, () => webgpuSky.sunDirection.value.toArray());
+  const webgl = answers(reference, () => reference.sky.skyUniforms.skySunDirection.value.toArray());
+  ocean.dispose();
+  reference.dispose();
+  gl.dispose();
+  return { webgpu: JSON.parse(JSON.stringify(webgpu)), webgl: JSON.parse(JSON.stringify(webgl)), events };
+}
+
 /** renderer.info.memory before an Ocean, while it draws, and after its dispose (and a frame after). */
 async function memoryCycle(): Promise<{ before: Record<string, number>; during: Record<string, number>; after: Record<string, number> }> {
   const scene = new Scene();
@@ -247,10 +356,10 @@ async function memoryCycle(): Promise<{ before: Record<string, number>; during: 
  * N = 64; then at N = 1024, beyond the compute FFT's 512: 'auto' made so, and 'auto' and 'gpu'
  * after setParameters asks for it (with what 'gpu' threw, and its resolution after).
  */
-function paths(): { at64: Record<string, WebGPUOceanPath>; at1024: WebGPUOceanPath; autoTo1024: WebGPUOceanPath; gpuTo1024: { thrown: string; resolution: number; path: WebGPUOceanPath } | null } {
+function paths(): { at64: Record<string, OceanPath>; at1024: OceanPath; autoTo1024: OceanPath; gpuTo1024: { thrown: string; resolution: number; path: OceanPath } | null } {
   const isWebGPUBackend = (renderer!.backend as { isWebGPUBackend?: boolean }).isWebGPUBackend === true;
   const asked = isWebGPUBackend ? (['auto', 'js', 'gpu'] as const) : (['auto', 'js'] as const);
-  const pathOf = (options: WebGPUOceanOptions, change?: Partial<WebGPUOceanOptions>): WebGPUOceanPath => {
+  const pathOf = (options: WebGPUOceanOptions, change?: Partial<WebGPUOceanOptions>): OceanPath => {
     const ocean = new Ocean(renderer!, { ...SEA, ...options });
     if (change) ocean.setParameters(change);
     const { path } = ocean;
@@ -302,7 +411,7 @@ function badInputs(): [string, string][] {
   return thrown;
 }
 
-const harness = { open, drawView, drawWebGLView, heightAgreement, sameQueriesAsWebGL, memoryCycle, paths, badInputs };
+const harness = { open, drawView, drawWebGLView, heightAgreement, sameQueriesAsWebGL, sameApiAsWebGL, memoryCycle, paths, badInputs };
 declare global {
   interface Window {
     webgpuOcean: typeof harness;
