@@ -1,14 +1,20 @@
 /**
- * The Ocean's statistics of its sea (src/ocean.ts documents them for users): the height's RMS
+ * The Oceans' statistics of their sea (src/ocean.ts documents them for users; the WebGPU Ocean,
+ * src/webgpu/ocean.ts, shares them): the height's RMS
  * from the spectra, the sea state from the spectrum's moments, and the repeat period; each computed
  * once per set of spectra or parameters, since render loops ask for them every frame.
  */
 import type { SeaStateSummary } from './ocean';
-import type { OceanSimulation } from './layers/oceanSimulation';
 import type { SimulationParameters } from './parameters/parameters';
 import type { InitialSpectrum } from './spectrum/initialSpectrum';
 import { spectralMoments } from './spectrum/seaState';
 import { seaRepeatPeriod } from './spectrum/cascadeBands';
+
+/** What the statistics read of a sea: its cascades' spectra and its parameters (an OceanSimulation, or the WebGPU Ocean's own). */
+export interface StatisticsSource {
+  readonly cascades: readonly { readonly spectrum: InitialSpectrum }[];
+  readonly parameters: Readonly<SimulationParameters>;
+}
 
 export class SeaStatistics {
   private rms: { spectra: readonly InitialSpectrum[]; value: number } | null = null;
@@ -16,7 +22,7 @@ export class SeaStatistics {
   private period: { parameters: Readonly<SimulationParameters>; value: number } | null = null;
 
   /** @param simulation the sea's simulation (asked each time: the Ocean makes it after this) */
-  constructor(private readonly simulation: () => OceanSimulation) {}
+  constructor(private readonly simulation: () => StatisticsSource) {}
 
   /**
    * RMS of the height over time (m): by Parseval the mean of h² over a patch is Σ|h̃(k, t)|², whose

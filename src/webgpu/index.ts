@@ -5,6 +5,7 @@
  * and what not yet. This file only re-exports.
  * @module three-fft-ocean/webgpu
  */
-export { Ocean, type WebGPUOceanOptions } from './ocean';
+export { Ocean, type WebGPUOceanEventMap, type WebGPUOceanOptions } from './ocean';
+export type { DeviceLoss } from './deviceLoss';
 export { DisposedError, UnsupportedError } from '../parameters/options';
 export { ParameterError } from '../parameters/parameters';

@@ -147,12 +147,20 @@ export function crestGlow(view: Vec3Node, normal: Vec3Node, sun: Vec3Node, heigh
 }
 
 /**
+ * absorption.glsl's alongWaterPath: light over a path of `pathLength` metres of water (Beer–Lambert,
+ * per channel), c = c_light·e^{−σL} + c_scatter·(1 − e^{−σL}).
+ */
+export function alongWaterPath(light: Vec3Node, pathLength: FloatNode, absorption: Vec3Node, scatter: Vec3Node): Vec3Node {
+  const transmittance = exp(absorption.mul(pathLength).negate());
+  return light.mul(transmittance).add(scatter.mul(float(1).sub(transmittance)));
+}
+
+/**
  * absorption.glsl's throughWater: what the refracted ray sees, the environment along it through
- * viewDepth metres of water (Beer–Lambert), c = c_light·e^{−σL} + c_scatter·(1 − e^{−σL}).
+ * viewDepth metres of water (alongWaterPath).
  */
 export function throughWater(environment: Vec3Node, refracted: Vec3Node, absorption: Vec3Node, scatter: Vec3Node, viewDepth: number): Vec3Node {
-  const transmittance = exp(absorption.mul(float(viewDepth).div(max(refracted.y.negate(), 0.05))).negate());
-  return environment.mul(transmittance).add(scatter.mul(float(1).sub(transmittance)));
+  return alongWaterPath(environment, float(viewDepth).div(max(refracted.y.negate(), 0.05)), absorption, scatter);
 }
 
 /** caustics.glsl's causticBrightness (Guardado & Sánchez-Crespo, GPU Gems ch. 2): K = (t·l)^p; `eta` is n_w/n_a. */

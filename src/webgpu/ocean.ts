@@ -22,11 +22,15 @@
  * fields and code as the WebGL Ocean's (src/layers/surfaceQuery.ts), so for the same options and
  * time they return the same numbers.
  *
+ * From under the water it draws the surface's underside and the deep water behind it, as the WebGL
+ * Ocean does (underWaterNodes.ts). When the renderer's device is lost it dispatches devicelost,
+ * and update() then throws an UnsupportedError naming the lost device (deviceLoss.ts).
+ *
  * What it does not draw yet throws an UnsupportedError when asked for (NOT_YET). Owns its
  * cascades, foam, textures, geometry and materials; dispose() frees them, after which every method
  * throws a DisposedError.
  */
-import { Mesh, Object3D, SphereGeometry, Vector2, Vector3, type BufferGeometry, type Texture } from 'three';
+import { Mesh, Object3D, SphereGeometry, Vector2, Vector3, type BufferGeometry, type Camera, type Object3DEventMap, type Texture } from 'three';
 import type { MeshBasicNodeMaterial, WebGPURenderer } from 'three/webgpu';
 import { uniform } from 'three/tsl';
 import { CpuFieldTextures, type FloatTextureSupport } from '../fft/cpuFieldTextures';
@@ -50,6 +54,10 @@ import { skyUniforms } from './skyNodes';
 import { seaLightingValues } from '../render/seaLighting';
 import { checkCoordinates } from '../oceanQueries';
 import { checkRenderer } from '../device/deviceFor';
+import { SeaStatistics } from '../oceanStatistics';
+import { surfaceBoundFor } from '../render/seaSurfaceMaterial';
+import { UnderWaterEye } from './underWaterNodes';
+import { deviceLostError, watchDeviceLoss, type DeviceLoss } from './deviceLoss';
 
 export interface WebGPUOceanOptions extends Partial<SimulationParameters> {
   /** Refractive index of water n_w, (1, 3] (ShadingOptions.ior). @defaultValue 1.333 */
@@ -115,7 +123,16 @@ export function notDrawnYet(options: object, renderer: WebGPURenderer): { name: 
 const SIMULATION_KEYS = Object.keys(SIMULATION_OPTIONS) as (keyof SimulationParameters)[];
 const OPTION_KEYS: readonly string[] = [...SIMULATION_KEYS, 'ior', 'scatterColor', 'absorption', 'causticPower', 'causticColor', 'worker', ...Object.keys(SUN_OPTIONS), 'sunDirection', 'path', ...Object.keys(NOT_YET)];
 
-export class Ocean extends Object3D {
+/** What the WebGPU Ocean dispatches (three's addEventListener), beside Object3D's own events. */
+export interface WebGPUOceanEventMap extends Object3DEventMap {
+  /**
+   * The renderer's device was lost (deviceLoss.ts: the WebGPU device, or the WebGL2 backend's
+   * context), once; from then on update() throws an UnsupportedError naming it (ocean.deviceLost).
+   */
+  devicelost: { loss: DeviceLoss };
+}
+
+export class Ocean extends Object3D<WebGPUOceanEventMap> {
   /** The FFT cascades, finest first (the JS FFT's fields as float textures). */
   private cascades: FftCascade<null>[] = [];
   private currentLayers: readonly WaveLayer[] = [];
@@ -144,6 +161,11 @@ export class Ocean extends Object3D {
   private currentTime = 0;
   private lastTime = NaN;
   private disposed = false;
+  /** The height's RMS for the eye's side of the sea (oceanStatistics.ts, as the WebGL Ocean's). */
+  private readonly statistics = new SeaStatistics(() => ({ cascades: this.cascades, parameters: this.parameters }));
+  /** The renderer's device, once lost (then update() throws); stops watching for the loss. */
+  private lostDevice: DeviceLoss | null = null;
+  private readonly unwatchDevice: () => void;
 
   constructor(renderer: WebGPURenderer, options: WebGPUOceanOptions = {}) {
     super();
@@ -174,6 +196,7 @@ export class Ocean extends Object3D {
       causticPower: uniform(causticPower),
       causticColor: uniform(new Vector3(...linearColor('causticColor', options.causticColor, DEFAULT_SHADING.causticColor))),
       sky: skyUniforms(sun.elevation, sun.azimuth, cloudCover),
+      eye: new UnderWaterEye(),
     };
     this.useWorker = options.worker ?? typeof Worker !== 'undefined';
     this.computeFft = computeFftRenderer(renderer, options.path);
@@ -185,6 +208,7 @@ export class Ocean extends Object3D {
     this.surface.onBeforeRender = (drawing, _scene, camera) => {
       this.fitGrid(drawing as unknown as WebGPURenderer);
       this.rings.place(camera, this.cellsPerRing);
+      this.placeEye(camera);
       const eye = camera.matrixWorld.elements;
       this.foamShading.setEye(eye[12], eye[14], this.look);
     };
@@ -192,7 +216,19 @@ export class Ocean extends Object3D {
     this.skyMesh.name = 'OceanWebGPU sky';
     this.skyMesh.frustumCulled = false;
     this.skyMesh.renderOrder = -Infinity; // first, under everything
+    // Drawn before the surface: it takes the eye's side too, so both show the same frame's.
+    this.skyMesh.onBeforeRender = (_drawing, _scene, camera) => this.placeEye(camera);
     this.add(this.skyMesh, this.surface);
+    this.unwatchDevice = watchDeviceLoss(renderer, (loss) => {
+      this.lostDevice = loss;
+      this.dispatchEvent({ type: 'devicelost', loss });
+    });
+  }
+
+  /** The renderer's lost device (why and the browser's message), or null while it lives. */
+  get deviceLost(): DeviceLoss | null {
+    this.checkAlive('deviceLost');
+    return this.lostDevice;
   }
 
   /** Every wave layer (the cascades), in the order the surface and the queries sum them. */
@@ -220,6 +256,7 @@ export class Ocean extends Object3D {
   update(t: number): void {
     this.checkAlive('update');
     if (!Number.isFinite(t)) throw new ParameterError('time', t, 'a finite number of seconds');
+    if (this.lostDevice) throw deviceLostError(this.lostDevice, 'Ocean.update');
     const step = Number.isNaN(this.lastTime) ? 0 : t - this.lastTime;
     for (const cascade of this.cascades) cascade.update(t, step);
     const { choppiness, foamAmount, foamPersistence } = this.parameters;
@@ -266,6 +303,7 @@ export class Ocean extends Object3D {
   /** Frees the cascades (their textures and workers), the grid, the sky and the materials. */
   dispose(): void {
     if (this.disposed) return;
+    this.unwatchDevice();
     this.disposeCascades();
     this.cascades = [];
     this.currentLayers = [];
@@ -276,6 +314,12 @@ export class Ocean extends Object3D {
     this.skyMesh.material.dispose();
     this.removeFromParent();
     this.disposed = true;
+  }
+
+  /** Takes which side of the sea `camera` is on, for the surface and the sky (underWaterNodes.ts). */
+  private placeEye(camera: Camera): void {
+    const { choppiness } = this.parameters;
+    this.uniforms.eye.place(camera, surfaceBoundFor(this.statistics.heightRms), (x, z) => heightAt(this.currentLayers, choppiness, this.currentTime, x, z));
   }
 
   /** The surface's material over the current layers, with new rings for them. */

@@ -11,13 +11,13 @@ import { finestTexel } from '../../../src/render/horizonGrid';
 import { WebGLRenderer, WebGLRenderTarget } from 'three';
 
 /** A small sea for quick tests: N = 64, the JS FFT on this thread (the fields are there at once), whitecaps on (the default). */
-const SEA_PARAMETERS = { resolution: 64, windSpeed: 10, seed: 3 };
-const SEA: WebGPUOceanOptions = { ...SEA_PARAMETERS, worker: false };
+export const SEA_PARAMETERS = { resolution: 64, windSpeed: 10, seed: 3 };
+export const SEA: WebGPUOceanOptions = { ...SEA_PARAMETERS, worker: false };
 
 /** A compared view: where the sun is, the wind and the foam (the default's where left out), and the camera's (x, z) (the origin's) and altitude (4 m). */
 type ViewOptions = Pick<WebGPUOceanOptions, 'sunElevation' | 'sunAzimuth' | 'cloudCover' | 'windSpeed' | 'foamAmount'> & { at?: [number, number]; altitude?: number };
 
-let renderer: WebGPURenderer | null = null;
+export let renderer: WebGPURenderer | null = null;
 
 /**
  * A WebGPURenderer of 320×180 on `backend`, initialized; which backend it got. Asked for WebGPU
@@ -47,7 +47,7 @@ function viewCamera(x = 0, z = 0, altitude = 4): PerspectiveCamera {
 }
 
 /** RGBA rows read back from a target, reordered top first (WebGL's come bottom first, WebGPU's top first). */
-function topFirst(pixels: Uint8Array, width: number, height: number, bottomFirst: boolean): number[] {
+export function topFirst(pixels: Uint8Array, width: number, height: number, bottomFirst: boolean): number[] {
   const data: number[] = [];
   for (let row = 0; row < height; row++) {
     const from = bottomFirst ? height - 1 - row : row;
@@ -57,7 +57,7 @@ function topFirst(pixels: Uint8Array, width: number, height: number, bottomFirst
 }
 
 /** An sRGB 8-bit picture of `width` × `height` pixels: what both Oceans are read back from. */
-function pictureTarget<T extends RenderTarget | WebGLRenderTarget>(Target: new (w: number, h: number) => T, width: number, height: number): T {
+export function pictureTarget<T extends RenderTarget | WebGLRenderTarget>(Target: new (w: number, h: number) => T, width: number, height: number): T {
   const target = new Target(width, height);
   target.texture.colorSpace = SRGBColorSpace;
   return target;
