@@ -30,7 +30,7 @@
  * cascades, foam, textures, geometry and materials; dispose() frees them, after which every method
  * throws a DisposedError.
  */
-import { Mesh, Object3D, SphereGeometry, Vector2, Vector3, type BufferGeometry, type Camera, type Object3DEventMap, type Texture } from 'three';
+import { DoubleSide, FrontSide, Mesh, Object3D, SphereGeometry, Vector2, Vector3, type BufferGeometry, type Camera, type Object3DEventMap, type Texture } from 'three';
 import type { MeshBasicNodeMaterial, WebGPURenderer } from 'three/webgpu';
 import { uniform } from 'three/tsl';
 import { CpuFieldTextures, type FloatTextureSupport } from '../fft/cpuFieldTextures';
@@ -55,7 +55,7 @@ import { seaLightingValues } from '../render/seaLighting';
 import { checkCoordinates } from '../oceanQueries';
 import { checkRenderer } from '../device/deviceFor';
 import { SeaStatistics } from '../oceanStatistics';
-import { surfaceBoundFor } from '../render/seaSurfaceMaterial';
+import { EYE_SIDE, surfaceBoundFor } from '../render/seaSurfaceMaterial';
 import { UnderWaterEye } from './underWaterNodes';
 import { deviceLostError, watchDeviceLoss, type DeviceLoss } from './deviceLoss';
 
@@ -319,7 +319,12 @@ export class Ocean extends Object3D<WebGPUOceanEventMap> {
   /** Takes which side of the sea `camera` is on, for the surface and the sky (underWaterNodes.ts). */
   private placeEye(camera: Camera): void {
     const { choppiness } = this.parameters;
-    this.uniforms.eye.place(camera, surfaceBoundFor(this.statistics.heightRms), (x, z) => heightAt(this.currentLayers, choppiness, this.currentTime, x, z));
+    const eye = this.uniforms.eye;
+    eye.place(camera, surfaceBoundFor(this.statistics.heightRms), (x, z) => heightAt(this.currentLayers, choppiness, this.currentTime, x, z));
+    // From above only the faces turned up are drawn: on the WebGPU backend the backs drawn too put a
+    // line along the horizon that the WebGL Ocean has not (514 pixels beyond 8 levels in the default
+    // view against 34). From below or at the waterline, both (OceanMaterial's DoubleSide).
+    this.surface.material.side = eye.side.value === EYE_SIDE.above ? FrontSide : DoubleSide;
   }
 
   /** The surface's material over the current layers, with new rings for them. */

@@ -122,7 +122,7 @@ function blendWeights(rings: SeaRings, fromEye: Vec2Node): Vec4Node {
  * orderLayers gives them, with the textures they hold now), on the grid `rings` places.
  */
 export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms, lighting: SeaLightingValues, rings: SeaRings, foam: SeaFoam): MeshBasicNodeMaterial {
-  // Both faces, as OceanMaterial: from under the water the grid's triangles show their backs.
+  // Both faces, as OceanMaterial: from under the water the grid's triangles show their backs (the Ocean draws only the fronts from above).
   const material = new MeshBasicNodeMaterial({ side: DoubleSide });
   material.name = 'OceanWebGPU';
   const point = rings.point();

@@ -1,7 +1,7 @@
 import { expect, test, type Page } from '@playwright/test';
-import { mkdirSync, writeFileSync } from 'node:fs';
-import { PNG } from 'pngjs';
+import { mkdirSync } from 'node:fs';
 import { WEBGPU_BROWSER } from '../shared/webgpuBrowser';
+import { pictureDifference, savePicture, type Picture } from './pictureCompare';
 
 // three-fft-ocean/webgpu seen from under the water, against the WebGL Ocean, and after its
 // renderer lost its device; on WebGPURenderer's WebGL2 backend, then on its WebGPU backend
@@ -9,7 +9,6 @@ import { WEBGPU_BROWSER } from '../shared/webgpuBrowser';
 test.use(WEBGPU_BROWSER);
 test.describe.configure({ mode: 'serial' });
 
-type Picture = InstanceType<typeof PNG>;
 interface Pose {
   position: [number, number, number];
   target: [number, number, number];
@@ -30,45 +29,6 @@ test.afterAll(async () => {
   expect(errors).toEqual([]);
   await page.close();
 });
-
-/** An RGBA picture (rows from the top) as a PNG under .tmp/, decoded. */
-function savePicture({ width, height, data }: { width: number; height: number; data: number[] }, name: string): Picture {
-  const png = new PNG({ width, height });
-  png.data.set(data);
-  writeFileSync(`.tmp/${name}.png`, PNG.sync.write(png));
-  return png;
-}
-
-/**
- * How far `a` is from `b`: the mean absolute difference of the RGB levels, the share of pixels
- * whose every channel is within 8 levels, the share whose green and blue are (`greenBlueWithin8`:
- * the WebGL Ocean dithers its background, dither.glsl, by ±1/255 of the linear value an sRGB target
- * then encodes, up to 13 levels in the deep water's red, which is 0, and 1–2 in its green and blue;
- * the WebGPU Ocean's sky is not dithered), and the largest difference; the difference ×8 as a PNG.
- */
-function pictureDifference(a: Picture, b: Picture, name: string): { mean: number; within8: number; greenBlueWithin8: number; worst: number } {
-  const difference = new PNG({ width: a.width, height: a.height });
-  let sum = 0;
-  let within = 0;
-  let greenBlueWithin = 0;
-  let worst = 0;
-  for (let p = 0; p < a.width * a.height; p++) {
-    let largest = 0;
-    for (let c = 0; c < 3; c++) {
-      const d = Math.abs(a.data[4 * p + c] - b.data[4 * p + c]);
-      sum += d;
-      largest = Math.max(largest, d);
-      difference.data[4 * p + c] = Math.min(255, 8 * d);
-    }
-    difference.data[4 * p + 3] = 255;
-    if (largest <= 8) within++;
-    if (Math.abs(a.data[4 * p + 1] - b.data[4 * p + 1]) <= 8 && Math.abs(a.data[4 * p + 2] - b.data[4 * p + 2]) <= 8) greenBlueWithin++;
-    worst = Math.max(worst, largest);
-  }
-  writeFileSync(`.tmp/${name}.png`, PNG.sync.write(difference));
-  const count = a.width * a.height;
-  return { mean: sum / (3 * count), within8: within / count, greenBlueWithin8: greenBlueWithin / count, worst };
-}
 
 /** The share of pixels darker than 4 levels in every channel: black, which neither sky nor water is. */
 function blackShare(png: Picture): number {
@@ -94,7 +54,7 @@ const UNDER_WATER: { name: string; file: string; pose: Pose; meanBound: number; 
   { name: "4 m under, looking up at Snell's window", file: 'up', pose: { position: [0, -4, 0], target: [-8, 6, -3] }, meanBound: 0.3, within8Bound: 0.999 },
   // 4 m under, looking along under the surface: the underside fading into the deep water, and the
   // deep water behind everything below the horizon, where the WebGL Ocean's background is dithered
-  // (pictureDifference): that is the difference.
+  // (pictureDifference in pictureCompare.ts): that is the difference.
   { name: '4 m under, looking along the surface', file: 'along', pose: { position: [0, -4, 0], target: [0, -2, -40] }, meanBound: 1, within8Bound: 0.9 },
 ];
 /**

@@ -8,6 +8,7 @@ import type { WebGPURenderer } from 'three/webgpu';
 import { Ocean } from '../../../src/webgpu/index';
 import { Ocean as WebGLOcean } from '../../../src/ocean';
 import { pictureTarget, renderer, SEA, SEA_PARAMETERS, topFirst } from './webgpu';
+import { snellWindowEdges } from '../shared/snellWindowEdges';
 
 /** An eye: where it is and the point it looks at, world metres. */
 interface Pose {
@@ -97,9 +98,7 @@ function drawWebGLPoses(poses: Pose[], t: number, width: number, height: number)
 /**
  * Snell's window as ocean.spec.ts's snellWindow measures the WebGL Ocean's: a calm sea (no wind)
  * seen straight up from 1 m under it with a 120° lens, linear output without tone mapping, into a
- * 512×512 target. Along the picture's middle row and column, scanning out from the centre, the
- * angle from the zenith of the first pixel that shows only deep water (red 0: scatterColor has
- * none), degrees; and the red at the centre.
+ * 512×512 target. Where the sky's light ends (snellWindowEdges), degrees; the red at the centre.
  */
 async function snellWindow(ior: number): Promise<{ edgeAngles: number[]; centreRed: number; picture: Picture }> {
   const drawing = webgpuRenderer();
@@ -123,18 +122,7 @@ async function snellWindow(ior: number): Promise<{ edgeAngles: number[]; centreR
   target.dispose();
   ocean.dispose();
   const red = (x: number, y: number) => data[4 * (y * size + x)];
-  const centre = size / 2;
-  const toAngle = (pixelsFromCentre: number) => (Math.atan((pixelsFromCentre / centre) * Math.tan(((fov / 2) * Math.PI) / 180)) * 180) / Math.PI;
-  const edgeAngles: number[] = [];
-  for (const [dx, dy] of [[1, 0], [-1, 0], [0, 1], [0, -1]]) {
-    for (let r = 0; r < centre; r++) {
-      if (red(centre + dx * r, centre + dy * r) === 0) {
-        edgeAngles.push(toAngle(r - 0.5)); // the edge lies between this pixel's centre and the last lit one's
-        break;
-      }
-    }
-  }
-  return { edgeAngles, centreRed: red(centre, centre), picture: { width: size, height: size, data } };
+  return { edgeAngles: snellWindowEdges(red, size, fov), centreRed: red(size / 2, size / 2), picture: { width: size, height: size, data } };
 }
 
 /**
