@@ -16,6 +16,7 @@ import { OceanSurface } from './render/oceanSurface';
 import type { ReflectionLayers } from './render/sceneReflection';
 import { OceanMaterial, type OceanShadingOptions } from './render/oceanMaterial';
 import { SkyBackground } from './render/skyBackground';
+import { surfaceBoundFor } from './render/seaSurfaceMaterial';
 import { SkyEnvironment, sunAngles, type SunDirection } from './render/skyEnvironment';
 import { OceanSimulation, type PathPreference, type SimulationOptions, type SimulationPath } from './layers/oceanSimulation';
 import type { LocalWaves } from './layers/localWaves';
@@ -151,14 +152,13 @@ export class Ocean extends Object3D<OceanEventMap> {
     const sim = this.simulation;
     this.surface = new OceanSurface(
       new OceanMaterial({ environment: this.sky.environment, sunDirection: this.sky.skyUniforms.skySunDirection, daylight: this.sky.skyUniforms }, shading),
-      // 6 RMS: a crest that high comes once in ~10⁸ waves (Rayleigh heights); plus the local waves' metre.
       () => ({
         layers: sim.layers,
         choppiness: sim.parameters.choppiness,
         foam: sim.foam.texture,
         windSpeed: sim.parameters.windSpeed,
         windDirection: sim.parameters.windDirection,
-        surfaceBound: 6 * this.heightRms + 1,
+        surfaceBound: surfaceBoundFor(this.heightRms),
         // 1 RMS: a Gaussian surface lies below it at 16 % of points. Deeper, the reflection would
         // hold more of what is under the water, the undersides of objects at the waterline too
         // (docs/shores.md: a box's lone speckles on a 20 m/s sea, 40 here, 82 at 2 and 3 RMS).

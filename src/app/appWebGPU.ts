@@ -93,6 +93,11 @@ async function start(): Promise<void> {
     framesDrawn++;
     overlay.time.textContent = `t = ${state.t.toFixed(2)} s${state.paused ? ' (paused)' : ''}`;
   });
+  // A lost device never comes back (src/webgpu/deviceLoss.ts): stop drawing and say so, rather than throw each frame.
+  ocean.addEventListener('devicelost', ({ loss }) => {
+    renderer.setAnimationLoop(null);
+    overlay.warn('renderer', `the ${loss.api === 'WebGPU' ? 'WebGPU device' : 'WebGL2 context'} was lost (${loss.reason}: ${loss.message}); reload the page to draw again`);
+  });
 
   // For the console and the browser tests: the live objects of this page.
   window.oceanAppWebGPU = {

@@ -9,6 +9,7 @@
 import { ACESFilmicToneMapping, PerspectiveCamera, Scene } from 'three';
 import type { WebGPURenderer } from 'three/webgpu';
 import type { Ocean as WebGPUOcean } from '../webgpu/ocean';
+import type { DeviceLoss } from '../webgpu/deviceLoss';
 import { startWebGPUOcean, type WebGPUStart } from '../runtime/webgpuStart';
 import type { OceanOptions } from '../ocean';
 import { elementCanvas } from './elementScene';
@@ -28,7 +29,10 @@ export interface WebGPULive {
   resizeObserver: ResizeObserver;
   /** Removes every listener createWebGPULive added. */
   removeListeners: () => void;
-  /** Always false: a lost WebGPU device is not waited out yet (the element fails instead). */
+  /**
+   * Whether the renderer's device is lost (the Ocean's devicelost: deviceLoss.ts), which it never
+   * gets back: the element then draws no more with it and makes a new renderer and Ocean.
+   */
   contextLost: boolean;
 }
 
@@ -40,7 +44,7 @@ const ELEMENT_NOT_DRAWN = { boat: 'the boat and its wake (local waves)' } as con
  * the camera. `boat`: whether the element asks for its boat, which is named in notDrawn.
  * Rejects as startWebGPUOcean does (holding nothing).
  */
-export async function createWebGPULive(options: OceanOptions, boat: boolean, events: { activityChanged(): void; resized(): void }): Promise<WebGPULive> {
+export async function createWebGPULive(options: OceanOptions, boat: boolean, events: { activityChanged(): void; resized(): void; deviceLost(loss: DeviceLoss): void }): Promise<WebGPULive> {
   const canvas = elementCanvas();
   // The JS FFT on this thread: the fields of a frame's time are in place when update() returns, so
   // a paused element and renderFrame() show the sea of that time (a worker's fields would arrive a
@@ -52,7 +56,14 @@ export async function createWebGPULive(options: OceanOptions, boat: boolean, eve
   scene.add(ocean);
   const onVisibilityChange = () => events.activityChanged();
   document.addEventListener('visibilitychange', onVisibilityChange);
-  return {
+  // As a lost WebGL context (elementScene.ts): no frames while it is lost; then the element starts afresh.
+  const onDeviceLost = ({ loss }: { loss: DeviceLoss }) => {
+    live.contextLost = true;
+    events.activityChanged();
+    events.deviceLost(loss);
+  };
+  ocean.addEventListener('devicelost', onDeviceLost);
+  const live: WebGPULive = {
     kind: 'webgpu',
     canvas,
     renderer,
@@ -63,8 +74,12 @@ export async function createWebGPULive(options: OceanOptions, boat: boolean, eve
     pixelRatio: Math.min(window.devicePixelRatio || 1, 2),
     resizeObserver: new ResizeObserver(() => events.resized()),
     contextLost: false,
-    removeListeners: () => document.removeEventListener('visibilitychange', onVisibilityChange),
+    removeListeners: () => {
+      document.removeEventListener('visibilitychange', onVisibilityChange);
+      ocean.removeEventListener('devicelost', onDeviceLost);
+    },
   };
+  return live;
 }
 
 /** Frees everything createWebGPULive made: the ocean, the renderer (and its device) and the canvas. */

@@ -47,7 +47,9 @@
  * render, so nothing jumps when it comes back. While it renders, time follows the real time ×
  * time-scale however slow the frames (SimulationClock; a frame over a second late counts as an
  * ordinary one). A lost WebGL context is waited out and the same
- * scene is drawn again at the same time once the browser restores it. Without WebGL 2 the box
+ * scene is drawn again at the same time once the browser restores it; with renderer="webgpu", whose
+ * lost device three.js never restores, the element dispatches fft-ocean-device-lost and makes a new
+ * renderer and ocean at the same time (recoverDevice). Without WebGL 2 the box
  * shows a short message instead of staying blank.
  *
  * Any number of elements can be on one page, although browsers keep only about 16 WebGL contexts
@@ -86,8 +88,18 @@ import { ElementFrames } from './elementFrames';
 import { createLive, disposeLive, showBoat, type Live } from './elementScene';
 import { createWebGPULive, disposeWebGPULive, type WebGPULive } from './elementWebGPU';
 import { showMessage, styleShadowRoot } from './elementStyle';
+import type { DeviceLoss } from '../webgpu/deviceLoss';
 
 export { FFT_OCEAN_ATTRIBUTES, type FftOceanAttribute } from './elementAttributes';
+
+/**
+ * With renderer="webgpu", a lost device is replaced by a new renderer and Ocean this many times in
+ * a row (a loss within RECOVERED_FRAMES frames of the last recovery counts as one more in a row);
+ * the next loss ends in the element's message, rather than replacing devices that keep failing.
+ */
+const DEVICE_RECOVERIES = 3;
+/** Frames drawn after a recovery from which a device counts as working again. */
+const RECOVERED_FRAMES = 60;
 
 // Defined also where there is no DOM (server-side rendering, Node tests), so importing the
 // library there does not throw; the element only works in a browser.
@@ -106,6 +118,8 @@ export class FftOceanElement extends ElementBase {
   private generation = 0;
   /** Whether a WebGPU start is under way (the renderer initializes asynchronously). */
   private starting = false;
+  /** Lost WebGPU devices replaced in a row, and frameCount at the last replacement (recoverDevice). */
+  private deviceRecoveries = { inARow: 0, atFrame: 0 };
   private message: HTMLElement | null = null;
   private readonly proximity = new ContextProximity(this, {
     holds: () => this.live !== null || this.starting,
@@ -257,13 +271,38 @@ export class FftOceanElement extends ElementBase {
     applyAttribute(this.attributeTarget, name as FftOceanAttribute, value);
     // Another renderer, or an option of the WebGPU Ocean (which has no setters for them all yet): made again, at the same time.
     const remake = this.settings.renderer !== renderer || (this.settings.renderer === 'webgpu' && setsOceanOption(name));
-    if (remake && (this.live !== null || this.starting)) {
-      this.stop();
-      this.start();
-    }
+    if (remake && (this.live !== null || this.starting)) this.restart();
   }
 
   // ---- life cycle
+
+  /** Frees the live parts and makes them again with the settings now, at the same simulated time. */
+  private restart(): void {
+    this.stop();
+    this.start();
+  }
+
+  /**
+   * The WebGPU renderer's device was lost (elementWebGPU.ts), which three.js never restores: tells
+   * the page (fft-ocean-device-lost, detail: the DeviceLoss) and draws on with a new renderer and
+   * Ocean on the same settings and time, as a lost WebGL context is waited out; after
+   * DEVICE_RECOVERIES in a row, shows the message instead.
+   */
+  private recoverDevice(loss: DeviceLoss): void {
+    this.dispatchEvent(new CustomEvent('fft-ocean-device-lost', { detail: loss }));
+    const recoveries = this.deviceRecoveries;
+    if (this.frames.framesDrawn - recoveries.atFrame >= RECOVERED_FRAMES) recoveries.inARow = 0;
+    const device = loss.api === 'WebGPU' ? 'WebGPU device' : 'WebGL2 context';
+    if (recoveries.inARow >= DEVICE_RECOVERIES) {
+      this.stop();
+      this.fail(`The ${device} was lost ${DEVICE_RECOVERIES + 1} times in a row; the ocean has stopped.`, loss);
+      return;
+    }
+    recoveries.inARow++;
+    recoveries.atFrame = this.frames.framesDrawn;
+    console.warn(`<fft-ocean renderer="webgpu">: the ${device} was lost (${loss.reason}: ${loss.message}); starting a new renderer and ocean`);
+    this.restart();
+  }
 
   private start(): void {
     this.message?.remove();
@@ -297,6 +336,7 @@ export class FftOceanElement extends ElementBase {
       live = await createWebGPULive(oceanOptionsOf(this.settings, this.frames.loop.quality.step), this.settings.boat, {
         activityChanged: () => this.frames.activityChanged(),
         resized: () => this.frames.resize(),
+        deviceLost: (loss) => this.recoverDevice(loss),
       });
     } catch (error) {
       if (generation !== this.generation) return;

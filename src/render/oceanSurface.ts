@@ -14,13 +14,9 @@ import { ParameterError } from '../parameters/options';
 import { cellsPerRingForViewport, createHorizonGridGeometry, farEdgeDistance, FEWEST_CELLS_PER_RING, MOST_CELLS_PER_RING, RingFrames } from './horizonGrid';
 import { addSea, removeSea } from './sceneCapture';
 import { SceneReflection, type ReflectionLayers } from './sceneReflection';
-import { BACKGROUND_WATER } from './skyBackground';
 import { SceneRefraction } from './sceneRefraction';
 import type { OceanMaterial } from './oceanMaterial';
-import { EYE_SIDE, type EyeSide, type SeaSurfaceMeshMaterial } from './seaSurfaceMaterial';
-
-/** Metres from the surface within which the eye is taken to be at the waterline (about a camera's near distance). */
-const WATERLINE_BAND = 0.5;
+import { backgroundWaterFor, eyeSide, type SeaSurfaceMeshMaterial } from './seaSurfaceMaterial';
 
 /** The fewest cells per ring that can be asked for (OceanSurface.fewestCellsPerRing). */
 const FEWEST_CELLS_ALLOWED = 16;
@@ -187,32 +183,9 @@ export class OceanSurface<M extends SeaSurfaceMeshMaterial = OceanMaterial> exte
     this.material.bindShore(shore ?? null, position.x, position.z);
     this.rings.update(position.x, position.z, position.y, layers, this.cellsPerRing);
     this.material.setRings(this.rings, this.cellsPerRing);
-    const { side, inWater } = this.eyeSide(position, surfaceBound, waterHeightAt);
+    const { side, inWater } = eyeSide(position, surfaceBound, waterHeightAt);
     this.material.setEyeSide(side, inWater);
-    // What the sky background shows (background.frag): under the water, the depths wherever no
-    // surface is drawn; with the eye at the surface, the depths below the horizon only.
-    this.backgroundWater.value =
-      side === EYE_SIDE.below ? BACKGROUND_WATER.everywhere : side === EYE_SIDE.near ? BACKGROUND_WATER.belowHorizon : BACKGROUND_WATER.none;
-  }
-
-  /**
-   * Which side of the sea the eye is on. A ray from an eye in the air meets the surface first from
-   * above, one from an eye in the water first from below, so one test of the eye decides for the
-   * whole picture; only within WATERLINE_BAND of the surface, where the near plane crosses it, each
-   * triangle tells by the side it shows (ocean.frag). The water's height is asked only between the
-   * highest crest and the lowest trough; `inWater` says whether the eye is below the water's
-   * height there (what the farther triangles follow when it is near).
-   */
-  private eyeSide(
-    position: Vector3,
-    surfaceBound: number | undefined,
-    waterHeightAt: ((x: number, z: number) => number) | undefined,
-  ): { side: EyeSide; inWater: boolean } {
-    if (surfaceBound === undefined || position.y > surfaceBound + WATERLINE_BAND) return { side: EYE_SIDE.above, inWater: false };
-    if (position.y < -surfaceBound - WATERLINE_BAND) return { side: EYE_SIDE.below, inWater: true };
-    const above = waterHeightAt === undefined ? 0 : position.y - waterHeightAt(position.x, position.z);
-    const side = above > WATERLINE_BAND ? EYE_SIDE.above : above < -WATERLINE_BAND ? EYE_SIDE.below : EYE_SIDE.near;
-    return { side, inWater: above < 0 };
+    this.backgroundWater.value = backgroundWaterFor(side);
   }
 
   dispose(): void {
@@ -223,3 +196,4 @@ export class OceanSurface<M extends SeaSurfaceMeshMaterial = OceanMaterial> exte
     removeSea(this);
   }
 }
+

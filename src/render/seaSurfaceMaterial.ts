@@ -14,6 +14,21 @@ import type { ShadingChanges, ShadingOptions } from '../parameters/sceneOptions'
 export const EYE_SIDE = { above: 0, below: 1, near: 2 } as const;
 export type EyeSide = (typeof EYE_SIDE)[keyof typeof EYE_SIDE];
 
+/** Where the sky background shows the deep water (the eye under or at the surface) instead of the sky (background.frag's backgroundWater). */
+export const BACKGROUND_WATER = { none: 0, belowHorizon: 1, everywhere: 2 } as const;
+
+/**
+ * No crest rises above this height (m) and no trough sinks below its negative, for a sea of this
+ * RMS height: 6 RMS (a crest that high comes once in ~10⁸ waves, Rayleigh heights) plus the local
+ * waves' metre.
+ */
+export function surfaceBoundFor(heightRms: number): number {
+  return 6 * heightRms + 1;
+}
+
+/** Metres from the surface within which the eye is taken to be at the waterline (about a camera's near distance). */
+const WATERLINE_BAND = 0.5;
+
 /** The rings of the horizon grid as placed around the eye (horizonGrid.ts' RingFrames, which has the layout of each). */
 export interface RingPlacement {
   /** (centre x, centre z relative to the eye, cell size, mip level) per ring. */
@@ -62,3 +77,29 @@ export interface SeaSurfaceMaterial {
 
 /** A SeaSurfaceMaterial that three.js can draw: what OceanSurface takes. */
 export type SeaSurfaceMeshMaterial = Material & SeaSurfaceMaterial;
+
+/**
+ * Which side of the sea the eye at `position` is on (OceanSurface and the WebGPU Ocean ask). A ray
+ * from an eye in the air meets the surface first from above, one from an eye in the water first
+ * from below, so one test of the eye decides for the whole picture; only within WATERLINE_BAND of
+ * the surface, where the near plane crosses it, each triangle tells by the side it shows
+ * (ocean.frag). `surfaceBound`: no crest rises above it and no trough sinks below its negative (m;
+ * without it the eye is taken to be above the sea). The water's height is asked only between the
+ * highest crest and the lowest trough; `inWater` says whether the eye is below the water's height
+ * there (what the farther triangles follow when it is near).
+ */
+export function eyeSide(position: Vector3, surfaceBound: number | undefined, waterHeightAt: ((x: number, z: number) => number) | undefined): { side: EyeSide; inWater: boolean } {
+  if (surfaceBound === undefined || position.y > surfaceBound + WATERLINE_BAND) return { side: EYE_SIDE.above, inWater: false };
+  if (position.y < -surfaceBound - WATERLINE_BAND) return { side: EYE_SIDE.below, inWater: true };
+  const above = waterHeightAt === undefined ? 0 : position.y - waterHeightAt(position.x, position.z);
+  const side = above > WATERLINE_BAND ? EYE_SIDE.above : above < -WATERLINE_BAND ? EYE_SIDE.below : EYE_SIDE.near;
+  return { side, inWater: above < 0 };
+}
+
+/**
+ * What the sky background shows (background.frag) with the eye on `side`: under the water, the
+ * depths wherever no surface is drawn; with the eye at the surface, the depths below the horizon only.
+ */
+export function backgroundWaterFor(side: EyeSide): (typeof BACKGROUND_WATER)[keyof typeof BACKGROUND_WATER] {
+  return side === EYE_SIDE.below ? BACKGROUND_WATER.everywhere : side === EYE_SIDE.near ? BACKGROUND_WATER.belowHorizon : BACKGROUND_WATER.none;
+}

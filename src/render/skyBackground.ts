@@ -12,10 +12,10 @@
  */
 import { BufferGeometry, Float32BufferAttribute, Matrix3, Matrix4, Mesh, ShaderMaterial, UnsignedByteType, Vector3, type Camera, type Scene, type WebGLRenderer } from 'three';
 import { shaderSource } from '../shaderSource';
+import { BACKGROUND_WATER } from './seaSurfaceMaterial';
 import type { SkyEnvironment } from './skyEnvironment';
 
-/** Where the background shows the deep water (the eye under or at the surface) instead of the sky. */
-export const BACKGROUND_WATER = { none: 0, belowHorizon: 1, everywhere: 2 } as const;
+export { BACKGROUND_WATER } from './seaSurfaceMaterial';
 
 /** Drawn after opaque objects with a lower renderOrder (three.js sorts opaque objects by it first). */
 const SKY_RENDER_ORDER = 1000;

@@ -5,7 +5,8 @@
  * and what not yet. This file only re-exports.
  * @module three-fft-ocean/webgpu
  */
-export { Ocean, type WebGPUOceanOptions } from './ocean';
+export { Ocean, type WebGPUOceanEventMap, type WebGPUOceanOptions } from './ocean';
+export type { DeviceLoss } from './deviceLoss';
 export type { OceanPath } from '../ocean';
 export type { PathPreference } from '../layers/oceanSimulation';
 export { DisposedError, UnsupportedError } from '../parameters/options';

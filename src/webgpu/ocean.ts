@@ -27,11 +27,15 @@
  * shoal and break, run up the beach and foam there, by the WebGL Ocean's shore (src/layers/shore.ts)
  * drawn by TSL twins of its GLSL (shoreNodes.ts), and the queries follow the same surface.
  *
+ * From under the water it draws the surface's underside and the deep water behind it, as the WebGL
+ * Ocean does (underWaterNodes.ts). When the renderer's device is lost it dispatches devicelost,
+ * and update() then throws an UnsupportedError naming the lost device (deviceLoss.ts).
+ *
  * What it does not draw yet throws an UnsupportedError when asked for (NOT_YET). Owns its
  * cascades, foam, shore, textures, geometry and materials; dispose() frees them, after which every
  * method throws a DisposedError.
  */
-import { Mesh, Object3D, SphereGeometry, Vector2, Vector3, type BufferGeometry, type Texture } from 'three';
+import { DoubleSide, FrontSide, Mesh, Object3D, SphereGeometry, Vector2, Vector3, type BufferGeometry, type Camera, type Texture } from 'three';
 import type { MeshBasicNodeMaterial, WebGPURenderer } from 'three/webgpu';
 import { uniform } from 'three/tsl';
 import { CpuFieldTextures, type FloatTextureSupport } from '../fft/cpuFieldTextures';
@@ -75,6 +79,9 @@ import { readSunPosition } from '../render/sunPosition';
 import { farEdgeDistance, FEWEST_CELLS_PER_RING } from '../render/horizonGrid';
 import { setSkySun } from './skyNodes';
 import { shadingOf, shadingWith, writeShading } from './seaShading';
+import { EYE_SIDE, surfaceBoundFor } from '../render/seaSurfaceMaterial';
+import { UnderWaterEye } from './underWaterNodes';
+import { deviceLostError, watchDeviceLoss, type DeviceLoss } from './deviceLoss';
 
 export interface WebGPUOceanOptions extends Partial<SimulationParameters> {
   /** Refractive index of water n_w, (1, 3] (ShadingOptions.ior). @defaultValue 1.333 */
@@ -156,7 +163,16 @@ function refuseNotDrawn(notDrawn: { name: string; missing: string }[]): void {
 const SIMULATION_KEYS = Object.keys(SIMULATION_OPTIONS) as (keyof SimulationParameters)[];
 const OPTION_KEYS: readonly string[] = [...SIMULATION_KEYS, 'ior', 'scatterColor', 'absorption', 'causticPower', 'causticColor', 'worker', ...Object.keys(SUN_OPTIONS), 'sunDirection', 'path', 'seabed', 'reflections', 'refractions', ...Object.keys(NOT_YET)];
 
-export class Ocean extends Object3D<OceanEventMap> {
+/** What the WebGPU Ocean dispatches (three's addEventListener): the WebGL Ocean's events, and devicelost. */
+export interface WebGPUOceanEventMap extends OceanEventMap {
+  /**
+   * The renderer's device was lost (deviceLoss.ts: the WebGPU device, or the WebGL2 backend's
+   * context), once; from then on update() throws an UnsupportedError naming it (ocean.deviceLost).
+   */
+  devicelost: { loss: DeviceLoss };
+}
+
+export class Ocean extends Object3D<WebGPUOceanEventMap> {
   /** The FFT cascades, finest first (the JS FFT's fields as float textures). */
   private cascades: FftCascade<null>[] = [];
   private currentLayers: readonly WaveLayer[] = [];
@@ -195,6 +211,9 @@ export class Ocean extends Object3D<OceanEventMap> {
   private currentTime = 0;
   private lastTime = NaN;
   private disposed = false;
+  /** The renderer's device, once lost (then update() throws); stops watching for the loss. */
+  private lostDevice: DeviceLoss | null = null;
+  private readonly unwatchDevice: () => void;
 
   constructor(renderer: WebGPURenderer, options: WebGPUOceanOptions = {}) {
     super();
@@ -226,6 +245,7 @@ export class Ocean extends Object3D<OceanEventMap> {
       causticPower: uniform(causticPower),
       causticColor: uniform(new Vector3(...linearColor('causticColor', options.causticColor, DEFAULT_SHADING.causticColor))),
       sky: skyUniforms(sun.elevation, sun.azimuth, cloudCover),
+      eye: new UnderWaterEye(),
     };
     this.useWorker = options.worker ?? typeof Worker !== 'undefined';
     this.renderer = renderer;
@@ -241,6 +261,7 @@ export class Ocean extends Object3D<OceanEventMap> {
     this.surface.onBeforeRender = (drawing, _scene, camera) => {
       this.fitGrid(drawing as unknown as WebGPURenderer);
       this.rings.place(camera, this.cellsPerRing);
+      this.placeEye(camera);
       const eye = camera.matrixWorld.elements;
       this.foamShading.setEye(eye[12], eye[14], this.look);
       if (this.shoreNodes) this.placeShore(eye[12], eye[14]);
@@ -249,12 +270,20 @@ export class Ocean extends Object3D<OceanEventMap> {
     this.skyMesh.name = 'OceanWebGPU sky';
     this.skyMesh.frustumCulled = false;
     this.skyMesh.renderOrder = -Infinity; // first, under everything
-    // The captures of the scene the sea shows (sceneLightNodes.ts), before the sky: first in the
-    // render, before any object of it is drawn.
-    this.skyMesh.onBeforeRender = (drawing, scene, camera) => this.sceneLight.capture(drawing as unknown as WebGPURenderer, scene, camera);
+    // Before the sky, first in the render: the eye's side of the sea (the surface takes it too, so
+    // both show the same frame's), then the captures of the scene the sea shows (sceneLightNodes.ts),
+    // before any object of it is drawn.
+    this.skyMesh.onBeforeRender = (drawing, scene, camera) => {
+      this.placeEye(camera);
+      this.sceneLight.capture(drawing as unknown as WebGPURenderer, scene, camera);
+    };
     this.add(this.skyMesh, this.surface);
     // Every capture (this sea's and any other's) leaves this sea and its sky out (sceneCapture.ts).
     addSea(this, [this]);
+    this.unwatchDevice = watchDeviceLoss(renderer, (loss) => {
+      this.lostDevice = loss;
+      this.dispatchEvent({ type: 'devicelost', loss });
+    });
   }
 
   /**
@@ -265,6 +294,12 @@ export class Ocean extends Object3D<OceanEventMap> {
   get reflectionLayers(): ReflectionLayers {
     this.checkAlive('reflectionLayers');
     return this.sceneLight.reflection.layers;
+  }
+
+  /** The renderer's lost device (why and the browser's message), or null while it lives. */
+  get deviceLost(): DeviceLoss | null {
+    this.checkAlive('deviceLost');
+    return this.lostDevice;
   }
 
   /** Every wave layer (the cascades), in the order the surface and the queries sum them. */
@@ -297,6 +332,7 @@ export class Ocean extends Object3D<OceanEventMap> {
   update(t: number): void {
     this.checkAlive('update');
     if (!Number.isFinite(t)) throw new ParameterError('time', t, 'a finite number of seconds');
+    if (this.lostDevice) throw deviceLostError(this.lostDevice, 'Ocean.update');
     const step = Number.isNaN(this.lastTime) ? 0 : t - this.lastTime;
     for (const cascade of this.cascades) cascade.update(t, step);
     const { choppiness, foamAmount, foamPersistence } = this.parameters;
@@ -494,6 +530,7 @@ export class Ocean extends Object3D<OceanEventMap> {
   /** Frees the cascades (their textures and workers), the grid, the sky and the materials. */
   dispose(): void {
     if (this.disposed) return;
+    this.unwatchDevice();
     this.disposeCascades();
     this.cascades = [];
     this.currentLayers = [];
@@ -508,6 +545,24 @@ export class Ocean extends Object3D<OceanEventMap> {
     this.shoreNodes = null;
     this.removeFromParent();
     this.disposed = true;
+  }
+
+  /** Takes which side of the sea `camera` is on, for the surface and the sky (underWaterNodes.ts). */
+  private placeEye(camera: Camera): void {
+    const { choppiness } = this.parameters;
+    const eye = this.uniforms.eye;
+    eye.place(camera, surfaceBoundFor(this.statistics.heightRms), (x, z) => heightAt(this.currentLayers, choppiness, this.currentTime, x, z));
+    // From above only the faces turned up are drawn: on the WebGPU backend the backs drawn too put a
+    // line along the horizon that the WebGL Ocean has not (514 pixels beyond 8 levels in the default
+    // view against 34). From below or at the waterline, both (OceanMaterial's DoubleSide).
+    this.surface.material.side = eye.side.value === EYE_SIDE.above ? FrontSide : DoubleSide;
+    // scene.fog falls on the sea seen from above only: ocean.frag returns before its fog where it shades
+    // the underside. Here the whole material follows the eye (made again when the eye crosses).
+    const fogged = eye.side.value !== EYE_SIDE.below;
+    if (this.surface.material.fog !== fogged) {
+      this.surface.material.fog = fogged;
+      this.surface.material.needsUpdate = true;
+    }
   }
 
   /** The surface's material over the current layers and seabed, with new rings for them. */

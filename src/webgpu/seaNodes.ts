@@ -14,7 +14,7 @@
  *             whitecap foam over it, its streaks and the spray (foamNodes.ts, twins of foam.glsl,
  *             foamCells.glsl, foamStreaks.glsl and spray.glsl)
  */
-import { BackSide, type Texture } from 'three';
+import { BackSide, DoubleSide, type Texture } from 'three';
 import { MeshBasicNodeMaterial, type UniformNode } from 'three/webgpu';
 import {
   abs,
@@ -30,6 +30,7 @@ import {
   Fn,
   float,
   fwidth,
+  If,
   max,
   min,
   mix,
@@ -55,6 +56,7 @@ import { analyticSkyRadiance, type SkyUniforms } from './skyNodes';
 import { causticBrightness, crestGlow, facingEye, filteredSkyReflection, footprintLevel, subPixelSlopeVariance, sunGlint, throughWater } from './lightNodes';
 import type { FloatNode, Vec2Node, Vec3Node, Vec4Node } from './nodeTypes';
 import type { SceneLight } from './sceneLightNodes';
+import { backgroundRadiance, seenFromBelow, surfaceFromBelow, type UnderWaterEye } from './underWaterNodes';
 import type { BeaufortAppearance } from '../render/beaufortAppearance';
 import type { ShoreNodes } from './shoreNodes';
 import {
@@ -89,6 +91,8 @@ export interface SeaUniforms {
   causticColor: UniformNode<'vec3'>;
   /** The analytic sky and its sun (skyNodes.ts). */
   sky: SkyUniforms;
+  /** Where the eye is against the sea: the surface's underside and the deep water behind it (underWaterNodes.ts). */
+  eye: UnderWaterEye;
 }
 
 /** The whitecap foam the surface draws. */
@@ -124,7 +128,8 @@ function blendWeights(rings: SeaRings, fromEye: Vec2Node): Vec4Node {
  * `sceneLight`, the scene's objects reflected in it and seen through it (sceneLightNodes.ts).
  */
 export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms, lighting: SeaLightingValues, rings: SeaRings, foam: SeaFoam, shore: ShoreNodes | null = null, sceneLight: SceneLight | null = null): MeshBasicNodeMaterial {
-  const material = new MeshBasicNodeMaterial();
+  // Both faces, as OceanMaterial: from under the water the grid's triangles show their backs (the Ocean draws only the fronts from above).
+  const material = new MeshBasicNodeMaterial({ side: DoubleSide });
   material.name = 'OceanWebGPU';
   const point = rings.point();
   const largest = layers.length - 1;
@@ -206,7 +211,8 @@ export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms,
     const alongX = vec3(stretch.x.add(1), slopes.x, crossDerivative);
     const alongZ = vec3(crossDerivative, slopes.y, stretch.y.add(1));
     const view = normalize(positionWorld.sub(cameraPosition));
-    const normal = facingEye(view, normalize(cross(alongZ, alongX))).toVar();
+    const upwardNormal = normalize(cross(alongZ, alongX)).toVar();
+    const normal = facingEye(view, upwardNormal).toVar();
     const [air, water] = [float(1), uniforms.ior];
     const sky = uniforms.sky;
     const skyRadiance = (direction: Vec3Node) => analyticSkyRadiance(sky, direction);
@@ -237,7 +243,12 @@ export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms,
     const opacity = select(foamCoverage.greaterThan(FOAM_VISIBLE), foamOpacity(foamCoverage, foamDetail, foamDetailPerPixel, foamShown, far), float(0));
     const foamed = mix(colour, foamRadiance(normal, sky.sunDirection, sunLight, skyRadiance(normal)), clamp(opacity, 0, 1));
     const fromEye = positionWorld.sub(cameraPosition);
-    return throughSpray(foamed, fromEye, positionWorld.y, lighting.heightRms, skyRadiance(normalize(vec3(view.x, 0, view.z))), look);
+    const seen = throughSpray(foamed, fromEye, positionWorld.y, lighting.heightRms, skyRadiance(normalize(vec3(view.x, 0, view.z))), look).toVar();
+    // Seen from below (ocean.frag's eyeSide test): the underside alone (fromBelow.glsl), shaded only there.
+    If(seenFromBelow(uniforms.eye, fromEye).greaterThan(0.5), () => {
+      seen.assign(surfaceFromBelow(view, upwardNormal, fromEye, air, water, uniforms.absorption, deepWater, skyRadiance));
+    });
+    return seen;
   })();
   return material;
 }
@@ -257,8 +268,8 @@ export function skyMaterial(uniforms: SeaUniforms): MeshBasicNodeMaterial {
     // Just inside the far plane: z = w would be clipped by rounding.
     return vec4(clip.x, clip.y, clip.w.mul(0.99999), clip.w);
   })();
-  // background.frag with backgroundWater 'none', as the WebGL Ocean draws it for an eye above the
-  // waves: the environment in every direction (the eye at or under the surface is not drawn here yet).
-  material.colorNode = analyticSkyRadiance(uniforms.sky, normalize(varying(direction)));
+  // background.frag: the environment in every direction, or the deep water where the eye's side puts water (underWaterNodes.ts).
+  const deepWater = uniforms.scatterColor.mul(uniforms.sky.daylight);
+  material.colorNode = backgroundRadiance(uniforms.eye, normalize(varying(direction)), deepWater, (d) => analyticSkyRadiance(uniforms.sky, d));
   return material;
 }

@@ -23,6 +23,7 @@ import { EffectComposer } from 'three/addons/postprocessing/EffectComposer.js';
 import { OutputPass } from 'three/addons/postprocessing/OutputPass.js';
 import { RenderPass } from 'three/addons/postprocessing/RenderPass.js';
 import { Ocean } from '../../../src/ocean';
+import { snellWindowEdges } from '../shared/snellWindowEdges';
 import type { SimulationParameters } from '../../../src/parameters/parameters';
 import { camera, current, height, pixel, render, renderer, scene, setup, view, width } from './oceanPage';
 
@@ -93,9 +94,7 @@ export function foamBrightened(parameters: Partial<SimulationParameters>, t: num
 
 /**
  * Snell's window: a calm sea seen straight up from 1 m under it with a 120° lens, under a
- * uniform sky, linear output. Returns, along the picture's middle row and column, the angles from
- * the zenith where the sky's light ends (scanning out from the centre, the first pixel that shows
- * only deep water: red 0, as scatterColor has none), in degrees.
+ * uniform sky, linear output. Returns where the sky's light ends (snellWindowEdges), in degrees.
  */
 export function snellWindow(ior: number): { edgeAngles: number[]; centreRed: number } {
   current.surfaceBound = 0.5;
@@ -117,18 +116,8 @@ export function snellWindow(ior: number): { edgeAngles: number[]; centreRed: num
   gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
   current.surfaceBound = undefined;
   const red = (x: number, y: number) => pixels[4 * (y * width + x)];
-  const centre = width / 2;
-  const toAngle = (pixelsFromCentre: number) => (Math.atan((pixelsFromCentre / (height / 2)) * Math.tan(((fov / 2) * Math.PI) / 180)) * 180) / Math.PI;
-  const edgeAngles: number[] = [];
-  for (const [dx, dy] of [[1, 0], [-1, 0], [0, 1], [0, -1]]) {
-    for (let r = 0; r < centre; r++) {
-      if (red(centre + dx * r, centre + dy * r) === 0) {
-        edgeAngles.push(toAngle(r - 0.5)); // the edge lies between this pixel's centre and the last lit one's
-        break;
-      }
-    }
-  }
-  return { edgeAngles, centreRed: red(centre, centre) };
+  // The page is square here (ocean.spec.ts opens it 512×512).
+  return { edgeAngles: snellWindowEdges(red, width, fov), centreRed: red(width / 2, height / 2) };
 }
 
 /**

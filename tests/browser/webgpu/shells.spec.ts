@@ -85,8 +85,7 @@ function picture(width: number, height: number, data: number[], name: string): I
  * (../shared/BROWSER.md), so on the WebGPU backend the picture comes from a target alone.
  */
 async function webgpuElement(page: Page, extra: Record<string, string> = {}, belowTheFold = false): Promise<{ status: RendererStatus; width: number; height: number; data: number[]; framesDrawn: number }> {
-  return page.evaluate(async ({ extra, belowTheFold }) => {
-    const { RenderTarget, SRGBColorSpace } = window.embed;
+  const { status, framesDrawn } = await page.evaluate(async ({ extra, belowTheFold }) => {
     if (belowTheFold) {
       const spacer = document.createElement('div');
       spacer.style.height = `${innerHeight + 20}px`;
@@ -98,14 +97,26 @@ async function webgpuElement(page: Page, extra: Record<string, string> = {}, bel
       el.addEventListener('fft-ocean-renderer', (event) => resolve((event as CustomEvent<RendererStatus>).detail));
       el.addEventListener('fft-ocean-error', (event) => reject(new Error((event as CustomEvent<{ message: string }>).detail.message)));
     });
-    if (belowTheFold) {
+    if (!belowTheFold) await window.embed.drawn(el, 1);
+    return { status, framesDrawn: el.frameCount };
+  }, { extra, belowTheFold });
+  return { status, framesDrawn, ...(await elementView(page, belowTheFold)) };
+}
+
+/**
+ * The view of the page's <fft-ocean renderer="webgpu"> drawn by its renderer into an 8-bit sRGB
+ * target and read back, rows from the top; `placeCamera`: first 8 m up looking at the horizon,
+ * the Ocean updated to the element's time (an element below the fold draws nothing itself).
+ */
+async function elementView(page: Page, placeCamera: boolean): Promise<{ width: number; height: number; data: number[] }> {
+  return page.evaluate(async (placeCamera) => {
+    const { RenderTarget, SRGBColorSpace } = window.embed;
+    const el = document.querySelector('fft-ocean')!;
+    if (placeCamera) {
       el.camera!.position.set(0, 8, 0);
       el.camera!.lookAt(0, 6, -100);
-      el.webgpuOcean!.update(3);
-    } else {
-      await window.embed.drawn(el, 1);
+      el.webgpuOcean!.update(el.time);
     }
-    const framesDrawn = el.frameCount;
     const renderer = el.webgpuRenderer!;
     const [width, height] = [el.canvas!.width, el.canvas!.height];
     const target = new RenderTarget(width, height);
@@ -115,14 +126,14 @@ async function webgpuElement(page: Page, extra: Record<string, string> = {}, bel
     renderer.setRenderTarget(null);
     const pixels = (await renderer.readRenderTargetPixelsAsync(target, 0, 0, width, height)) as Uint8Array;
     target.dispose();
-    const bottomFirst = status.backend === 'WebGL2'; // WebGL's rows come bottom first
+    const bottomFirst = el.rendererStatus!.backend === 'WebGL2'; // WebGL's rows come bottom first
     const data: number[] = [];
     for (let row = 0; row < height; row++) {
       const from = 4 * width * (bottomFirst ? height - 1 - row : row);
       data.push(...pixels.subarray(from, from + 4 * width));
     }
-    return { status, width, height, data, framesDrawn };
-  }, { extra, belowTheFold });
+    return { width, height, data };
+  }, placeCamera);
 }
 
 /** Removes every element from the page; whether the last one's ocean and renderer were freed. */
@@ -157,6 +168,54 @@ test('<fft-ocean renderer="webgpu"> holds WebGPURenderer on its WebGPU backend a
   expect(freed).toEqual({ oceanDisposed: true, canvasGone: true, heldAfter: false, deviceLost: 'destroyed' });
   expect(log.errors).toEqual([]);
 });
+
+for (const backend of ['WebGPU', 'WebGL2'] as const) {
+  test(`<fft-ocean renderer="webgpu"> on the ${backend} backend whose device is lost says so, makes a new renderer and Ocean at the same time, and draws sky over waves again`, async ({ page }) => {
+    const log = await open(page, '/tests/browser/embed/embed.html', backend === 'WebGL2');
+    await expect(page).toHaveTitle('ready');
+    // Below the fold on the WebGPU backend: headless, a WebGPU canvas loses its device once a frame is presented (../shared/BROWSER.md).
+    const first = await webgpuElement(page, {}, backend === 'WebGPU');
+    expect(first.status.backend).toBe(backend);
+    const recovery = await page.evaluate(async () => {
+      const el = document.querySelector('fft-ocean')!;
+      const [renderer, ocean, canvas] = [el.webgpuRenderer!, el.webgpuOcean!, el.canvas!];
+      const lost = new Promise((resolve) => el.addEventListener('fft-ocean-device-lost', (event) => resolve((event as CustomEvent).detail), { once: true }));
+      const restarted = new Promise<RendererStatus>((resolve) => el.addEventListener('fft-ocean-renderer', (event) => resolve((event as CustomEvent<RendererStatus>).detail), { once: true }));
+      const backend = renderer.backend as { isWebGPUBackend?: boolean; device?: GPUDevice };
+      // What a browser does to a device it drops: here by hand (the WebGPU backend: destroy(); WebGL2: WEBGL_lose_context).
+      if (backend.isWebGPUBackend) backend.device!.destroy();
+      else (renderer.getContext() as WebGL2RenderingContext).getExtension('WEBGL_lose_context')!.loseContext();
+      const loss = await lost;
+      const status = await restarted;
+      let oldOceanDisposed = false;
+      try {
+        void ocean.time;
+      } catch (error) {
+        oldOceanDisposed = (error as Error).name === 'DisposedError';
+      }
+      return {
+        loss,
+        status,
+        newRenderer: el.webgpuRenderer !== null && el.webgpuRenderer !== renderer,
+        newOcean: el.webgpuOcean !== null && el.webgpuOcean !== ocean,
+        oldOceanDisposed,
+        oldCanvasGone: !canvas.isConnected,
+        canvases: el.shadowRoot!.querySelectorAll('canvas').length,
+        time: el.time,
+        message: el.shadowRoot!.textContent,
+      };
+    });
+    console.log(`element, ${backend} backend, device lost: ${JSON.stringify(recovery)}`);
+    expect(recovery).toMatchObject({ status: { renderer: 'webgpu', backend }, newRenderer: true, newOcean: true, oldOceanDisposed: true, oldCanvasGone: true, canvases: 1, time: 3 });
+    expect(recovery.loss).toMatchObject(backend === 'WebGPU' ? { api: 'WebGPU', reason: 'destroyed' } : { api: 'WebGL2', reason: 'context lost' });
+    expect(log.warnings.filter((text) => text.includes('was lost'))).toHaveLength(1);
+    const again = await elementView(page, backend === 'WebGPU');
+    expectSkyOverWaves(picture(again.width, again.height, again.data, `shells-element-recovered-${backend}`), `element, ${backend} backend, after a lost device`);
+    const freed = await removeElement(page);
+    expect(freed).toMatchObject({ oceanDisposed: true, canvasGone: true, heldAfter: false });
+    expect(log.errors).toEqual([]);
+  });
+}
 
 test('without WebGPU, <fft-ocean renderer="webgpu"> draws on the WebGL2 backend and says so; what it does not draw yet is left out with a warning', async ({ page }) => {
   const log = await open(page, '/tests/browser/embed/embed.html', true);

@@ -2,9 +2,7 @@ import { expect, test, type Page } from '@playwright/test';
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { PNG } from 'pngjs';
 import { WEBGPU_BROWSER } from '../shared/webgpuBrowser';
-
-/** A decoded picture. */
-type Picture = InstanceType<typeof PNG>;
+import { pictureDifference, savePicture, type Picture } from './pictureCompare';
 
 // three-fft-ocean/webgpu on a real WebGPURenderer: its WebGL2 backend (forceWebGL, SwiftShader's
 // WebGL2) and its WebGPU backend (SwiftShader's WebGPU adapter, which Chromium gives localhost
@@ -59,41 +57,6 @@ function changed(a: Picture, b: Picture, from: number, to: number): number {
     }
   }
   return count / ((to - from) * a.width);
-}
-
-/** Writes an RGBA picture { width, height, data } as a PNG under .tmp/ and returns it decoded. */
-function savePicture({ width, height, data }: { width: number; height: number; data: number[] }, name: string): Picture {
-  const png = new PNG({ width, height });
-  png.data.set(data);
-  writeFileSync(`.tmp/${name}.png`, PNG.sync.write(png));
-  return png;
-}
-
-/**
- * How far picture `a` is from `b`: the mean absolute difference of the RGB levels, the share of
- * pixels whose every channel is within 8 levels (and the number beyond), and the largest difference; also writes the
- * difference (|a − b| × 8, so a 32-level miss is white) as a PNG.
- */
-function pictureDifference(a: Picture, b: Picture, name: string, fromRow = 0, toRow = a.height): { mean: number; within8: number; beyond8: number; worst: number } {
-  const difference = new PNG({ width: a.width, height: a.height });
-  let sum = 0;
-  let within = 0;
-  let worst = 0;
-  for (let p = fromRow * a.width; p < toRow * a.width; p++) {
-    let largest = 0;
-    for (let c = 0; c < 3; c++) {
-      const d = Math.abs(a.data[4 * p + c] - b.data[4 * p + c]);
-      sum += d;
-      largest = Math.max(largest, d);
-      difference.data[4 * p + c] = Math.min(255, 8 * d);
-    }
-    difference.data[4 * p + 3] = 255;
-    if (largest <= 8) within++;
-    worst = Math.max(worst, largest);
-  }
-  writeFileSync(`.tmp/${name}.png`, PNG.sync.write(difference));
-  const count = (toRow - fromRow) * a.width;
-  return { mean: sum / (3 * count), within8: within / count, beyond8: count - within, worst };
 }
 
 /** The WebGL Ocean's pictures of the compared views, drawn on the WebGL2 backend's page before any WebGPU device lives. */

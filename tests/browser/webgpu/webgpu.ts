@@ -15,8 +15,8 @@ import { applyQualityStep, applyWebGPUQualityStep } from '../../../src/runtime/a
 import { SceneOutput } from '../../../src/render/sceneOutput';
 
 /** A small sea for quick tests: N = 64, the JS FFT on this thread (the fields are there at once), whitecaps on (the default). */
-const SEA_PARAMETERS = { resolution: 64, windSpeed: 10, seed: 3 };
-const SEA: WebGPUOceanOptions = { ...SEA_PARAMETERS, worker: false };
+export const SEA_PARAMETERS = { resolution: 64, windSpeed: 10, seed: 3 };
+export const SEA: WebGPUOceanOptions = { ...SEA_PARAMETERS, worker: false };
 
 /** A compared view: where the sun is, the wind, the foam and the seabed (the default's where left out), and the camera's (x, z) (the origin's) and altitude (4 m). */
 type ViewOptions = Pick<WebGPUOceanOptions, 'sunElevation' | 'sunAzimuth' | 'cloudCover' | 'windSpeed' | 'foamAmount' | 'resolution' | 'seabed'> & {
@@ -39,7 +39,7 @@ function sizeAtQuality(target: { setSize(w: number, h: number, style?: boolean):
   return [size.x, size.y];
 }
 
-let renderer: WebGPURenderer | null = null;
+export let renderer: WebGPURenderer | null = null;
 
 /** The renderer open() made, for the pages that build on this one (shore.ts). */
 export function openedRenderer(): WebGPURenderer {
@@ -75,7 +75,7 @@ function viewCamera(x = 0, z = 0, altitude = 4): PerspectiveCamera {
 }
 
 /** RGBA rows read back from a target, reordered top first (WebGL's come bottom first, WebGPU's top first). */
-function topFirst(pixels: Uint8Array, width: number, height: number, bottomFirst: boolean): number[] {
+export function topFirst(pixels: Uint8Array, width: number, height: number, bottomFirst: boolean): number[] {
   const data: number[] = [];
   for (let row = 0; row < height; row++) {
     const from = bottomFirst ? height - 1 - row : row;
@@ -85,7 +85,7 @@ function topFirst(pixels: Uint8Array, width: number, height: number, bottomFirst
 }
 
 /** An sRGB 8-bit picture of `width` × `height` pixels: what both Oceans are read back from. */
-function pictureTarget<T extends RenderTarget | WebGLRenderTarget>(Target: new (w: number, h: number) => T, width: number, height: number): T {
+export function pictureTarget<T extends RenderTarget | WebGLRenderTarget>(Target: new (w: number, h: number) => T, width: number, height: number): T {
   const target = new Target(width, height);
   target.texture.colorSpace = SRGBColorSpace;
   return target;
