@@ -283,8 +283,8 @@ test.describe('from altitude no tiling is visible', () => {
   // normal (0.387, and the 79.3 m patch showed instead, 0.729), fading every cascade's slopes into
   // σ² by the footprint (0.534, and a flat 45° view) and four copies with fixed offsets (0.527) did
   // not remove it. Offsets that change stripe by stripe (patchBlend.ts) make x and x + L of other
-  // places of the patch: R = 0.171 at 457 m, largest 0.328 off the centre (SwiftShader, seed of the
-  // default sea; the ramp along 27°, near the lattice vector (2, 1), gave 0.664 at lag (L, −2L)).
+  // places of the patch: R = 0.183 at 457 m, largest 0.347 off the centre (SwiftShader, the default
+  // sea; the ramp along 27°, near the lattice vector (2, 1), gave 0.664 at lag (L, −2L)).
   const groups: [string, View[]][] = [
     ['1 km up, straight down', [{ name: '1 km up, straight down', height: 1000, pitch: 90 }]],
     ['4 km up, straight down', [{ name: '4 km up, straight down', height: 4000, pitch: 90 }]],
