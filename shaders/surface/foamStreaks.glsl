@@ -23,14 +23,14 @@ vec2 streakPatternPoint(vec2 rest) {
 }
 
 // The coverage with streaks, where the foam field (over the largest layer's patch, `patchSize` m,
-// read at its two blended copies, uv + o_A and uv + o_B, waveLayers.glsl) is `foam` at the point.
-float streakedFoam(sampler2D field, vec2 uv, PatchCopies copies, float patchSize, float foam) {
+// read at uv and at its blended copy's uv + copyOffset, waveLayers.glsl) is `foam` at the point.
+float streakedFoam(sampler2D field, vec2 uv, vec2 blend, float patchSize, float foam) {
   if (streakShare <= 0.0) return foam;  // uniform: below force 7 no pixel pays for the taps
   vec2 upwind = -windAlong * streakLength / (float(STREAK_TAPS) * patchSize);
   float drawn = 0.0;
   for (int i = 0; i < STREAK_TAPS; i++) {
     vec2 at = uv + (float(i) + 0.5) * upwind;
-    drawn += blendedFoam(copies.weights.xy, texture(field, at + copies.offsets.xy).r, texture(field, at + copies.offsets.zw).r);
+    drawn += blendedFoam(blend, texture(field, at).r, texture(field, at + copyOffset).r);
   }
   return mix(foam, (1.0 + streakGain) * drawn / float(STREAK_TAPS), streakShare);
 }

@@ -59,7 +59,8 @@ uniform bool eyeInWater;
 
 varying vec2 vLayerUv[LAYER_COUNT];
 varying float vCrossDerivative;  // λ·Σ ∂Dx/∂z, see ocean.vert
-varying vec2 vBlendSlope;        // the slope the largest layer's blend weights add, see ocean.vert
+varying vec2 vBlend;             // the largest layer's two copies' weights, see ocean.vert
+varying vec2 vBlendSlope;
 varying float vFoam;             // foam coverage, see ocean.vert
 #ifdef HULL_FOAM_LAYER
 uniform sampler2D tHullFoam;     // the hulls' foam coverage in .r (src/layers/hullFoam.ts), over layer HULL_FOAM_LAYER's grid
@@ -92,12 +93,6 @@ void main() {
   vec2 foamRestPoint = streakPatternPoint(vRestFromEye) + foamPatternOrigin;
   vec2 foamDetail = foamPattern(foamRestPoint);
   float foamDetailPerPixel = fwidth(foamDetail.x);
-  // The largest layer's two copies here (src/layers/patchBlend.ts), and its texture coordinates'
-  // change to the next pixel: a copy's offset jumps where its weight is zero, and reading it with
-  // these gradients keeps the mip level the pixel's footprint asks for across the jump.
-  PatchCopies copies = patchCopies(vRestFromEye);
-  vec2 largestUv = vLayerUv[LAYER_COUNT - 1];
-  vec2 largestUvPerPixelX = dFdx(largestUv), largestUvPerPixelY = dFdy(largestUv);
 #ifdef CAPTURE_POSITIONS
   // Geometry test: the displaced position with the foam the shore adds there (0 without a seabed), or
   // the rest point with its mip level and ring (from the eye).
@@ -124,16 +119,16 @@ void main() {
 #endif
   }
   #pragma unroll_loop_end
-  // The largest layer, blended from its two copies.
-  vec4 largestDerivatives =
-      copies.weights.x * textureGrad(tLayerDerivatives[LAYER_COUNT - 1], largestUv + copies.offsets.xy, largestUvPerPixelX, largestUvPerPixelY) +
-      copies.weights.y * textureGrad(tLayerDerivatives[LAYER_COUNT - 1], largestUv + copies.offsets.zw, largestUvPerPixelX, largestUvPerPixelY);
+  // The largest layer, blended from its two copies (src/layers/patchBlend.ts).
+  vec2 largestUv = vLayerUv[LAYER_COUNT - 1];
 #ifdef SEABED
   // Each layer shoals by its factor and the height's slopes follow the breaking limit (shoaling.glsl).
-  derivatives += vShoaling[LAYER_COUNT - 1] * largestDerivatives;
+  derivatives += vShoaling[LAYER_COUNT - 1] * (vBlend.x * texture(tLayerDerivatives[LAYER_COUNT - 1], largestUv) +
+                                               vBlend.y * texture(tLayerDerivatives[LAYER_COUNT - 1], largestUv + copyOffset));
   derivatives.xy = (derivatives.xy + vBlendSlope) * vBreakingSlope;
 #else
-  derivatives += largestDerivatives;
+  derivatives += vBlend.x * texture(tLayerDerivatives[LAYER_COUNT - 1], largestUv) +
+                 vBlend.y * texture(tLayerDerivatives[LAYER_COUNT - 1], largestUv + copyOffset);
   derivatives.xy += vBlendSlope;
 #endif
   derivatives.zw *= choppiness;
@@ -198,12 +193,11 @@ void main() {
   // patch in a triangle's straight edge); farther, the vertex stage's, at the vertex's mip level.
   float footprint = restFootprint(restPerPixelX, restPerPixelY);
   float foamShown = foamPatternShown(footprint);
-  float pixelFoam = blendedFoam(copies.weights.xy, textureGrad(tFoam, largestUv + copies.offsets.xy, largestUvPerPixelX, largestUvPerPixelY).r,
-                                textureGrad(tFoam, largestUv + copies.offsets.zw, largestUvPerPixelX, largestUvPerPixelY).r);
+  float pixelFoam = blendedFoam(vBlend, texture(tFoam, largestUv).r, texture(tFoam, largestUv + copyOffset).r);
 #ifdef SEABED
   pixelFoam = min(pixelFoam + vShoreFoam, 1.0);
 #endif
-  pixelFoam = streakedFoam(tFoam, largestUv, copies, layerSizes[LAYER_COUNT - 1], pixelFoam);
+  pixelFoam = streakedFoam(tFoam, largestUv, vBlend, layerSizes[LAYER_COUNT - 1], pixelFoam);
   float foamCoverage = mix(streakedMeanFoam(vFoam), pixelFoam, foamShown);
 #ifdef HULL_FOAM_LAYER
   // The foam of hulls under way (src/layers/hullFoam.ts), over the local waves' grid, joined to the

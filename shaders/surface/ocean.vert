@@ -26,10 +26,10 @@ varying vec2 vLayerUv[LAYER_COUNT];  // each layer's coordinates of the rest poi
 // texture per layer instead of two. It is a second-order correction of the normal; its value at
 // the vertex's mip level is all the detail it needs.
 varying float vCrossDerivative;
-// The part of the height's slope that comes from the change of the blend's weights (cos φ, sin φ),
-// (−sin φ·h_A + cos φ·h_B)·∇φ (h_A, h_B the two copies' heights): it varies over hundreds of metres
-// and is interpolated (∇φ is zero where a copy's offset changes, patchBlend.ts). The fragment stage
-// takes the weights and offsets themselves at its own rest point.
+// The blend's weights (cos θ, sin θ), and the part of the height's slope that comes from their
+// change, (−sin θ·h1 + cos θ·h2)·∇θ (h1, h2 the two copies' heights): both vary over hundreds of
+// metres and are interpolated.
+varying vec2 vBlend;
 varying vec2 vBlendSlope;
 // The foam coverage, per vertex at the vertex's mip level, for the far sea (the fragment stage
 // takes its own where the foam's pattern shows, ocean.frag): far away a pixel spans metres and
@@ -61,8 +61,7 @@ uniform float captureHeight;
 
 void main() {
   GridPoint point = horizonGridPoint();
-  PatchCopies copies = patchCopies(point.fromEye);
-  vec4 blend = copies.weights;
+  vec4 blend = blendWeights(point.fromEye);
   vec4 displacement = vec4(0.0);
 #ifdef SEABED
   float depth = seabedAt(point.fromEye).x;
@@ -74,34 +73,29 @@ void main() {
     vLayerUv[ i ] = ringLayerUvOrigins[point.frameRing * LAYER_COUNT + UNROLLED_LOOP_INDEX] + point.fromCentre / layerSizes[ i ];
 #ifdef SEABED
     vShoaling[ i ] = shoalingFactor(UNROLLED_LOOP_INDEX, depth);
-#endif
-    // The largest layer, last, is added below as its two copies.
-    if (UNROLLED_LOOP_INDEX < LAYER_COUNT - 1) {
-#ifdef SEABED
-      layerDisplacement = textureLod(tLayerDisplacement[ i ], vLayerUv[ i ], point.lod + layerLodBias[ i ]);
-      displacement += vShoaling[ i ] * layerDisplacement;
-      deepHeight += layerDisplacement.y;
+    layerDisplacement = textureLod(tLayerDisplacement[ i ], vLayerUv[ i ], point.lod + layerLodBias[ i ]);
+    displacement += vShoaling[ i ] * layerDisplacement;
+    deepHeight += layerDisplacement.y;
 #else
-      displacement += textureLod(tLayerDisplacement[ i ], vLayerUv[ i ], point.lod + layerLodBias[ i ]);
+    displacement += textureLod(tLayerDisplacement[ i ], vLayerUv[ i ], point.lod + layerLodBias[ i ]);
 #endif
-    }
   }
   #pragma unroll_loop_end
-  // The largest layer: cos φ·P(x + o_A) + sin φ·P(x + o_B).
+  // The largest layer went in once with weight 1: make it cos θ·P(x) + sin θ·P(x + o).
   float largestLod = point.lod + layerLodBias[LAYER_COUNT - 1];
-  vec2 largestUv = vLayerUv[LAYER_COUNT - 1];
-  vec4 first = textureLod(tLayerDisplacement[LAYER_COUNT - 1], largestUv + copies.offsets.xy, largestLod);
-  vec4 copy = textureLod(tLayerDisplacement[LAYER_COUNT - 1], largestUv + copies.offsets.zw, largestLod);
+  vec4 first = textureLod(tLayerDisplacement[LAYER_COUNT - 1], vLayerUv[LAYER_COUNT - 1], largestLod);
+  vec4 copy = textureLod(tLayerDisplacement[LAYER_COUNT - 1], vLayerUv[LAYER_COUNT - 1] + copyOffset, largestLod);
 #ifdef SEABED
   // The largest layer's copies, and their blend's slope, shoal with it.
   float largestShoaling = vShoaling[LAYER_COUNT - 1];
-  displacement += largestShoaling * (blend.x * first + blend.y * copy);
-  deepHeight += blend.x * first.y + blend.y * copy.y;
+  displacement += largestShoaling * ((blend.x - 1.0) * first + blend.y * copy);
+  deepHeight += (blend.x - 1.0) * first.y + blend.y * copy.y;
 #else
-  displacement += blend.x * first + blend.y * copy;
+  displacement += (blend.x - 1.0) * first + blend.y * copy;
 #endif
-  vFoam = blendedFoam(blend.xy, textureLod(tFoam, largestUv + copies.offsets.xy, largestLod).r,
-                      textureLod(tFoam, largestUv + copies.offsets.zw, largestLod).r);
+  vBlend = blend.xy;
+  vFoam = blendedFoam(blend.xy, textureLod(tFoam, vLayerUv[LAYER_COUNT - 1], largestLod).r,
+                      textureLod(tFoam, vLayerUv[LAYER_COUNT - 1] + copyOffset, largestLod).r);
   vBlendSlope = (blend.x * copy.y - blend.y * first.y) * blend.zw;
 #ifdef SEABED
   vBlendSlope *= largestShoaling;

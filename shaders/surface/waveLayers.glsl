@@ -15,39 +15,26 @@ uniform float choppiness;                           // λ
 uniform sampler2D tFoam;
 
 // The largest cascade is drawn twice and blended (src/layers/patchBlend.ts says why and fills
-// these): cos φ·P(x + o_A) + sin φ·P(x + o_B), φ = ψ − sin(4ψ)/4, ψ(x) = κ·x + ψ0 + Σ a_j·sin(k_j·x + φ_j),
-// each copy's offset constant between the lines where its weight is zero. patchBlend[j] = (kx, kz,
-// φ, a) for j < 3 with the phase φ_j at the eye (the origin of the positions here, see
-// horizonGrid.glsl), patchBlend[3] = (κx, κz, ψ0, 0), patchBlend[4].xy = the offsets' origin.
-uniform vec4 patchBlend[5];
-// The R2 sequence's step (Roberts 2018), patchBlend.ts's R2_STEP: offset n is frac(origin + n·step).
-#define COPY_OFFSET_STEP vec2(0.7548776662466927, 0.5698402909980532)
+// these): cos θ·P(x) + sin θ·P(x + o), θ(x) = Σ a_j·sin(k_j·x + φ_j), patchBlend[j] = (kx, kz, φ, a)
+// with the phase φ_j at the eye (the origin of the positions here, see horizonGrid.glsl), copyOffset
+// = o in the largest layer's texture coordinates.
+uniform vec4 patchBlend[3];
+uniform vec2 copyOffset;
 
-// The two copies at the rest point `fromEye` (metres from the eye): weights = (cos φ, sin φ, ∇φ),
-// offsets = (o_A, o_B) in the largest layer's texture coordinates.
-struct PatchCopies {
-  vec4 weights;
-  vec4 offsets;
-};
-PatchCopies patchCopies(vec2 fromEye) {
-  float psi = dot(patchBlend[3].xy, fromEye) + patchBlend[3].z;
-  vec2 gradient = patchBlend[3].xy;
+// (cos θ, sin θ, ∂θ/∂x, ∂θ/∂z) at the rest point `fromEye` (metres from the eye).
+vec4 blendWeights(vec2 fromEye) {
+  float theta = 0.0;
+  vec2 gradient = vec2(0.0);
   for (int j = 0; j < 3; j++) {
     float phase = dot(patchBlend[j].xy, fromEye) + patchBlend[j].z;
-    psi += patchBlend[j].w * sin(phase);
+    theta += patchBlend[j].w * sin(phase);
     gradient += patchBlend[j].w * cos(phase) * patchBlend[j].xy;
   }
-  float phi = psi - 0.25 * sin(4.0 * psi);
-  float indexA = 2.0 * floor(psi / 3.141592653589793 + 0.5);
-  float indexB = 2.0 * floor(psi / 3.141592653589793) + 1.0;
-  PatchCopies copies;
-  copies.weights = vec4(cos(phi), sin(phi), (1.0 - cos(4.0 * psi)) * gradient);
-  copies.offsets = fract(patchBlend[4].xyxy + vec4(indexA * COPY_OFFSET_STEP, indexB * COPY_OFFSET_STEP));
-  return copies;
+  return vec4(cos(theta), sin(theta), gradient);
 }
 
-// The foam coverage from its two copies' values at x + o_A and x + o_B (the largest layer's patch),
-// with `blend` = (cos φ, sin φ): weights cos²φ + sin²φ = 1, so a uniform coverage stays itself.
+// The foam coverage from its two copies' values at x and x + o (the largest layer's patch), with
+// `blend` = (cos θ, sin θ): weights cos²θ + sin²θ = 1, so a uniform coverage stays itself.
 float blendedFoam(vec2 blend, float first, float copy) {
   return blend.x * blend.x * first + blend.y * blend.y * copy;
 }

@@ -2,11 +2,10 @@
  * Questions about the sea surface answered on the CPU from the same layers the surface draws:
  * the sum of every layer's fields (waveLayer.ts), with the horizontal parts scaled by the
  * choppiness λ, sampled bilinearly as the GPU samples them at mip level 0, the largest periodic
- * layer as the blend of its two copies cos φ·P(x + o_A) + sin φ·P(x + o_B) (patchBlend.ts). Newton's
- * Jacobian is the gradient of the bilinear interpolation itself with the blend weights' own
- * gradient, so the steps converge quadratically (without the weights' gradient, which the ramp of
- * the blend's angle makes as large as a fifth of the waves' own at the patch's scale, a one-cosine
- * sea at λ = 3 stopped 0.7 mm off in height, tests/unit/surfaceQuery.test.ts).
+ * layer as the blend of its two copies cos θ·P(x) + sin θ·P(x + o) (patchBlend.ts). Newton's
+ * Jacobian is the gradient of the bilinear interpolation itself (so the steps converge
+ * quadratically), without the blend weights' own slow gradient: the steps are a little off, the
+ * converged point is not.
  *
  * Each layer gives its fields for a time close to the one asked (waveLayer.ts: usually those a
  * worker finished a frame ago, cascadeQueryFields.ts); the displacement is carried to the time asked by its
@@ -19,7 +18,7 @@
  * (the bottom's slope) is left out of the derivatives, on the GPU too.
  */
 import { breakingHeight, breakingSlope } from '../spectrum/shoaling';
-import { largestPeriodicLayer, newPatchCopies, PATCH_BLEND_LENGTH, patchBlendUniforms, patchCopies } from './patchBlend';
+import { blendAngle, COPY_OFFSET, largestPeriodicLayer, patchBlendUniforms } from './patchBlend';
 import type { LayerFrame, LayerQueryFields, WaveLayer } from './waveLayer';
 
 /** The depth under a point and each layer's shoaling factor at a depth (shore.ts); null: no seabed. */
@@ -137,9 +136,9 @@ export function velocityAt<T extends { x: number; y: number; z: number }>(
       addVelocity(texels, n, at.u, at.v, factor, 1);
       continue;
     }
-    const { cos, sin, offsets } = patchCopies(blendUniforms, rest.restX, rest.restZ, copies);
-    addVelocity(texels, n, at.u + offsets[0] * n, at.v + offsets[1] * n, factor * cos, cos);
-    addVelocity(texels, n, at.u + offsets[2] * n, at.v + offsets[3] * n, factor * sin, sin);
+    const theta = blendAngle(blendUniforms, rest.restX, rest.restZ);
+    addVelocity(texels, n, at.u, at.v, factor * Math.cos(theta), Math.cos(theta));
+    addVelocity(texels, n, at.u + COPY_OFFSET[0] * n, at.v + COPY_OFFSET[1] * n, factor * Math.sin(theta), Math.sin(theta));
   }
   out.x = choppiness * velocity.x;
   out.y = shore === null ? velocity.y : shoreHeightRate(rest, shore, x, z);
@@ -257,14 +256,12 @@ function surfacePointOver(layers: readonly WaveLayer[], choppiness: number, t: n
 
 /**
  * What sampleLayers sums: what Newton's steps need (the horizontal displacement and its Jacobian),
- * the height alone, or all fields; the Jacobian and slopes with the blend weights' own change.
+ * the height alone, or all fields, with the blend weights' own change in the derivatives.
  */
 const FIELDS = { newton: 0, height: 1, all: 2 } as const;
 
-// Double precision: ψ's phases reach 10⁵ rad 10 000 km away, where float32 wave numbers would put them off by 0.005 rad.
-const blendUniforms = new Float64Array(PATCH_BLEND_LENGTH);
-/** The blended layer's copies at the point being sampled. */
-const copies = newPatchCopies();
+// Double precision: θ's phases reach 10⁵ rad 10 000 km away, where float32 wave numbers would put them off by 0.005 rad.
+const blendUniforms = new Float64Array(12);
 
 /** Which layer is drawn blended, and its blend's uniforms (patchBlend.ts); set once per query. */
 function prepareBlend(layers: readonly WaveLayer[]): number {
@@ -283,9 +280,10 @@ const blendFor: { layers: readonly WaveLayer[] | null; blended: number; size: nu
 
 /**
  * Sums every layer's fields at the rest point (x, z) into `out`, `what` of them (FIELDS); `blended`
- * from prepareBlend. The slopes and Jacobian terms (FIELDS.newton, FIELDS.all) include the blend's own change.
+ * from prepareBlend. With FIELDS.all the slopes and Jacobian terms include the blend's own change.
  */
 function sampleLayers(layers: readonly WaveLayer[], blended: number, t: number, x: number, z: number, out: SurfaceSample, what: number, shore: SurfaceShore | null): void {
+  const derivatives = what === FIELDS.all;
   const depth = shore === null ? 0 : shore.depthAt(x, z);
   out.dx = out.height = out.dz = out.slopeX = out.slopeZ = out.dxdx = out.dzdz = out.dxdz = out.dzdx = 0;
   for (let i = 0; i < layers.length; i++) {
@@ -298,30 +296,32 @@ function sampleLayers(layers: readonly WaveLayer[], blended: number, t: number, 
     const fields = carried(query, t);
     // The layer's shoaling factor (1 without a seabed: every product below is then exact).
     const factor = shore === null ? 1 : shore.layerFactor(i, depth);
+    placeTaps(primary, resolution, at.u, at.v);
     if (i !== blended) {
-      placeTaps(primary, resolution, at.u, at.v);
       addFields(what, fields, primary, factor, resolution / size, out);
       continue;
     }
-    const { offsets, gradientX, gradientZ } = patchCopies(blendUniforms, x, z, copies);
-    placeTaps(copyA, resolution, at.u + offsets[0] * resolution, at.v + offsets[1] * resolution);
-    placeTaps(copyB, resolution, at.u + offsets[2] * resolution, at.v + offsets[3] * resolution);
-    const cos = factor * copies.cos;
-    const sin = factor * copies.sin;
-    addFields(what, fields, copyA, cos, resolution / size, out);
-    addFields(what, fields, copyB, sin, resolution / size, out);
-    if (what === FIELDS.height) continue;
-    // Every field cos φ·f_A + sin φ·f_B also changes with φ: its derivative gains (−sin φ·f_A + cos φ·f_B)·∇φ
-    // (for the height's slope as in ocean.vert; for the Jacobian, Newton's steps need it too).
-    const dx = -sin * displacementTap(fields, copyA, 0) + cos * displacementTap(fields, copyB, 0);
-    const height = -sin * displacementTap(fields, copyA, 1) + cos * displacementTap(fields, copyB, 1);
-    const dz = -sin * displacementTap(fields, copyA, 2) + cos * displacementTap(fields, copyB, 2);
-    out.slopeX += height * gradientX;
-    out.slopeZ += height * gradientZ;
-    out.dxdx += dx * gradientX;
-    out.dzdz += dz * gradientZ;
-    out.dxdz += dx * gradientZ;
-    out.dzdx += dz * gradientX;
+    placeTaps(copy, resolution, at.u + COPY_OFFSET[0] * resolution, at.v + COPY_OFFSET[1] * resolution);
+    const theta = blendAngle(blendUniforms, x, z);
+    const cos = factor * Math.cos(theta);
+    const sin = factor * Math.sin(theta);
+    addFields(what, fields, primary, cos, resolution / size, out);
+    addFields(what, fields, copy, sin, resolution / size, out);
+    if (!derivatives) continue; // Newton's steps do without them (they converge to the same point)
+    // Every field cos θ·f1 + sin θ·f2 also changes with θ: its derivative gains (−sin θ·f1 + cos θ·f2)·∇θ
+    // (for the height's slope, as in ocean.vert). θ turns over hundreds of metres: a central
+    // difference over 1 m is exact enough.
+    const dx = -sin * displacementTap(fields, primary, 0) + cos * displacementTap(fields, copy, 0);
+    const height = -sin * displacementTap(fields, primary, 1) + cos * displacementTap(fields, copy, 1);
+    const dz = -sin * displacementTap(fields, primary, 2) + cos * displacementTap(fields, copy, 2);
+    const thetaX = blendAngle(blendUniforms, x + 0.5, z) - blendAngle(blendUniforms, x - 0.5, z);
+    const thetaZ = blendAngle(blendUniforms, x, z + 0.5) - blendAngle(blendUniforms, x, z - 0.5);
+    out.slopeX += height * thetaX;
+    out.slopeZ += height * thetaZ;
+    out.dxdx += dx * thetaX;
+    out.dzdz += dz * thetaZ;
+    out.dxdz += dx * thetaZ;
+    out.dzdx += dz * thetaX;
   }
 }
 
@@ -429,8 +429,7 @@ interface Taps {
 }
 
 const primary: Taps = { at00: 0, at10: 0, at01: 0, at11: 0, w00: 0, w10: 0, w01: 0, w11: 0, fu: 0, fv: 0 };
-const copyA: Taps = { ...primary };
-const copyB: Taps = { ...primary };
+const copy: Taps = { ...primary };
 
 function placeTaps(taps: Taps, n: number, u: number, v: number): void {
   const i0 = Math.floor(u);

@@ -7,7 +7,7 @@
  * shaders' uniforms.
  */
 import { Color, DoubleSide, Matrix4, ShaderMaterial, UniformsLib, UniformsUtils, Vector2, Vector3, type Texture } from 'three';
-import { largestPeriodicLayer, PATCH_BLEND_LENGTH, patchBlendUniforms } from '../layers/patchBlend';
+import { COPY_OFFSET, largestPeriodicLayer, patchBlendUniforms } from '../layers/patchBlend';
 import type { Shore } from '../layers/shore';
 import type { WaveLayer } from '../layers/waveLayer';
 import { mergeOptions, ParameterError } from '../parameters/options';
@@ -69,7 +69,7 @@ export class OceanMaterial extends ShaderMaterial implements SeaSurfaceMaterial 
           choppiness: { value: 1 },
           tFoam: { value: null },
           tHullFoam: { value: null },
-          patchBlend: { value: new Float32Array(PATCH_BLEND_LENGTH) },
+          patchBlend: { value: new Float32Array(12) },
           foamPatternOrigin: { value: new Vector2() },
           // Streaks and spray (beaufortAppearance.ts; foamStreaks.glsl, spray.glsl): none until bindLayers gives a wind.
           windAlong: { value: new Vector2(1, 0) },
@@ -79,6 +79,7 @@ export class OceanMaterial extends ShaderMaterial implements SeaSurfaceMaterial 
           streakGain: { value: 0 },
           sprayExtinction: { value: 0 },
           spindrift: { value: 0 },
+          copyOffset: { value: new Vector2(...COPY_OFFSET) },
           ringOffsets: { value: new Float32Array(2 * (RING_COUNT + 1)) },
           halfRingCells: { value: 32 },
           sunColor: { value: new Color(...SEA_SUN_COLOR) },

@@ -18,7 +18,7 @@ import { abs, clamp, dot, exp, float, floor, int, length, log2, max, mix, select
 import { FOAM_PATTERN_CONSTANTS, foamPatternOrigin, foamPatternTextures } from '../render/foamPattern';
 import type { BeaufortAppearance } from '../render/beaufortAppearance';
 import { crestHeight } from './lightNodes';
-import type { FloatNode, IntNode, UintNode, Vec2Node, Vec3Node, Vec4Node } from './nodeTypes';
+import type { FloatNode, IntNode, UintNode, Vec2Node, Vec3Node } from './nodeTypes';
 
 /**
  * The GLSL's constants: foam.glsl's FOAM_VISIBLE (coverage below which nothing shows) and
@@ -50,7 +50,7 @@ export class FoamShading {
   }
 }
 
-/** waveLayers.glsl's blendedFoam: the coverage of the largest patch's two copies weighted cos²φ and sin²φ. */
+/** waveLayers.glsl's blendedFoam: the coverage of the largest patch's two copies weighted cos²θ and sin²θ. */
 export function blendedFoam(blend: Vec2Node, first: FloatNode, copy: FloatNode): FloatNode {
   return blend.x.mul(blend.x).mul(first).add(blend.y.mul(blend.y).mul(copy));
 }
@@ -158,17 +158,16 @@ export function streakPatternPoint(rest: Vec2Node, look: BeaufortAppearance): Ve
 }
 
 /**
- * foamStreaks.glsl's streakedFoam: the coverage `foam` at the largest patch's `uv` (read at its two
- * copies, uv + o_A and uv + o_B, `copyOffsets`, weighted by `blend`) with the foam of the crests up
- * to L upwind drawn over it.
+ * foamStreaks.glsl's streakedFoam: the coverage `foam` at the largest patch's `uv` (and its copy's,
+ * + copyOffset, weighted by `blend`) with the foam of the crests up to L upwind drawn over it.
  */
-export function streakedFoam(field: Texture, uv: Vec2Node, copyOffsets: Vec4Node, blend: Vec2Node, patchSize: number, foam: FloatNode, look: BeaufortAppearance): FloatNode {
+export function streakedFoam(field: Texture, uv: Vec2Node, copyOffset: Vec2Node, blend: Vec2Node, patchSize: number, foam: FloatNode, look: BeaufortAppearance): FloatNode {
   if (look.streakShare <= 0) return foam;
   const scale = -look.streakLength / (STREAK_TAPS * patchSize);
   let drawn: FloatNode = float(0);
   for (let i = 0; i < STREAK_TAPS; i++) {
     const at = uv.add(vec2(look.windAlong[0] * scale * (i + 0.5), look.windAlong[1] * scale * (i + 0.5)));
-    drawn = drawn.add(blendedFoam(blend, texture(field, at.add(copyOffsets.xy)).r, texture(field, at.add(copyOffsets.zw)).r));
+    drawn = drawn.add(blendedFoam(blend, texture(field, at).r, texture(field, at.add(copyOffset)).r));
   }
   return mix(foam, drawn.mul((1 + look.streakGain) / STREAK_TAPS), look.streakShare);
 }

@@ -5,7 +5,7 @@
  * on WebGPURenderer's WebGL2 backend.
  *
  *   vertex:   P = x0 + Σ (λ·Dx, h, λ·Dz) over the cascades at the rest point x0, the largest one as
- *             cos φ·P(x0 + o_A) + sin φ·P(x0 + o_B) (shaders/surface/ocean.vert, src/layers/patchBlend.ts)
+ *             cos θ·P(x0) + sin θ·P(x0 + o) (shaders/surface/ocean.vert, src/layers/patchBlend.ts)
  *   fragment: the normal from the summed slopes (shaders/surface/choppyNormal.glsl), then
  *             ocean.frag's c = R·c_sky + (1 − R)·c_water + K·c_caustic + glint + crest glow, R the
  *             exact Fresnel reflectance, c_sky the analytic sky (skyNodes.ts) reflected by the
@@ -29,8 +29,6 @@ import {
   dFdy,
   Fn,
   float,
-  floor,
-  fract,
   fwidth,
   max,
   mix,
@@ -46,6 +44,7 @@ import {
   vec3,
   vec4,
 } from 'three/tsl';
+import { COPY_OFFSET } from '../layers/patchBlend';
 import { finestTexel } from '../render/horizonGrid';
 import type { SeaRings } from './seaRings';
 import type { WaveLayer } from '../layers/waveLayer';
@@ -98,37 +97,20 @@ export interface SeaFoam {
   look: BeaufortAppearance;
 }
 
-/** waveLayers.glsl's PatchCopies: weights (cos φ, sin φ, ∇φ) and offsets (o_A, o_B) in texture coordinates. */
-interface PatchCopies {
-  weights: Vec4Node;
-  offsets: Vec4Node;
-}
-
-/** The R2 sequence's step, waveLayers.glsl's COPY_OFFSET_STEP (patchBlend.ts's R2_STEP). */
-const COPY_OFFSET_STEP = [0.7548776662466927, 0.5698402909980532] as const;
-
 /**
- * The largest layer's two copies at the rest point `fromEye` (metres from the eye):
- * waveLayers.glsl's patchCopies, over the rings' patchBlend.
+ * θ and its gradient of the largest layer's blend at the rest point `fromEye` (metres from the eye),
+ * (cos θ, sin θ, ∂θ/∂x, ∂θ/∂z): waveLayers.glsl's blendWeights, over the rings' patchBlend.
  */
-function patchCopies(rings: SeaRings, fromEye: Vec2Node): PatchCopies {
-  const blend = (j: number) => rings.patchBlend.element(j) as unknown as Vec4Node;
-  let psi: FloatNode = fromEye.dot(blend(3).xy).add(blend(3).z);
-  let gradient: Vec2Node = blend(3).xy;
+function blendWeights(rings: SeaRings, fromEye: Vec2Node): Vec4Node {
+  let theta: FloatNode = float(0);
+  let gradient: Vec2Node = vec2(0, 0);
   for (let j = 0; j < 3; j++) {
-    const component = blend(j);
+    const component = rings.patchBlend.element(j) as unknown as Vec4Node;
     const phase = fromEye.dot(component.xy).add(component.z);
-    psi = psi.add(sin(phase).mul(component.w));
+    theta = theta.add(sin(phase).mul(component.w));
     gradient = gradient.add(component.xy.mul(cos(phase).mul(component.w)));
   }
-  const phi = psi.sub(sin(psi.mul(4)).mul(0.25));
-  const indexA = floor(psi.div(Math.PI).add(0.5)).mul(2);
-  const indexB = floor(psi.div(Math.PI)).mul(2).add(1);
-  const step = vec2(...COPY_OFFSET_STEP);
-  return {
-    weights: vec4(cos(phi), sin(phi), gradient.mul(float(1).sub(cos(psi.mul(4))))),
-    offsets: fract(vec4(blend(4).xy, blend(4).xy).add(vec4(step.mul(indexA), step.mul(indexB)))),
-  };
+  return vec4(cos(theta), sin(theta), gradient);
 }
 
 /**
@@ -140,8 +122,8 @@ export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms,
   material.name = 'OceanWebGPU';
   const point = rings.point();
   const largest = layers.length - 1;
-  const copies = patchCopies(rings, point.fromEye);
-  const blend = copies.weights;
+  const copyOffset = vec2(COPY_OFFSET[0], COPY_OFFSET[1]);
+  const blend = blendWeights(rings, point.fromEye);
   const finest = finestTexel(layers);
 
   // Vertex (ocean.vert): the displacement summed at the ring's mip level, whole levels apart between layers.
@@ -153,16 +135,16 @@ export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms,
     const uv = rings.layerUv(point, i, layer.frame.size);
     const level = point.lod.add(Math.round(Math.log2(finest / (layer.frame.size / layer.frame.resolution))));
     const map = layer.textures.displacement.value as Texture;
+    const first = texture(map, uv).level(level);
     if (i !== largest) {
-      displacement = displacement.add(texture(map, uv).level(level));
+      displacement = displacement.add(first);
       return varying(uv);
     }
-    const first = texture(map, uv.add(copies.offsets.xy)).level(level);
-    const copy = texture(map, uv.add(copies.offsets.zw)).level(level);
+    const copy = texture(map, uv.add(copyOffset)).level(level);
     displacement = displacement.add(first.mul(blend.x)).add(copy.mul(blend.y));
-    // The blend's own change adds (−sin φ·h_A + cos φ·h_B)·∇φ to the height's slope (ocean.vert's vBlendSlope).
+    // The blend's own change adds (−sin θ·h1 + cos θ·h2)·∇θ to the height's slope (ocean.vert's vBlendSlope).
     blendSlope = blend.zw.mul(copy.y.mul(blend.x).sub(first.y.mul(blend.y)));
-    vertexFoam = blendedFoam(blend.xy, texture(foam.coverage, uv.add(copies.offsets.xy)).level(level).r, texture(foam.coverage, uv.add(copies.offsets.zw)).level(level).r);
+    vertexFoam = blendedFoam(blend.xy, texture(foam.coverage, uv).level(level).r, texture(foam.coverage, uv.add(copyOffset)).level(level).r);
     return varying(uv);
   });
   const choppiness = uniforms.choppiness;
@@ -171,19 +153,14 @@ export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms,
   // Per vertex, as the WebGL Ocean: λ·∂Dx/∂z (a second-order part of the normal) and the blend's slope.
   const crossDerivative = varying(displacement.w.mul(choppiness));
   const blendSlopeAtFragment = varying(blendSlope);
+  const blendAtFragment = varying(blend.xy);
   const restAtFragment = varying(point.fromEye);
   const innerRing = varying(rings.innerRing(point));
   const foamAtVertex = varying(vertexFoam);
   const { look } = foam;
   const largestSize = layers[largest].frame.size;
 
-  // Fragment: the largest layer's copies at the pixel's own rest point, read with its texture
-  // coordinates' change to the next pixel across the lines where an offset jumps (ocean.frag).
-  const copiesAtFragment = patchCopies(rings, restAtFragment);
-  const blendAtFragment = copiesAtFragment.weights.xy;
-  const largestUvPerPixel = [dFdx(uvs[largest]), dFdy(uvs[largest])] as const;
-  const largestCopy = (map: Texture, offset: Vec2Node) => texture(map, uvs[largest].add(offset)).grad(...largestUvPerPixel);
-  // Σ (∂h/∂x, ∂h/∂z, ∂Dx/∂x, ∂Dz/∂z), mipmapped by the pixel's footprint (ocean.frag).
+  // Fragment: Σ (∂h/∂x, ∂h/∂z, ∂Dx/∂x, ∂Dz/∂z), mipmapped by the pixel's footprint (ocean.frag).
   let derivatives: Vec4Node = vec4(0, 0, 0, 0);
   layers.forEach((layer, i) => {
     const map = layer.textures.derivatives.value as Texture;
@@ -191,7 +168,7 @@ export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms,
       derivatives = derivatives.add(texture(map, uvs[i]));
       return;
     }
-    derivatives = derivatives.add(largestCopy(map, copiesAtFragment.offsets.xy).mul(blendAtFragment.x)).add(largestCopy(map, copiesAtFragment.offsets.zw).mul(blendAtFragment.y));
+    derivatives = derivatives.add(texture(map, uvs[i]).mul(blendAtFragment.x)).add(texture(map, uvs[i].add(copyOffset)).mul(blendAtFragment.y));
   });
   material.colorNode = Fn(() => {
     // The slopes this pixel's normal does not show (seaLighting.glsl) and the foam's pattern (foam.glsl),
@@ -230,8 +207,8 @@ export function seaMaterial(layers: readonly WaveLayer[], uniforms: SeaUniforms,
     // The foam coverage (ocean.frag): where its pattern shows, read for each pixel; farther, the vertex stage's.
     const foamShown = foamPatternShown(restFootprint(restPerPixelX, restPerPixelY)).toVar();
     const largestUv = uvs[largest];
-    const pixelFoam = blendedFoam(blendAtFragment, largestCopy(foam.coverage, copiesAtFragment.offsets.xy).r, largestCopy(foam.coverage, copiesAtFragment.offsets.zw).r);
-    const foamCoverage = mix(streakedMeanFoam(foamAtVertex, look), streakedFoam(foam.coverage, largestUv, copiesAtFragment.offsets, blendAtFragment, largestSize, pixelFoam, look), foamShown).toVar();
+    const pixelFoam = blendedFoam(blendAtFragment, texture(foam.coverage, largestUv).r, texture(foam.coverage, largestUv.add(copyOffset)).r);
+    const foamCoverage = mix(streakedMeanFoam(foamAtVertex, look), streakedFoam(foam.coverage, largestUv, copyOffset, blendAtFragment, largestSize, pixelFoam, look), foamShown).toVar();
     // Where the pattern does not show, whole white cells with the coverage's share (foamCells.glsl).
     const foamTexel = largestSize / (foam.coverage.image as { width: number }).width;
     const far = select(foamShown.lessThan(1), foamCellOpacity(foamCoverage, foamRestPoint, restPerPixelX, restPerPixelY, foamTexel, FOAM_MEAN_BUBBLES), float(0));

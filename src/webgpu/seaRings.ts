@@ -9,7 +9,7 @@ import { Vector2, Vector4, type Camera } from 'three';
 import type { UniformNode } from 'three/webgpu';
 import { abs, attribute, float, int, max, mod, positionGeometry, select, uniform, uniformArray, vec2, vec4 } from 'three/tsl';
 import { RING_COUNT, RingFrames } from '../render/horizonGrid';
-import { PATCH_BLEND_LENGTH, patchBlendUniforms } from '../layers/patchBlend';
+import { patchBlendUniforms } from '../layers/patchBlend';
 import type { WaveLayer } from '../layers/waveLayer';
 import type { FloatNode, IntNode, Vec2Node, Vec4Node } from './nodeTypes';
 
@@ -40,10 +40,10 @@ export class SeaRings {
   readonly uvOrigins: ReturnType<typeof uniformArray>;
   /** Cells from a ring's centre to its edge. */
   readonly halfRingCells: UniformNode<'float'> = uniform(16);
-  /** The largest layer's blend (θ's components, the ramp, the offsets' origin at the eye), patchBlend.ts. */
-  readonly patchBlend = uniformArray(Array.from({ length: PATCH_BLEND_LENGTH / 4 }, () => new Vector4()), 'vec4');
+  /** The largest layer's blend components (kx, kz, φ at the eye, a), patchBlend.ts. */
+  readonly patchBlend = uniformArray(Array.from({ length: 3 }, () => new Vector4()), 'vec4');
   private readonly placement = new RingFrames();
-  private readonly blend = new Float64Array(PATCH_BLEND_LENGTH);
+  private readonly blend = new Float64Array(12);
   private readonly eye = { x: 0, y: 0, z: 0 };
 
   constructor(private readonly layers: readonly WaveLayer[]) {

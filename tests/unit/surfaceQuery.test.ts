@@ -8,12 +8,12 @@
  * eq. 29), and the surface point over the rest point x0 is (x0 + λ·D(x0), h(x0)). Along k̂ the rest
  * coordinate s0 of the point that lands on s solves s0 − λ·A·sin(|k|s0 + φ) = s, a monotone scalar
  * equation when λ·A·|k| < 1, solved here by bisection; across k̂ nothing moves. The last layer
- * is drawn as cos φ·P(x + o_A) + sin φ·P(x + o_B) (patchBlend.ts): where that layer holds part of the wave,
+ * is drawn as cos θ·P(x) + sin θ·P(x + o) (patchBlend.ts): where that layer holds part of the wave,
  * the reference below writes the blended field out and solves for the rest point by fixed-point
  * iteration instead.
  */
 import { describe, expect, it } from 'vitest';
-import { newPatchCopies, PATCH_BLEND_LENGTH, patchBlendUniforms, patchCopies } from '../../src/layers/patchBlend';
+import { blendAngle, COPY_OFFSET, patchBlendUniforms } from '../../src/layers/patchBlend';
 import { heightAt, normalAt, velocityAt } from '../../src/layers/surfaceQuery';
 import { CpuWaveFields } from '../../src/fft/cpuWaveFields';
 import { validateParameters } from '../../src/parameters/parameters';
@@ -83,20 +83,18 @@ function waveLayer(wave: Wave, share: number, frame: LayerFrame): FakeLayer {
 
 /**
  * Height at (x, z) of the surface made of `fineShare` of the wave on a plain layer and the rest on a
- * blended last layer of side `lastSize`: h(x0) = A·(f·cos ψ + (1 − f)·(cos φ·cos(ψ + k·o_A) + sin φ·cos(ψ + k·o_B))),
- * ψ = k·x0 + φ0, φ the blend angle at x0, o_A and o_B the copies' shifts there; D likewise with sin
- * for cos and −k̂.
+ * blended last layer of side `lastSize`: h(x0) = A·(f·cos ψ + (1 − f)·(cos θ·cos ψ + sin θ·cos(ψ + k·o))),
+ * ψ = k·x0 + φ, θ the blend angle at x0, o the copy's shift; D likewise with sin for cos and −k̂.
  * The rest point x0 with x0 + λ·D(x0) = (x, z) is found by fixed-point iteration.
  */
 function blendedHeight(wave: Wave, fineShare: number, lastSize: number, lambda: number, x: number, z: number): number {
   const k = Math.hypot(wave.kx, wave.kz);
-  const blend = patchBlendUniforms(lastSize, new Float64Array(PATCH_BLEND_LENGTH));
-  const copies = newPatchCopies();
+  const blend = patchBlendUniforms(lastSize, new Float64Array(12));
+  const shift = wave.kx * COPY_OFFSET[0] * lastSize + wave.kz * COPY_OFFSET[1] * lastSize;
   const field = (x0: number, z0: number, f: (angle: number) => number) => {
     const psi = wave.kx * x0 + wave.kz * z0 + wave.phase;
-    const { cos, sin, offsets } = patchCopies(blend, x0, z0, copies);
-    const [shiftA, shiftB] = [(wave.kx * offsets[0] + wave.kz * offsets[1]) * lastSize, (wave.kx * offsets[2] + wave.kz * offsets[3]) * lastSize];
-    return wave.amplitude * (fineShare * f(psi) + (1 - fineShare) * (cos * f(psi + shiftA) + sin * f(psi + shiftB)));
+    const theta = blendAngle(blend, x0, z0);
+    return wave.amplitude * (fineShare * f(psi) + (1 - fineShare) * (Math.cos(theta) * f(psi) + Math.sin(theta) * f(psi + shift)));
   };
   let [x0, z0] = [x, z];
   for (let step = 0; step < 20_000; step++) {
@@ -237,7 +235,7 @@ describe('heightAt with a non-periodic layer', () => {
 
 /**
  * Where the surface particle of rest point (x0, z0) is at time t: x0 + (λ·Dx, h, λ·Dz), the fields
- * sampled bilinearly with REPEAT as the GPU does, the last layer as cos φ·P(x + o_A) + sin φ·P(x + o_B).
+ * sampled bilinearly with REPEAT as the GPU does, the last layer as cos θ·P(x) + sin θ·P(x + o).
  */
 function particleAt(layers: readonly WaveLayer[], lambda: number, t: number, x0: number, z0: number): number[] {
   const sum = [0, 0, 0];
@@ -252,9 +250,9 @@ function particleAt(layers: readonly WaveLayer[], lambda: number, t: number, x0:
     };
     const [u, v] = [(x0 / size) * n, (z0 / size) * n];
     const last = i === layers.length - 1;
-    const { cos, sin, offsets } = patchCopies(patchBlendUniforms(size, new Float64Array(PATCH_BLEND_LENGTH)), x0, z0, newPatchCopies());
+    const theta = last ? blendAngle(patchBlendUniforms(size, new Float64Array(12)), x0, z0) : 0;
     for (let c = 0; c < 3; c++) {
-      sum[c] += last ? cos * sample(u + offsets[0] * n, v + offsets[1] * n, c) + sin * sample(u + offsets[2] * n, v + offsets[3] * n, c) : sample(u, v, c);
+      sum[c] += last ? Math.cos(theta) * sample(u, v, c) + Math.sin(theta) * sample(u + COPY_OFFSET[0] * n, v + COPY_OFFSET[1] * n, c) : sample(u, v, c);
     }
   });
   return [x0 + lambda * sum[0], sum[1], z0 + lambda * sum[2]];

@@ -5,7 +5,7 @@
 import { Vector3 } from 'three';
 import { OceanMaterial } from '../../../src/render/oceanMaterial';
 import { finestTexel } from '../../../src/render/horizonGrid';
-import { newPatchCopies, PATCH_BLEND_LENGTH, patchBlendUniforms, patchCopies } from '../../../src/layers/patchBlend';
+import { blendAngle, COPY_OFFSET, patchBlendUniforms } from '../../../src/layers/patchBlend';
 import { camera, current, environment, renderer, scene, sunDirection } from './oceanPage';
 import { captureVertices } from '../shared/vertexCapture';
 
@@ -54,21 +54,20 @@ export function geometryCheck(t: number, withRestPoints = false) {
     }
   }
   const rms = Math.sqrt(sumSquares / (n * n));
-  const blend = patchBlendUniforms(largest.size, new Float64Array(PATCH_BLEND_LENGTH));
-  const copies = newPatchCopies();
+  const blend = patchBlendUniforms(largest.size, new Float64Array(12));
   /**
    * Σ over layers of the field sampled at rest point (x, z), each at its own mip level, the
-   * largest as cos φ·P(x + o_A) + sin φ·P(x + o_B) (src/layers/patchBlend.ts).
+   * largest as cos θ·P(x) + sin θ·P(x + o) (src/layers/patchBlend.ts).
    */
   const summed = (x: number, z: number, lod: number, pick: (layer: (typeof layers)[number], level: number) => Float32Array): number[] => {
     const total = [0, 0, 0, 0];
-    const { cos, sin, offsets } = patchCopies(blend, x, z, copies);
+    const theta = blendAngle(blend, x, z);
     layers.forEach((layer, i) => {
       const level = Math.min(Math.max(0, Math.round(lod) + layer.lodBias), layer.mips.length - 1); // GL clamps
       const at = (u: number, v: number) => sampleBilinear(pick(layer, level), layer.n >> level, u + 0.5 / layer.n, v + 0.5 / layer.n);
       const [u, v] = [x / layer.size, z / layer.size];
       const copies: [number, number[]][] =
-        i === layers.length - 1 ? [[cos, at(u + offsets[0], v + offsets[1])], [sin, at(u + offsets[2], v + offsets[3])]] : [[1, at(u, v)]];
+        i === layers.length - 1 ? [[Math.cos(theta), at(u, v)], [Math.sin(theta), at(u + COPY_OFFSET[0], v + COPY_OFFSET[1])]] : [[1, at(u, v)]];
       for (const [weight, value] of copies) for (let c = 0; c < 4; c++) total[c] += weight * value[c];
     });
     return total;

@@ -26,7 +26,7 @@ const harness = {
   fov: FOV,
   /**
    * Replaces the sea with a new Ocean of these options; `blend: false` draws the largest cascade
-   * once (ψ = 0 in src/layers/patchBlend.ts: copy A alone, at one offset), for the control that shows what the measurement sees
+   * once (θ = 0 in src/layers/patchBlend.ts), for the control that shows what the measurement sees
    * without the blend. Without foam: it is drawn with a pattern of its own, repeating every
    * kilometre (shaders/surface/foam.glsl), which is not what the measurement looks for.
    */
@@ -37,13 +37,12 @@ const harness = {
     }
     ocean = new Ocean(renderer, { path: 'gpu', worker: false, foamAmount: 0, ...options });
     if (!blend) {
-      // setEye sets the blend (for the largest layer's size, at the eye) before each draw: θ's
-      // amplitudes, the ramp and its phase 0 keep ψ = 0.
+      // setEye sets the blend (for the largest layer's size, at the eye) before each draw: amplitudes 0 keep θ = 0.
       const material = ocean.surface.material;
       const setEye = material.setEye.bind(material);
       material.setEye = (x, z) => {
         setEye(x, z);
-        material.uniforms.patchBlend.value.fill(0, 0, 16);
+        for (let j = 3; j < 12; j += 4) material.uniforms.patchBlend.value[j] = 0;
       };
     }
     scene = new Scene().add(ocean);
