@@ -288,7 +288,17 @@ test.describe('from altitude no tiling is visible', () => {
   // weights of patchBlend.ts), measured 0.527 here (one copy 0.901, two 0.594; the 457 m cascade
   // alone: two 0.645, four 0.543) and 0.446 45° down from 4 km (two: 0.389): the periodic part of
   // the picture does not follow E[ρ²], so it is not (only) the blend's cos² Δθ. Branch
-  // tiling4k-fourcopies keeps that code. Issue 26.
+  // tiling4k-fourcopies keeps that code. What does remove it (session 19, branch tiling4k-stripes):
+  // with fixed offsets the sea at x and x + L is made of the same two values P(x), P(x + o), so
+  // what the light makes of them correlates whatever the weights; two copies whose offsets in the
+  // patch change stripe by stripe where their weight is zero (ψ = κ·e·x + θ, stripes L/2 wide along
+  // 56°, offsets from the R2 sequence; Heitz & Neyret 2018's variance-preserving blend) measured
+  // R = 0.171–0.183 at 457 m here, largest off-centre 0.328–0.347, 1 km 0.081–0.088, 45° 0.05–0.18,
+  // the control 0.946. Not merged: the realisation near the origin then depends on the ramp's phase,
+  // and of eight phases tried (0 to 2.6 rad) each failed one of the seabed spec's checks (the foam
+  // band's ratio 2.5 ± 10 %: 1.96–3.05; the drawn waterline within a cell of heightAt's: 1.02–1.18)
+  // or the lighting spec's (quality levels within 3 levels near the eye: 3.4–4.5; the crest glow).
+  // Issue 26.
   const GLITTER_TILES = 'from 4 km the glitter shows the 457 m patch (R = 0.594): issue 26';
   const groups: [string, View[], string?][] = [
     ['1 km up, straight down', [{ name: '1 km up, straight down', height: 1000, pitch: 90 }]],
