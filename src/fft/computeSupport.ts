@@ -34,6 +34,31 @@ export function computePathUnsupported(renderer: WebGPURenderer, resolution: num
   return computeLimitsShortfall(backend.device.limits, resolution);
 }
 
+/** The fields of GPUAdapterInfo (GPUDevice.adapterInfo) that tell a software adapter. */
+export interface AdapterFacts {
+  architecture?: string;
+  description?: string;
+  isFallbackAdapter?: boolean;
+}
+
+/**
+ * Why 'auto' leaves the compute path to `path: 'gpu'` on `renderer`'s adapter, or null: a software
+ * adapter (the browser's fallback adapter, SwiftShader, llvmpipe/lavapipe), which runs compute
+ * shaders on the CPU lane by lane. Measured there (npm run bench, webgpu-fft, SwiftShader, 2 cores,
+ * 2026-11-29): one update of the default three cascades at N = 256 took 406 ms in compute shaders
+ * against 8.9 ms for the JS FFT (35 ms for the WebGL Ocean's fragment passes); at N = 512, 3069 ms
+ * against 35 ms. The WebGL device's `software` flag tells the same adapters by their names.
+ */
+export function autoSkipsCompute(renderer: WebGPURenderer): string | null {
+  const facts = (renderer.backend as { device?: { adapterInfo?: AdapterFacts } }).device?.adapterInfo;
+  return facts && softwareAdapter(facts) ? `a software WebGPU adapter (${facts.architecture || facts.description || 'the fallback adapter'}), where the JS FFT is faster; path 'gpu' runs the compute FFT` : null;
+}
+
+/** Whether the adapter these facts describe renders in software. */
+export function softwareAdapter(facts: AdapterFacts): boolean {
+  return facts.isFallbackAdapter === true || /swiftshader|llvmpipe|lavapipe|softpipe|software/i.test(`${facts.architecture ?? ''} ${facts.description ?? ''}`);
+}
+
 /**
  * The first of `limits` below what the compute path needs at `resolution`, in words, or null. Its
  * needs: the FFT keeps two lines of N complex float32 (16·N bytes) in workgroup memory with N/4

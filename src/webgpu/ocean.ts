@@ -63,7 +63,7 @@ import { checkRenderer } from '../device/deviceFor';
 import { Shore } from '../layers/shore';
 import type { Seabed } from '../layers/seabed';
 import { seabedMapFor, ShoreNodes } from './shoreNodes';
-import { computePathUnsupported } from '../fft/computeSupport';
+import { autoSkipsCompute, computePathUnsupported } from '../fft/computeSupport';
 
 import { SceneLight } from './sceneLightNodes';
 import { addSea, removeSea } from '../render/sceneCapture';
@@ -636,7 +636,10 @@ export class Ocean extends Object3D<WebGPUOceanEventMap> {
   private fftChoice(params: SimulationParameters): { compute: boolean; reason: string } {
     if (this.pathPreference === 'js') return { compute: false, reason: '' };
     const unsupported = computePathUnsupported(this.renderer, params.resolution);
-    if (unsupported === null) return { compute: true, reason: '' };
+    if (unsupported === null) {
+      const slower = this.pathPreference === 'auto' ? autoSkipsCompute(this.renderer) : null;
+      return slower === null ? { compute: true, reason: '' } : { compute: false, reason: slower };
+    }
     if (this.pathPreference === 'gpu') throw new UnsupportedError('path', `the compute FFT (path 'gpu') cannot run here: ${unsupported}; 'auto' or 'js' runs the JS FFT`);
     return { compute: false, reason: unsupported };
   }

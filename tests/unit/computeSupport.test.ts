@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { computeLimitsShortfall, MAX_SIZE, type ComputeLimits } from '../../src/fft/computeSupport';
+import { computeLimitsShortfall, MAX_SIZE, softwareAdapter, type ComputeLimits } from '../../src/fft/computeSupport';
 
 // WebGPU's default limits (https://www.w3.org/TR/webgpu/#limits), which three requests its device
 // with and every adapter offers: the compute path must run within them at every size it takes.
@@ -26,5 +26,17 @@ describe('computeLimitsShortfall: what the WebGPU Ocean\'s compute path needs of
     expect(computeLimitsShortfall({ ...DEFAULTS, maxComputeWorkgroupSizeX: 100 }, 512)).toMatch(/^maxComputeWorkgroupSizeX is 100, under 128 /);
     expect(computeLimitsShortfall({ ...DEFAULTS, maxStorageBuffersPerShaderStage: 3 }, 64)).toMatch(/^maxStorageBuffersPerShaderStage is 3, under 4 /);
     expect(computeLimitsShortfall({ ...DEFAULTS, maxStorageTexturesPerShaderStage: 1 }, 64)).toMatch(/^maxStorageTexturesPerShaderStage is 1, under 2 /);
+  });
+});
+
+describe("softwareAdapter: where the WebGPU Ocean's 'auto' leaves the compute path to path 'gpu'", () => {
+  it('tells software adapters by GPUAdapterInfo, hardware ones not', () => {
+    // SwiftShader's adapter in headless Chromium here (BROWSER.md: vendor google, architecture swiftshader).
+    expect(softwareAdapter({ architecture: 'swiftshader', description: '' })).toBe(true);
+    expect(softwareAdapter({ architecture: '', description: 'llvmpipe (LLVM 15.0.6, 256 bits)' })).toBe(true);
+    expect(softwareAdapter({ architecture: '', description: '', isFallbackAdapter: true })).toBe(true);
+    expect(softwareAdapter({ architecture: 'ampere', description: 'NVIDIA GeForce RTX 3060' })).toBe(false);
+    expect(softwareAdapter({ architecture: 'rdna-3', description: '' })).toBe(false);
+    expect(softwareAdapter({})).toBe(false);
   });
 });
