@@ -36,20 +36,24 @@ export function sharedPages(open: (page: Page, key: string) => Promise<void>, re
  * One page for a whole spec file, loaded once before its tests (a page load and its shaders cost
  * more than most tests take): `url` must set its title to 'ready' when its harness is set up. The
  * page is handed to `opened` for the file's tests; after them, no uncaught error may have reached
- * the page. Call at the top level of a spec file.
+ * the page. Call at the top level of a spec file. `viewport`: the page's size (Playwright's
+ * default, 1280×720, when left out).
  */
-export function onePageForFile(url: string, opened: (page: Page) => void | Promise<void>): void {
+export function onePageForFile(url: string, opened: (page: Page) => void | Promise<void>, viewport?: { width: number; height: number }): void {
   let page: Page | null = null;
   const errors: string[] = [];
   test.beforeAll(async ({ browser }) => {
-    page = await browser.newPage();
+    page = await browser.newPage(viewport ? { viewport } : {});
     page.on('pageerror', (error) => errors.push(error.message));
     await page.goto(url);
     await expect(page).toHaveTitle('ready');
     await opened(page);
   });
   test.afterAll(async () => {
+    // The errors before closing: closing a page with GPU work under way can raise its own (WebGPU:
+    // "Instance dropped in popErrorScope"), which are not the tests'.
+    const uncaught = [...errors];
     await page?.close();
-    expect(errors).toEqual([]);
+    expect(uncaught).toEqual([]);
   });
 }

@@ -2,6 +2,7 @@ import { expect, test, type Page } from '@playwright/test';
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { PNG } from 'pngjs';
 import { WEBGPU_BROWSER } from '../shared/webgpuBrowser';
+import { onePageForFile } from '../shared/sharedPages';
 import type { Vec3, View } from './sceneLight';
 import { bounds, fresnelReflectance, rayMeetsBox, redderPixels as redder } from '../shared/sceneProofs';
 
@@ -14,21 +15,11 @@ test.describe.configure({ mode: 'serial' });
 
 const W = 960;
 const H = 540;
+mkdirSync('.tmp', { recursive: true });
 let page: Page;
-const errors: string[] = [];
-
-test.beforeAll(async ({ browser }) => {
-  mkdirSync('.tmp', { recursive: true });
-  page = await browser.newPage({ viewport: { width: 320, height: 180 } });
-  page.on('pageerror', (error) => errors.push(error.message));
-  await page.goto('/tests/browser/webgpu/sceneLight.html');
-  await expect(page).toHaveTitle('ready');
-});
-
-test.afterAll(async () => {
-  expect(errors).toEqual([]);
-  await page.close();
-});
+onePageForFile('/tests/browser/webgpu/sceneLight.html', (opened) => {
+  page = opened;
+}, { width: 320, height: 180 });
 
 type Pixels = Buffer;
 

@@ -13,6 +13,7 @@ import { mkdirSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { PNG } from 'pngjs';
 import { WEBGPU_BROWSER } from '../shared/webgpuBrowser';
+import { onePageForFile } from '../shared/sharedPages';
 
 test.use(WEBGPU_BROWSER);
 test.describe.configure({ mode: 'serial' });
@@ -20,21 +21,11 @@ test.describe.configure({ mode: 'serial' });
 const PORT = Number(process.env.TEST_PORT ?? 5173);
 const OUTPUT = join(PORT === 5173 ? 'test-results' : `test-results-${PORT}`, 'webgpu-shore');
 
+mkdirSync(OUTPUT, { recursive: true });
 let page: Page;
-const errors: string[] = [];
-
-test.beforeAll(async ({ browser }) => {
-  mkdirSync(OUTPUT, { recursive: true });
-  page = await browser.newPage({ viewport: { width: 320, height: 180 } });
-  page.on('pageerror', (error) => errors.push(error.message));
-  await page.goto('/tests/browser/webgpu/shore.html');
-  await expect(page).toHaveTitle('ready');
-});
-
-test.afterAll(async () => {
-  expect(errors).toEqual([]);
-  await page.close();
-});
+onePageForFile('/tests/browser/webgpu/shore.html', (opened) => {
+  page = opened;
+}, { width: 320, height: 180 });
 
 type Picture = { width: number; height: number; data: number[] };
 

@@ -1,6 +1,7 @@
 import { expect, test, type Page } from '@playwright/test';
 import { mkdirSync } from 'node:fs';
 import { WEBGPU_BROWSER } from '../shared/webgpuBrowser';
+import { onePageForFile } from '../shared/sharedPages';
 import { pictureDifference, savePicture, type Picture } from './pictureCompare';
 
 // three-fft-ocean/webgpu seen from under the water, against the WebGL Ocean, and after its
@@ -14,21 +15,11 @@ interface Pose {
   target: [number, number, number];
 }
 
+mkdirSync('.tmp', { recursive: true });
 let page: Page;
-const errors: string[] = [];
-
-test.beforeAll(async ({ browser }) => {
-  mkdirSync('.tmp', { recursive: true });
-  page = await browser.newPage({ viewport: { width: 320, height: 180 } });
-  page.on('pageerror', (error) => errors.push(error.message));
-  await page.goto('/tests/browser/webgpu/underWater.html');
-  await expect(page).toHaveTitle('ready');
-});
-
-test.afterAll(async () => {
-  expect(errors).toEqual([]);
-  await page.close();
-});
+onePageForFile('/tests/browser/webgpu/underWater.html', (opened) => {
+  page = opened;
+}, { width: 320, height: 180 });
 
 /** The share of pixels darker than 4 levels in every channel: black, which neither sky nor water is. */
 function blackShare(png: Picture): number {

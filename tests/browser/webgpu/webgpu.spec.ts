@@ -2,6 +2,7 @@ import { expect, test, type Page } from '@playwright/test';
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { PNG } from 'pngjs';
 import { WEBGPU_BROWSER } from '../shared/webgpuBrowser';
+import { onePageForFile } from '../shared/sharedPages';
 import { pictureDifference, savePicture, type Picture } from './pictureCompare';
 
 // three-fft-ocean/webgpu on a real WebGPURenderer: its WebGL2 backend (forceWebGL, SwiftShader's
@@ -11,21 +12,11 @@ import { pictureDifference, savePicture, type Picture } from './pictureCompare';
 test.use(WEBGPU_BROWSER);
 test.describe.configure({ mode: 'serial' });
 
+mkdirSync('.tmp', { recursive: true });
 let page: Page;
-const errors: string[] = [];
-
-test.beforeAll(async ({ browser }) => {
-  mkdirSync('.tmp', { recursive: true });
-  page = await browser.newPage({ viewport: { width: 320, height: 180 } });
-  page.on('pageerror', (error) => errors.push(error.message));
-  await page.goto('/tests/browser/webgpu/webgpu.html');
-  await expect(page).toHaveTitle('ready');
-});
-
-test.afterAll(async () => {
-  expect(errors).toEqual([]);
-  await page.close();
-});
+onePageForFile('/tests/browser/webgpu/webgpu.html', (opened) => {
+  page = opened;
+}, { width: 320, height: 180 });
 
 /** Mean and standard deviation of the luma of rows [from, to) of an RGBA picture, and its mean colour. */
 function rows(png: Picture, from: number, to: number): { mean: number; spread: number; rgb: number[] } {
