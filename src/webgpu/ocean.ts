@@ -261,6 +261,7 @@ export class Ocean extends Object3D<WebGPUOceanEventMap> {
     this.surface.onBeforeRender = (drawing, _scene, camera) => {
       this.fitGrid(drawing as unknown as WebGPURenderer);
       this.rings.place(camera, this.cellsPerRing);
+      this.placeEye(camera);
       const eye = camera.matrixWorld.elements;
       this.foamShading.setEye(eye[12], eye[14], this.look);
       if (this.shoreNodes) this.placeShore(eye[12], eye[14]);
@@ -269,8 +270,8 @@ export class Ocean extends Object3D<WebGPUOceanEventMap> {
     this.skyMesh.name = 'OceanWebGPU sky';
     this.skyMesh.frustumCulled = false;
     this.skyMesh.renderOrder = -Infinity; // first, under everything
-    // Before the sky, first in the render (renderOrder −∞): the eye's side of the sea, once for the
-    // sky and the surface drawn after it, then the captures of the scene the sea shows (sceneLightNodes.ts),
+    // Before the sky, first in the render: the eye's side of the sea (the surface takes it too, so
+    // both show the same frame's), then the captures of the scene the sea shows (sceneLightNodes.ts),
     // before any object of it is drawn.
     this.skyMesh.onBeforeRender = (drawing, scene, camera) => {
       this.placeEye(camera);
@@ -316,19 +317,9 @@ export class Ocean extends Object3D<WebGPUOceanEventMap> {
    */
   get path(): OceanPath {
     this.checkAlive('path');
-    const workerFault = this.workerFault();
-    return { preference: this.pathPreference, running: this.runningFor(workerFault), reason: workerFault ?? this.pathReason };
-  }
-
-  /** Why a cascade's JS FFT runs on the main thread although a worker was asked for, or null. */
-  private workerFault(): string | null {
-    for (const cascade of this.cascades) if (cascade.workerFault !== null) return cascade.workerFault;
-    return null;
-  }
-
-  /** The path running (Ocean.path.running), given workerFault(). */
-  private runningFor(workerFault: string | null): OceanPath['running'] {
-    return this.computeFft ? 'gpu-rgba32f' : this.useWorker && workerFault === null ? 'js-worker' : 'js';
+    const workerFault = this.cascades.map((cascade) => cascade.workerFault).find((fault) => fault !== null) ?? null;
+    const running = this.computeFft ? 'gpu-rgba32f' : this.useWorker && workerFault === null ? 'js-worker' : 'js';
+    return { preference: this.pathPreference, running, reason: workerFault ?? this.pathReason };
   }
 
   /** The time (s) of the last update. */
@@ -509,7 +500,7 @@ export class Ocean extends Object3D<WebGPUOceanEventMap> {
 
   /** Dispatches pathchange when the running path changed since the last update (not at the first). */
   private notePathChange(): void {
-    const running = this.runningFor(this.workerFault()); // each update: no object made unless it changed
+    const { running } = this.path;
     if (running === this.runningPath) return;
     const first = this.runningPath === null;
     this.runningPath = running;
